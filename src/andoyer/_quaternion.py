@@ -10,6 +10,8 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
+from andoyer._fastmath import wrap_2pi
+
 Array = NDArray[np.float64]
 
 
@@ -83,8 +85,8 @@ def to_zxz(q: Array, tol: float = 0.0) -> tuple[Array, Array, Array, Array]:
     half_diff = np.arctan2(y, x)
     half_diff = np.where(at_zero, half_sum, half_diff)
     half_sum = np.where(at_pi, half_diff, half_sum)
-    a = np.mod(half_sum + half_diff, 2 * np.pi)
-    c = np.mod(half_sum - half_diff, 2 * np.pi)
+    a = wrap_2pi(half_sum + half_diff)
+    c = wrap_2pi(half_sum - half_diff)
     c = np.where(at_zero | at_pi, 0.0, c)
     return a, b, c, at_zero | at_pi
 

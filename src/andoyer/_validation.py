@@ -38,7 +38,7 @@ def as_finite(value: ArrayLike, name: str) -> NDArray[np.float64]:
         msg = f"expected {name} to be real numbers, got {describe(value)}"
         raise ValueError(msg) from exc
     if not np.all(np.isfinite(arr)):
-        bad = arr[~np.isfinite(arr)].flat[0] if arr.ndim else arr.item()
+        bad = float(arr[~np.isfinite(arr)].flat[0]) if arr.ndim else float(arr)
         msg = f"expected finite {name}, got {bad!r}"
         raise ValueError(msg)
     return arr
@@ -71,7 +71,7 @@ def broadcast_finite(names: Sequence[str], values: Sequence[ArrayLike]) -> list[
 def check_momenta(L: NDArray[np.float64], G: NDArray[np.float64], H: NDArray[np.float64]) -> None:
     """Check Andoyer momenta: ``G > 0``, ``|L| <= G`` and ``|H| <= G``."""
     if np.any(G <= 0):
-        msg = f"expected G > 0, got G = {np.min(G)!r}"
+        msg = f"expected G > 0, got G = {float(np.min(G))!r}"
         raise ValueError(msg)
     for name, value in (("L", L), ("H", H)):
         excess = np.abs(value) - G
@@ -79,7 +79,7 @@ def check_momenta(L: NDArray[np.float64], G: NDArray[np.float64], H: NDArray[np.
         if np.any(excess > 4 * np.finfo(float).eps * G):
             i = np.unravel_index(np.argmax(excess), excess.shape) if excess.ndim else ()
             msg = (
-                f"expected |{name}| <= G, got |{name}| = {abs(np.asarray(value)[i])!r} "
-                f"> G = {np.asarray(G)[i]!r}"
+                f"expected |{name}| <= G, got |{name}| = {float(abs(np.asarray(value)[i]))!r} "
+                f"> G = {float(np.asarray(G)[i])!r}"
             )
             raise ValueError(msg)

@@ -74,7 +74,7 @@ class State:
         m = as_vectors(m_body, "m_body", 3)
         norm = np.linalg.norm(q, axis=-1)
         if np.any(np.abs(norm - 1.0) > 1e-6):
-            bad = norm.flat[np.argmax(np.abs(norm - 1.0))]
+            bad = float(norm.flat[np.argmax(np.abs(norm - 1.0))])
             msg = f"expected unit quaternions (|q| = 1 within 1e-6), got |q| = {bad!r}"
             raise ValueError(msg)
         try:

@@ -29,6 +29,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer import _quaternion as quat
+from andoyer._fastmath import atan2_2pi, chunked, wrap_2pi
 from andoyer._validation import as_finite, broadcast, broadcast_finite, check_momenta
 from andoyer.charts.euler import Euler, transverse_momentum
 from andoyer.charts.singular import warn_if_singular
@@ -156,6 +157,50 @@ def andoyer_to_hub(
     return q, m
 
 
+def _hub_to_andoyer_kernel(
+    x: Array, y: Array, z: Array, w: Array, m1: Array, m2: Array, m3: Array
+) -> tuple[Array, ...]:
+    """Element-wise core of :func:`hub_to_andoyer` on 1-D slices."""
+    G = np.sqrt(m1 * m1 + m2 * m2 + m3 * m3)
+    # Rotation matrix A of the quaternion (body -> reference); only products are needed.
+    xx, yy, zz = x * x, y * y, z * z
+    xy, xz, yz, xw, yw, zw = x * y, x * z, y * z, x * w, y * w, z * w
+    a00, a01, a02 = 1 - 2 * (yy + zz), 2 * (xy - zw), 2 * (xz + yw)
+    a10, a11, a12 = 2 * (xy + zw), 1 - 2 * (xx + zz), 2 * (yz - xw)
+    M1 = a00 * m1 + a01 * m2 + a02 * m3
+    M2 = a10 * m1 + a11 * m2 + a12 * m3
+    M3 = 2 * (xz - yw) * m1 + 2 * (yz + xw) * m2 + (1 - 2 * (xx + yy)) * m3
+    rho_body = np.sqrt(m1 * m1 + m2 * m2)
+    rho_ref = np.sqrt(M1 * M1 + M2 * M2)
+    # Within a few ulp of a pole the direction of the node is round-off; snapping onto the
+    # pole (L or H = ±G exactly) keeps the round trip exact where (L, G, H) could not.
+    pole_tol = 4 * np.finfo(float).eps * G
+    on_pole_j = rho_body <= pole_tol
+    on_pole_i = rho_ref <= pole_tol
+    safe_body = np.where(on_pole_j, 1.0, rho_body)
+    safe_ref = np.where(on_pole_i, 1.0, rho_ref)
+    sl = np.where(on_pole_j, 0.0, m1 / safe_body)
+    cl = np.where(on_pole_j, 1.0, m2 / safe_body)
+    sh = np.where(on_pole_i, 0.0, M1 / safe_ref)
+    ch = np.where(on_pole_i, 1.0, -M2 / safe_ref)
+    # Node i = (cos h, sin h, 0) seen in the body frame is Aᵀ i; node j = (cos l, -sin l, 0).
+    i1, i2, i3 = ch * a00 + sh * a10, ch * a01 + sh * a11, ch * a02 + sh * a12
+    # g = angle from i to j about m: sin g ∝ m·(i × j), cos g ∝ G i·j, with m·(i × j)
+    # = i·(j × m) and j × m = (-sin l m3, -cos l m3, rho_body).
+    sin_g = rho_body * i3 - m3 * (sl * i1 + cl * i2)
+    cos_g = G * (i1 * cl - i2 * sl)
+    return (
+        atan2_2pi(sl, cl),
+        atan2_2pi(sin_g, cos_g),
+        atan2_2pi(sh, ch),
+        np.where(on_pole_j, np.copysign(G, m3), m3),
+        G,
+        np.where(on_pole_i, np.copysign(G, M3), M3),
+        on_pole_j,
+        on_pole_i,
+    )
+
+
 def hub_to_andoyer(q: Array, m: Array, stacklevel: int = 2) -> Andoyer:
     """Andoyer variables of attitude quaternions (..., 4) and body momenta (..., 3).
 
@@ -165,40 +210,15 @@ def hub_to_andoyer(q: Array, m: Array, stacklevel: int = 2) -> Andoyer:
     and ``j`` from the same ``h`` and ``l`` that are returned keeps the
     attitude round trip exact even where ``h`` or ``l`` is ill-conditioned.
     """
-    G = np.sqrt(np.sum(m * m, axis=-1))
-    if np.any(G <= 0):
+    shape = m.shape[:-1]
+    if np.any(np.sum(m * m, axis=-1) <= 0):
         msg = "expected a non-zero angular momentum, got |m| = 0 (the Andoyer chart needs G > 0)"
         raise ValueError(msg)
-    m_ref = quat.rotate(q, m)
-    rho_body = np.hypot(m[..., 0], m[..., 1])
-    rho_ref = np.hypot(m_ref[..., 0], m_ref[..., 1])
-    # Within a few ulp of a pole the direction of the node is round-off; snapping onto the
-    # pole (L or H = ±G exactly) keeps the round trip exact where (L, G, H) could not.
-    pole_tol = 4 * np.finfo(float).eps * G
-    on_pole_j = rho_body <= pole_tol
-    on_pole_i = rho_ref <= pole_tol
-    warn_if_singular(on_pole_j, "Andoyer chart at sin(J) = 0: set l = 0", stacklevel + 1)
-    warn_if_singular(on_pole_i, "Andoyer chart at sin(I) = 0: set h = 0", stacklevel + 1)
-    safe_body = np.where(on_pole_j, 1.0, rho_body)
-    safe_ref = np.where(on_pole_i, 1.0, rho_ref)
-    sl = np.where(on_pole_j, 0.0, m[..., 0] / safe_body)
-    cl = np.where(on_pole_j, 1.0, m[..., 1] / safe_body)
-    sh = np.where(on_pole_i, 0.0, m_ref[..., 0] / safe_ref)
-    ch = np.where(on_pole_i, 1.0, -m_ref[..., 1] / safe_ref)
-    zero = np.zeros_like(ch)
-    node_i = quat.rotate(quat.conjugate(q), np.stack([ch, sh, zero], axis=-1))
-    node_j = np.stack([cl, -sl, zero], axis=-1)
-    cross = np.cross(node_i, node_j)
-    g = np.arctan2(np.sum(cross * m, axis=-1), G * np.sum(node_i * node_j, axis=-1))
-    two_pi = 2 * np.pi
-    return Andoyer(
-        np.mod(np.arctan2(sl, cl), two_pi),
-        np.mod(g, two_pi),
-        np.mod(np.arctan2(sh, ch), two_pi),
-        np.where(on_pole_j, np.copysign(G, m[..., 2]), m[..., 2]),
-        G,
-        np.where(on_pole_i, np.copysign(G, m_ref[..., 2]), m_ref[..., 2]),
-    )
+    columns = [*q.reshape(-1, 4).T, *m.reshape(-1, 3).T]
+    l, g, h, L, G, H, on_pole_j, on_pole_i = chunked(_hub_to_andoyer_kernel, columns, 8)
+    warn_if_singular(on_pole_j != 0, "Andoyer chart at sin(J) = 0: set l = 0", stacklevel + 1)
+    warn_if_singular(on_pole_i != 0, "Andoyer chart at sin(I) = 0: set h = 0", stacklevel + 1)
+    return Andoyer(*(v.reshape(shape) for v in (l, g, h, L, G, H)))
 
 
 def andoyer_from_euler(
@@ -248,11 +268,10 @@ def andoyer_from_euler(
     M1, M2 = Theta * cf + Y * sf, Theta * sf - Y * cf
     G = np.sqrt(Theta * Theta + X * X + Psi * Psi)
     g = np.arctan2(-G * Theta * st, Psi * Phi - G * G * np.cos(theta))
-    two_pi = 2 * np.pi
     return Andoyer(
-        np.mod(np.arctan2(m1, m2), two_pi),
-        np.mod(g, two_pi),
-        np.mod(np.arctan2(M1, -M2), two_pi),
+        wrap_2pi(np.arctan2(m1, m2)),
+        wrap_2pi(g),
+        wrap_2pi(np.arctan2(M1, -M2)),
         Psi,
         G,
         Phi,
@@ -301,6 +320,5 @@ def euler_from_andoyer(
     warn_if_singular(singular, "Euler chart at sin(theta) = 0: set psi = 0", 2)
     psi = np.where(singular, 0.0, np.arctan2(R[..., 0, 2], R[..., 1, 2]))
     phi = np.where(singular, np.arctan2(R[..., 0, 1], R[..., 0, 0]), np.arctan2(R[..., 2, 0], -R[..., 2, 1]))
-    two_pi = 2 * np.pi
     Theta = np.sqrt((G - L) * (G + L)) * np.sin(l - psi)
-    return Euler(np.mod(phi, two_pi), theta, np.mod(psi, two_pi), H, Theta, L)
+    return Euler(wrap_2pi(phi), theta, wrap_2pi(psi), H, Theta, L)

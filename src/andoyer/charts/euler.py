@@ -117,7 +117,7 @@ def euler_to_hub(
     values = (phi, theta, psi, Phi, Theta, Psi)
     phi, theta, psi, Phi, Theta, Psi = broadcast_finite(names, values)
     if np.any((theta < 0) | (theta > np.pi)):
-        bad = theta[(theta < 0) | (theta > np.pi)].flat[0]
+        bad = float(theta[(theta < 0) | (theta > np.pi)].flat[0])
         msg = f"expected 0 <= theta <= pi, got theta = {bad!r}"
         raise ValueError(msg)
     numerator, st = transverse_momentum(Phi, Psi, theta)
