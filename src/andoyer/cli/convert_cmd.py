@@ -41,8 +41,7 @@ def run(args: argparse.Namespace) -> int:
     if args.values is not None:
         if len(args.values) != len(source.columns):
             msg = (
-                f"expected {len(source.columns)} values ({', '.join(source.columns)}), "
-                f"got {len(args.values)}"
+                f"expected {len(source.columns)} values ({', '.join(source.columns)}), got {len(args.values)}"
             )
             raise CliError(msg)
         columns = {c: np.array([v]) for c, v in zip(source.columns, args.values, strict=True)}
