@@ -1,0 +1,30 @@
+"""Disturbing models: each a Hamiltonian term ``ΔH`` with its torque, or a torque alone.
+
+See :mod:`andoyer.perturbations.base` for the equations of motion they enter.
+"""
+
+from andoyer.perturbations.base import Perturbation, SumOfPerturbations
+from andoyer.perturbations.equations import perturbed_rates
+from andoyer.perturbations.frame import PrecessingFrame
+from andoyer.perturbations.gravity import GravityGradient, PointMass
+from andoyer.perturbations.heavy_top import HeavyTop
+from andoyer.perturbations.orbits import CircularOrbit, KeplerOrbit, Orbit, TabulatedOrbit, solve_kepler
+from andoyer.perturbations.user import LinearDamping, UserPotential, UserTorque
+
+__all__ = [
+    "CircularOrbit",
+    "GravityGradient",
+    "HeavyTop",
+    "KeplerOrbit",
+    "LinearDamping",
+    "Orbit",
+    "Perturbation",
+    "PointMass",
+    "PrecessingFrame",
+    "SumOfPerturbations",
+    "TabulatedOrbit",
+    "UserPotential",
+    "UserTorque",
+    "perturbed_rates",
+    "solve_kepler",
+]

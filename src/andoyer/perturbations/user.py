@@ -1,0 +1,147 @@
+r"""Models the user writes: a potential of the attitude, or a torque (possibly dissipative).
+
+``UserPotential`` derives its torque from ``V`` by central differences on body
+rotations unless an analytic torque is given:
+``τ_i = -[V(q ⊗ e^{+h e_i/2}) - V(q ⊗ e^{-h e_i/2})] / (2h)``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+from scipy.spatial.transform import Rotation
+
+from andoyer import _quaternion as quat
+from andoyer._validation import as_finite, as_vectors
+from andoyer.body import RigidBody
+from andoyer.perturbations.base import Perturbation, hub_arrays, times
+
+__all__ = ["LinearDamping", "UserPotential", "UserTorque"]
+
+Array = NDArray[np.float64]
+
+
+def _check_callable(function: object, what: str) -> None:
+    if not callable(function):
+        msg = f"expected a callable {what}, got {type(function).__name__}"
+        raise ValueError(msg)
+
+
+class UserPotential(Perturbation):
+    """A potential ``V(rotation, t)`` of the attitude, with an optional analytic torque.
+
+    Parameters
+    ----------
+    potential : callable
+        ``potential(rotation, t) -> (...)`` with ``rotation`` a
+        :class:`scipy.spatial.transform.Rotation` of shape (...) (body → reference).
+    torque : callable, optional
+        ``torque(rotation, t) -> (..., 3)`` in body components; by default
+        central differences of ``potential`` with step ``step`` radians.
+    step : float
+        Finite-difference step (radians); the truncation error is ``O(step²)``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> gamma = lambda rot: rot.inv().apply([0.0, 0.0, 1.0])
+    >>> top = UserPotential(lambda rot, t: 2.0 * gamma(rot)[..., 2])
+    >>> q = Rotation.from_euler("x", 0.3).as_quat()
+    >>> (np.round(top.torque(0.0, q, [0, 0, 1.0]), 8) + 0.0).tolist()  # = 2 γ × e3
+    [0.59104041, 0.0, 0.0]
+    """
+
+    hamiltonian = True
+    attitude_only = True
+
+    def __init__(
+        self,
+        potential: Callable[[Rotation, Array], ArrayLike],
+        torque: Callable[[Rotation, Array], ArrayLike] | None = None,
+        step: float = 1e-5,
+    ) -> None:
+        _check_callable(potential, "potential(rotation, t)")
+        if torque is not None:
+            _check_callable(torque, "torque(rotation, t)")
+        self._potential = potential
+        self._torque = torque
+        self.step = float(step)
+
+    def _value(self, t: ArrayLike, q: Array) -> Array:
+        return as_finite(self._potential(Rotation.from_quat(q), times(t)), "potential(rotation, t)")
+
+    def potential(self, t: ArrayLike, q: Array, m: Array) -> Array:
+        """``V``, shape (...)."""
+        q, m = hub_arrays(q, m)
+        return self._value(t, q) * np.ones(m.shape[:-1])
+
+    def torque(self, t: ArrayLike, q: Array, m: Array) -> Array:
+        """Analytic or central-difference torque, shape (..., 3)."""
+        q, m = hub_arrays(q, m)
+        if self._torque is not None:
+            return as_vectors(self._torque(Rotation.from_quat(q), times(t)), "torque(rotation, t)")
+        h = self.step
+        out = []
+        for axis in np.eye(3):
+            plus = quat.multiply(q, np.append(np.sin(h / 2) * axis, np.cos(h / 2)))
+            minus = quat.multiply(q, np.append(-np.sin(h / 2) * axis, np.cos(h / 2)))
+            out.append(-(self._value(t, plus) - self._value(t, minus)) / (2 * h))
+        return np.stack(np.broadcast_arrays(*out), axis=-1) * np.ones_like(m)
+
+
+class UserTorque(Perturbation):
+    """A torque ``u(t, rotation, omega)`` in body components; not Hamiltonian in general.
+
+    Parameters
+    ----------
+    body : RigidBody
+        Needed to form ``ω = I⁻¹ m``.
+    torque : callable
+        ``torque(t, rotation, omega) -> (..., 3)``.
+
+    Examples
+    --------
+    >>> from andoyer import RigidBody
+    >>> spin_up = UserTorque(RigidBody(1, 1, 1), lambda t, rot, w: np.array([0.0, 0.0, 1.0]))
+    >>> spin_up.torque(0.0, [0, 0, 0, 1.0], [0, 0, 0.0]).tolist()
+    [0.0, 0.0, 1.0]
+    """
+
+    hamiltonian = False
+    attitude_only = False
+
+    def __init__(self, body: RigidBody, torque: Callable[[Array, Rotation, Array], ArrayLike]) -> None:
+        if not isinstance(body, RigidBody):
+            msg = f"expected an andoyer.RigidBody, got {type(body).__name__}"
+            raise ValueError(msg)
+        _check_callable(torque, "torque(t, rotation, omega)")
+        self.body = body
+        self._torque = torque
+
+    def torque(self, t: ArrayLike, q: Array, m: Array) -> Array:
+        """``u(t, rotation, ω)``, shape (..., 3)."""
+        q, m = hub_arrays(q, m)
+        value = self._torque(times(t), Rotation.from_quat(q), m / self.body.moments)
+        return as_vectors(value, "torque(t, rotation, omega)") * np.ones_like(m)
+
+
+class LinearDamping(UserTorque):
+    """Linear damping of the body angular velocity, ``τ = -c ω`` (``c >= 0``, per axis or scalar).
+
+    Examples
+    --------
+    >>> from andoyer import RigidBody
+    >>> damping = LinearDamping(RigidBody(1, 2, 2.5), 0.1)
+    >>> damping.torque(0.0, [0, 0, 0, 1.0], [1.0, 2.0, 5.0]).tolist()
+    [-0.1, -0.1, -0.2]
+    """
+
+    def __init__(self, body: RigidBody, coefficient: ArrayLike) -> None:
+        c = as_finite(coefficient, "coefficient")
+        if np.any(c < 0) or c.shape not in {(), (3,)}:
+            msg = f"expected a non-negative scalar or 3-vector coefficient, got {c.tolist()!r}"
+            raise ValueError(msg)
+        self.coefficient = c
+        super().__init__(body, lambda _t, _rot, w: -c * w)
