@@ -14,7 +14,16 @@ from typing import TYPE_CHECKING, Any
 if TYPE_CHECKING:
     from andoyer.series.ring import PoissonRing
 
-__all__ = ["add_into", "aligned", "normalized", "product_comps", "scaled", "times_i"]
+__all__ = [
+    "accumulate_products",
+    "add_into",
+    "aligned",
+    "normalized",
+    "product_comps",
+    "reduce_overlaps",
+    "scaled",
+    "times_i",
+]
 
 Comps = dict[int, Any]
 Shift = tuple[int, ...]
@@ -123,21 +132,21 @@ def times_i(comps: Comps) -> Comps:
     return {m ^ 1: (-p if m & 1 else p) for m, p in comps.items()}
 
 
-def product_comps(ring: PoissonRing, ca: Comps, cb: Comps) -> Comps:
-    """Multiply two decompositions, reducing ``i² = −1`` and ``g_j² = D_j`` (shifts add).
+def accumulate_products(acc: dict[tuple[int, int], Any], ca: Comps, cb: Comps) -> None:
+    """Add the products of all component pairs into ``acc[(mask_a ^ mask_b, mask_a & mask_b)]``.
 
-    Products are grouped by (result mask, overlap mask) so that each relation factor
-    ``D_j`` multiplies a sum once.
+    Keeping the overlap mask apart lets :func:`reduce_overlaps` multiply each relation factor
+    once per sum rather than once per product.
 
     Examples
     --------
     >>> from andoyer.series import PoissonRing
-    >>> R = PoissonRing([], [], ["b", "s"], relations={"b": "1 - s**2"})
-    >>> one = R._ctx.constant(1)
-    >>> product_comps(R, {2: one}, {2: one})    # b · b = 1 − s²
-    {0: -s^2 + 1}
+    >>> one = PoissonRing(["q"], ["p"])._ctx.constant(1)
+    >>> acc = {}
+    >>> accumulate_products(acc, {1: one}, {0: one, 1: one})
+    >>> acc
+    {(1, 0): 1, (0, 1): 1}
     """
-    acc: dict[tuple[int, int], Any] = {}
     for ma, pa in ca.items():
         for mb, pb in cb.items():
             key = (ma ^ mb, ma & mb)
@@ -146,6 +155,18 @@ def product_comps(ring: PoissonRing, ca: Comps, cb: Comps) -> Comps:
                 acc[key] += prod
             else:
                 acc[key] = prod
+
+
+def reduce_overlaps(ring: PoissonRing, acc: dict[tuple[int, int], Any]) -> Comps:
+    """Apply ``i² = −1`` and ``g_j² = D_j`` to accumulated products, merging by result mask.
+
+    Examples
+    --------
+    >>> from andoyer.series import PoissonRing
+    >>> one = PoissonRing(["q"], ["p"])._ctx.constant(1)
+    >>> reduce_overlaps(PoissonRing(["q"], ["p"]), {(0, 1): one, (0, 0): one * 3})
+    {0: 2}
+    """
     out: Comps = {}
     for (target, overlap), p in acc.items():
         q = p
@@ -158,3 +179,19 @@ def product_comps(ring: PoissonRing, ca: Comps, cb: Comps) -> Comps:
         else:
             out[target] = q
     return out
+
+
+def product_comps(ring: PoissonRing, ca: Comps, cb: Comps) -> Comps:
+    """Multiply two decompositions, reducing ``i² = −1`` and ``g_j² = D_j`` (shifts add).
+
+    Examples
+    --------
+    >>> from andoyer.series import PoissonRing
+    >>> R = PoissonRing([], [], ["b", "s"], relations={"b": "1 - s**2"})
+    >>> one = R._ctx.constant(1)
+    >>> product_comps(R, {2: one}, {2: one})    # b · b = 1 − s²
+    {0: -s^2 + 1}
+    """
+    acc: dict[tuple[int, int], Any] = {}
+    accumulate_products(acc, ca, cb)
+    return reduce_overlaps(ring, acc)

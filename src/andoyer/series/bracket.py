@@ -4,7 +4,13 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
-from andoyer.series.algebra import product_comps, times_i
+from andoyer.series.algebra import (
+    Comps,
+    accumulate_products,
+    reduce_overlaps,
+    scaled,
+    times_i,
+)
 
 if TYPE_CHECKING:
     from andoyer.series.poisson import PoissonSeries
@@ -19,6 +25,38 @@ def _relation_variables(ring: PoissonRing) -> set[str]:
     for d in ring._rel_polys:
         names.update(n for n, deg in zip(ctx_names, d.degrees(), strict=True) if int(deg))
     return names
+
+
+def _euler(f: PoissonSeries, name: str) -> Comps:
+    """Shift-preserving derivative: ``x ∂f/∂x`` for a polynomial variable, ``∂f/∂θ`` for an angle.
+
+    On ``x^a P`` the Euler operator gives ``x^a (a P + x ∂P/∂x)`` and on ``z^a P``
+    (``z = e^{iθ}``) the angle derivative gives ``i z^a (a P + z ∂P/∂z)``: the shift stays.
+    """
+    ring = f.ring
+    i = ring._index[name]
+    a = f._shift[i]
+    gen = ring._ctx.gens()[i]
+    comps = {}
+    for m, p in f._comps.items():
+        d = p.derivative(i) * gen
+        if a:
+            d += p * a
+        if not d.is_zero():
+            comps[m] = d
+    return times_i(comps) if i >= ring._nfree else comps
+
+
+def _check_variable(ring: PoissonRing, name: str) -> None:
+    if name in _relation_variables(ring):
+        msg = (
+            "expected a variable independent of the declared relations, "
+            f"got {name!r} (it appears in {ring.relations})"
+        )
+        raise ValueError(msg)
+    if name not in ring._index:
+        msg = f"expected an angle, momentum or parameter of {ring.variables}, got {name!r}"
+        raise ValueError(msg)
 
 
 def derivative(f: PoissonSeries, name: str) -> PoissonSeries:
@@ -46,28 +84,15 @@ def derivative(f: PoissonSeries, name: str) -> PoissonSeries:
     3*p**2*a*sin(q)
     """
     ring = f.ring
-    if name in _relation_variables(ring):
-        msg = (
-            "expected a variable independent of the declared relations, "
-            f"got {name!r} (it appears in {ring.relations})"
-        )
-        raise ValueError(msg)
-    if name not in ring._index:
-        msg = f"expected an angle, momentum or parameter of {ring.variables}, got {name!r}"
-        raise ValueError(msg)
+    _check_variable(ring, name)
     if not f._comps:
         return f
     i = ring._index[name]
-    a = f._shift[i]
-    gen = ring._ctx.gens()[i]
-    if i >= ring._nfree:  # angle: i · (a P + z ∂P/∂z), same shift
-        comps = {m: p * a + p.derivative(i) * gen for m, p in f._comps.items()}
-        return f._new(f._shift, times_i(comps))
-    if a == 0:
-        return f._new(f._shift, {m: p.derivative(i) for m, p in f._comps.items()})
+    comps = _euler(f, name)
+    if i >= ring._nfree:
+        return f._new(f._shift, comps)
     shift = list(f._shift)
     shift[i] -= 1
-    comps = {m: p * a + p.derivative(i) * gen for m, p in f._comps.items()}
     return f._new(tuple(shift), comps)
 
 
@@ -97,25 +122,27 @@ def poisson_bracket(f: PoissonSeries, g: PoissonSeries) -> PoissonSeries:
     ring.check(g)
     if not f._comps or not g._comps:
         return ring.zero
-    # Accumulate products at a common shift and normalise once.
-    parts = []
-    for q, p in ring.pairs:
-        fq, gp = derivative(f, q), derivative(g, p)
-        fp, gq = derivative(f, p), derivative(g, q)
-        if fq._comps and gp._comps:
-            parts.append((1, fq, gp))
-        if fp._comps and gq._comps:
-            parts.append((-1, fp, gq))
-    if not parts:
+    # With shift-preserving derivatives D (∂/∂θ, or x ∂/∂x = x · ∂/∂x) every product has the
+    # shift of f·g; the division by the momenta (and polynomial coordinates) is one monomial
+    # M, folded into the left factors so that all products land in one accumulator.
+    nvars = len(ring._zero_shift)
+    denom = [[0] * nvars for _ in ring.pairs]
+    for j, (q, p) in enumerate(ring.pairs):
+        denom[j][ring._index[p]] += 1
+        if q not in ring.angles:
+            denom[j][ring._index[q]] += 1
+    total = [sum(col) for col in zip(*denom, strict=True)] if denom else [0] * nvars
+    acc: dict[tuple[int, int], Any] = {}
+    for j, (q, p) in enumerate(ring.pairs):
+        fq, gp = _euler(f, q), _euler(g, p)
+        fp, gq = _euler(f, p), _euler(g, q)
+        rest = tuple(t - d for t, d in zip(total, denom[j], strict=True))
+        if fq and gp:
+            accumulate_products(acc, scaled(ring, fq, rest), gp)
+        if fp and gq:
+            minus = {m: -poly for m, poly in fp.items()}
+            accumulate_products(acc, scaled(ring, minus, rest), gq)
+    if not acc:
         return ring.zero
-    shifts = [tuple(x + y for x, y in zip(a._shift, b._shift, strict=True)) for _, a, b in parts]
-    common = tuple(map(min, *shifts)) if len(shifts) > 1 else shifts[0]
-    out: dict[int, Any] = {}
-    for (sign, a, b), shift in zip(parts, shifts, strict=True):
-        comps = product_comps(ring, a._comps, b._comps)
-        diff = tuple(x - y for x, y in zip(shift, common, strict=True))
-        mono = ring._ctx.term(coeff=sign, exp_vec=diff)
-        for m, poly in comps.items():
-            term = poly * mono
-            out[m] = out[m] + term if m in out else term
-    return f._new(common, out)
+    shift = tuple(a + b - t for a, b, t in zip(f._shift, g._shift, total, strict=True))
+    return f._new(shift, reduce_overlaps(ring, acc))
