@@ -9,11 +9,12 @@ polynomials, so that a product is a handful of C-level polynomial products.
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping, Sequence
-from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
-from andoyer.series import averaging, bracket, numeric, serialize, substitution, symbolic, text
+from andoyer.series import text
 from andoyer.series.algebra import Comps, Shift, add_into, aligned, normalized, product_comps
+from andoyer.series.calculus import CalculusMixin
+from andoyer.series.conversions import ConversionsMixin
 from andoyer.series.rationals import EXACT_TYPES, to_fmpq
 from andoyer.series.terms import Term, harmonic_sign, real_terms
 
@@ -37,7 +38,7 @@ def make_series(ring: PoissonRing, shift: Shift, comps: Comps) -> PoissonSeries:
     return PoissonSeries(ring, shift, comps)
 
 
-class PoissonSeries:
+class PoissonSeries(CalculusMixin, ConversionsMixin):
     """An exact Poisson series ``Σ c · x^e · {cos, sin}(k·θ)``; immutable.
 
     Build series from a :class:`~andoyer.series.PoissonRing` (``R("L**2*cos(2*l)")``,
@@ -331,243 +332,6 @@ class PoissonSeries:
             if t.kind == kind and t.harmonics == k
         ]
         return self._ring.from_terms(picked)
-
-    # ------------------------------------------------------------------ calculus (delegates)
-    def diff(self, name: str) -> PoissonSeries:
-        """Partial derivative with respect to an angle, momentum or free parameter.
-
-        Parameters
-        ----------
-        name : str
-            Variable name; relation generators and the parameters in a relation are refused
-            (they are not independent).
-
-        Returns
-        -------
-        PoissonSeries
-
-        Examples
-        --------
-        >>> from andoyer.series import PoissonRing
-        >>> R = PoissonRing(["q"], ["p"])
-        >>> R("p**-1*cos(2*q)").diff("q"), R("p**-1*cos(2*q)").diff("p")
-        (-2*p**-1*sin(2*q), -p**-2*cos(2*q))
-        """
-        return bracket.derivative(self, name)
-
-    def bracket(self, other: PoissonSeries) -> PoissonSeries:
-        """Poisson bracket ``{self, other} = Σ (∂self/∂q ∂other/∂p − ∂self/∂p ∂other/∂q)``.
-
-        Parameters
-        ----------
-        other : PoissonSeries
-
-        Returns
-        -------
-        PoissonSeries
-
-        Examples
-        --------
-        >>> from andoyer.series import PoissonRing
-        >>> R = PoissonRing(["q"], ["p"])
-        >>> R("cos(q)").bracket(R("p"))
-        -sin(q)
-        """
-        return bracket.poisson_bracket(self, other)
-
-    def average(self, angles: Sequence[str] | None = None) -> PoissonSeries:
-        """Average over the given angles (default: all angles).
-
-        Parameters
-        ----------
-        angles : sequence of str, optional
-
-        Returns
-        -------
-        PoissonSeries
-
-        Examples
-        --------
-        >>> from andoyer.series import PoissonRing
-        >>> R = PoissonRing(["l", "g"], ["L", "G"])
-        >>> R("L + cos(l) + cos(g)").average(["l"])
-        L + cos(g)
-        """
-        return averaging.average(self, angles)
-
-    def truncate(self, order: Any) -> PoissonSeries:
-        """Drop the terms whose weighted order (ring weights) exceeds ``order``.
-
-        Parameters
-        ----------
-        order : rational
-
-        Returns
-        -------
-        PoissonSeries
-
-        Examples
-        --------
-        >>> from andoyer.series import PoissonRing
-        >>> R = PoissonRing(["q"], ["p"], ["eps"], weights={"eps": 1})
-        >>> R("(1 + eps)**3 * cos(q)").truncate(1)
-        cos(q) + 3*eps*cos(q)
-        """
-        return substitution.truncate(self, order)
-
-    def order(self) -> Fraction | None:
-        """Lowest weighted order among the terms (``None`` for the zero series).
-
-        Examples
-        --------
-        >>> from andoyer.series import PoissonRing
-        >>> R = PoissonRing(["q"], ["p"], ["eps"], weights={"eps": 1})
-        >>> R("eps**2 + eps**3*p").order()
-        Fraction(2, 1)
-        """
-        if not self._comps:
-            return None
-        return min(substitution.term_order(self._ring, t) for t in self.terms())
-
-    def subs(self, values: Mapping[str, Any]) -> PoissonSeries:
-        """Substitute momenta or parameters by rationals or series (exactly, no truncation).
-
-        Parameters
-        ----------
-        values : mapping of str to rational or PoissonSeries
-            A negative power of a substituted variable needs a unit (monomial) value.
-
-        Returns
-        -------
-        PoissonSeries
-
-        Examples
-        --------
-        >>> from andoyer.series import PoissonRing
-        >>> R = PoissonRing(["q"], ["p"], ["a"])
-        >>> R("a*p**2*cos(q)").subs({"a": "1/2", "p": R("p + 1")})
-        1/2*cos(q) + p*cos(q) + 1/2*p**2*cos(q)
-        """
-        return substitution.substitute(self, values)
-
-    def shifted(self, deltas: Mapping[str, PoissonSeries], order: Any) -> PoissonSeries:
-        """Taylor-expand ``f(x + Δ)`` for angles or momenta ``x``, truncated at ``order``.
-
-        Parameters
-        ----------
-        deltas : mapping of str to PoissonSeries
-            Increments ``Δ_x``; each must have weighted order larger than the weight of ``x``.
-        order : rational
-            Truncation order (ring weights).
-
-        Returns
-        -------
-        PoissonSeries
-
-        Examples
-        --------
-        >>> from andoyer.series import PoissonRing
-        >>> R = PoissonRing(["q"], ["p"], ["eps"], weights={"eps": 1})
-        >>> R("cos(q)").shifted({"q": R("eps")}, order=2)
-        cos(q) - 1/2*eps**2*cos(q) - eps*sin(q)
-        """
-        return substitution.taylor_shift(self, deltas, order)
-
-    # ------------------------------------------------------------------ conversions
-    def to_json(self, indent: int | None = None) -> str:
-        """Serialise to JSON with exact ``"p/q"`` coefficients and the ring declaration.
-
-        Parameters
-        ----------
-        indent : int, optional
-
-        Returns
-        -------
-        str
-
-        Examples
-        --------
-        >>> from andoyer.series import PoissonRing, PoissonSeries
-        >>> f = PoissonRing(["q"], ["p"])("p/3*sin(q)")
-        >>> PoissonSeries.from_json(f.to_json()) == f
-        True
-        """
-        return serialize.series_to_json(self, indent=indent)
-
-    @staticmethod
-    def from_json(text: str, ring: PoissonRing | None = None) -> PoissonSeries:
-        """Read a series written by :meth:`to_json`.
-
-        Parameters
-        ----------
-        text : str
-        ring : PoissonRing, optional
-            If given, the stored ring must equal it (and the series uses this object).
-
-        Returns
-        -------
-        PoissonSeries
-
-        Examples
-        --------
-        >>> from andoyer.series import PoissonRing, PoissonSeries
-        >>> PoissonSeries.from_json(PoissonRing(["q"], ["p"])("p").to_json())
-        p
-        """
-        return serialize.series_from_json(text, ring)
-
-    def to_sympy(self, symbols: Mapping[str, Any] | None = None) -> Any:
-        """Convert to a sympy expression.
-
-        Parameters
-        ----------
-        symbols : mapping of str to sympy.Symbol, optional
-            Symbols to use; default ``sympy.Symbol(name)``.
-
-        Returns
-        -------
-        sympy.Expr
-
-        Examples
-        --------
-        >>> from andoyer.series import PoissonRing
-        >>> PoissonRing(["q"], ["p"])("p**2/2*cos(q)").to_sympy()
-        p**2*cos(q)/2
-        """
-        return symbolic.series_to_sympy(self, symbols)
-
-    def to_latex(self) -> str:
-        r"""Return a LaTeX string, grouping terms by trigonometric argument.
-
-        Returns
-        -------
-        str
-
-        Examples
-        --------
-        >>> from andoyer.series import PoissonRing
-        >>> PoissonRing(["l"], ["L"], ["beta"])("beta*L**2*cos(2*l)/2").to_latex()
-        '\\frac{L^{2} \\beta}{2} \\cos{\\left(2 l \\right)}'
-        """
-        return symbolic.series_to_latex(self)
-
-    def compile(self) -> numeric.CompiledSeries:
-        """Compile to a vectorised numpy function of ``ring.variables``.
-
-        Returns
-        -------
-        CompiledSeries
-            Callable with positional (in ``ring.variables`` order) or keyword arrays; all
-            arguments broadcast together.
-
-        Examples
-        --------
-        >>> from andoyer.series import PoissonRing
-        >>> f = PoissonRing(["q"], ["p"])("p**2*cos(q)").compile()
-        >>> f(q=[0.0, 3.141592653589793], p=2.0)
-        array([ 4., -4.])
-        """
-        return numeric.CompiledSeries(self)
 
     def __iter__(self) -> Iterator[Term]:
         return iter(self.terms())
