@@ -112,3 +112,15 @@ def test_homological_errors():
         frequencies(Rq("p**2/2 + T"))
     with pytest.raises(ValueError, match="sequence of angles"):
         solve_homological(R("cos(x)"), R("X"), "x")
+    with pytest.raises(ValueError, match="angle-free frequencies"):
+        solve_homological(R("cos(x)"), {"x": R("cos(y)")})
+    with pytest.raises(ValueError, match="angle-free frequencies"):
+        solve_homological(R("cos(x)"), {"z": R("X")})
+
+
+def test_homological_given_frequencies_equals_given_hamiltonian():
+    R = SAM_RING
+    H0 = R("G**2/2 + a*s*G*L")
+    f = random_series(R, np.random.default_rng(9), nterms=8).average(["g"]) + R("L*sin(2*l)")
+    omega = {"l": R("a*s*G"), "g": R("G + a*s*L")}
+    assert solve_homological(f, omega, ["l"]) == solve_homological(f, H0, ["l"])

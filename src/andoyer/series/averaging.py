@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
 from flint.utils.flint_exceptions import DomainError
@@ -129,7 +129,9 @@ def _divide(g: PoissonSeries, d: PoissonSeries, k: Any) -> PoissonSeries:
 
 
 def solve_homological(
-    f: PoissonSeries, H0: PoissonSeries, angles: Sequence[str] | None = None
+    f: PoissonSeries,
+    H0: PoissonSeries | Mapping[str, PoissonSeries],
+    angles: Sequence[str] | None = None,
 ) -> PoissonSeries:
     """Solve ``{H0, W} + f − ⟨f⟩ = 0`` for ``W`` with zero average.
 
@@ -142,8 +144,9 @@ def solve_homological(
     ----------
     f : PoissonSeries
         Right-hand side.
-    H0 : PoissonSeries
-        Unperturbed Hamiltonian, a function of the momenta (and parameters) only.
+    H0 : PoissonSeries or mapping of str to PoissonSeries
+        Unperturbed Hamiltonian, a function of the momenta (and parameters) only, or directly
+        its frequencies ``{angle: ω}`` (angle-free series; missing angles have ω = 0).
     angles : sequence of str, optional
         Angles to remove; default all.
 
@@ -162,11 +165,22 @@ def solve_homological(
     sin(q)
     >>> H0.bracket(W) + f - f.average()
     0
+    >>> solve_homological(f, {"q": R("p")}) == W
+    True
     """
     ring = f.ring
-    ring.check(H0)
     idx = _angle_indices(ring, angles)
-    omega = frequencies(H0)
+    if isinstance(H0, Mapping):
+        omega = dict.fromkeys(ring.angles, ring.zero)
+        for a, w in H0.items():
+            if a not in omega or any(any(t.harmonics) for t in w.terms()):
+                msg = f"expected angle-free frequencies keyed by {ring.angles}, got {a!r}: {w}"
+                raise ValueError(msg)
+            ring.check(w)
+            omega[a] = w
+    else:
+        ring.check(H0)
+        omega = frequencies(H0)
     if not f._comps or not idx:
         return ring.zero
     nf = ring._nfree
