@@ -110,6 +110,8 @@ def test_arithmetic_rejects_floats_and_foreign_rings():
     other = PoissonRing(["x"], ["X"])
     with pytest.raises(ValueError, match="expected a series of"):
         R("X") + other("X")
+    assert R("X") != other("X")
+    assert R("X") == PoissonRing.from_spec(R.spec())("X")
     with pytest.raises(TypeError):
         R("X") + 0.5
 

@@ -102,6 +102,8 @@ class PoissonSeries(CalculusMixin, ConversionsMixin):
         return None
 
     def __eq__(self, other: object) -> bool:
+        if isinstance(other, PoissonSeries) and other._ring != self._ring:
+            return False
         o = self._coerce(other)
         if o is None:
             return NotImplemented
