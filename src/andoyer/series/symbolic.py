@@ -15,7 +15,7 @@ __all__ = ["series_from_sympy", "series_to_latex", "series_to_sympy"]
 
 def _sympy() -> Any:
     # sympy is an optional dependency (the test extra): import it only when a conversion runs.
-    import sympy  # noqa: PLC0415
+    import sympy
 
     return sympy
 

@@ -142,7 +142,7 @@ class SAMTheory:
     transform: LieTransform
     q: dict[int, BetaPolynomial]
     g: dict[tuple[int, int], BetaPolynomial]
-    l: dict[tuple[int, int], BetaPolynomial]  # noqa: E741 (the paper's ℓ_(i,m))
+    l: dict[tuple[int, int], BetaPolynomial]
     L: dict[tuple[int, int], BetaPolynomial]
     _compiled: dict[str, CompiledSeries] = field(default_factory=dict, repr=False, compare=False)
 
