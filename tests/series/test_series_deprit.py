@@ -16,9 +16,7 @@ from andoyer.series import LieTransform, PoissonRing, deprit, lie_sum
 
 OSC = PoissonRing(["th"], ["J"])
 DUFFING_H1 = OSC("J**2*sin(th)**4")  # q⁴/4 with q = √(2J) sin θ
-SAM = PoissonRing(
-    ["l", "g"], ["L", "G"], ["alpha", "beta", "s", "C"], relations={"beta": "1 - s**2"}
-)
+SAM = PoissonRing(["l", "g"], ["L", "G"], ["alpha", "beta", "s", "C"], relations={"beta": "1 - s**2"})
 SAM_H = [SAM("G**2/(2*C) + alpha*s*G*L/C"), SAM("-alpha*L**2/(2*C)*(1 + beta*cos(2*l))")]
 
 
@@ -231,9 +229,7 @@ def test_deprit_squeezed_oscillator_transformation_matches_closed_form():
     T = deprit([OSC("J"), OSC("J*(1 - cos(2*th))/2")], order)
     eps = sympy.Symbol("eps")
     J, th = sympy.symbols("J th")
-    closed = J * (
-        sympy.sqrt(1 + eps) * sympy.cos(th) ** 2 + sympy.sin(th) ** 2 / sympy.sqrt(1 + eps)
-    )
+    closed = J * (sympy.sqrt(1 + eps) * sympy.cos(th) ** 2 + sympy.sin(th) ** 2 / sympy.sqrt(1 + eps))
     taylor = sympy.series(closed, eps, 0, order + 1).removeO()
     for n, term in enumerate(T.direct("J")):
         coeff = taylor.coeff(eps, n) * factorial(n)
@@ -246,19 +242,13 @@ def test_deprit_numerical_transformation_round_trip():
     T = deprit([OSC("J"), DUFFING_H1], order)
     eps = 1e-2
     th, J = np.linspace(0.1, 6.0, 7), np.linspace(0.2, 1.0, 7)
-    d_th = sum(
-        eps**n / factorial(n) * s.compile()(th=th, J=J) for n, s in enumerate(T.direct_angle("th"))
-    )
+    d_th = sum(eps**n / factorial(n) * s.compile()(th=th, J=J) for n, s in enumerate(T.direct_angle("th")))
     d_J = sum(eps**n / factorial(n) * s.compile()(th=th, J=J) for n, s in enumerate(T.direct("J")))
     old_th, old_J = th + d_th, d_J
     i_th = sum(
-        eps**n / factorial(n) * s.compile()(th=old_th, J=old_J)
-        for n, s in enumerate(T.inverse_angle("th"))
+        eps**n / factorial(n) * s.compile()(th=old_th, J=old_J) for n, s in enumerate(T.inverse_angle("th"))
     )
-    i_J = sum(
-        eps**n / factorial(n) * s.compile()(th=old_th, J=old_J)
-        for n, s in enumerate(T.inverse("J"))
-    )
+    i_J = sum(eps**n / factorial(n) * s.compile()(th=old_th, J=old_J) for n, s in enumerate(T.inverse("J")))
     assert np.max(np.abs(old_th + i_th - th)) < 50 * eps ** (order + 1)
     assert np.max(np.abs(i_J - J)) < 50 * eps ** (order + 1)
 

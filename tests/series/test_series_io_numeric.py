@@ -78,9 +78,7 @@ def _mp_value(f: PoissonSeries, point: dict[str, float]) -> mpmath.mpf:
             v = mpmath.mpf(t.coeff.numerator) / t.coeff.denominator
             for name, e in zip(ring.poly_names, t.exponents, strict=True):
                 v *= mpmath.mpf(point[name]) ** e
-            arg = sum(
-                k * mpmath.mpf(point[a]) for a, k in zip(ring.angles, t.harmonics, strict=True)
-            )
+            arg = sum(k * mpmath.mpf(point[a]) for a, k in zip(ring.angles, t.harmonics, strict=True))
             v *= mpmath.cos(arg) if t.kind == "cos" else mpmath.sin(arg)
             total += v
         return total
@@ -97,9 +95,7 @@ def test_numeric_matches_mpmath(name, seed):
         point = {n: float(rng.uniform(0.5, 2.0)) for n in ring.variables}
         ref = _mp_value(f, point)
         scale = _mp_value(
-            f.ring.from_terms(
-                (abs(t.coeff), t.exponents, "cos", [0] * len(t.harmonics)) for t in f.terms()
-            ),
+            f.ring.from_terms((abs(t.coeff), t.exponents, "cos", [0] * len(t.harmonics)) for t in f.terms()),
             point,
         )
         assert abs(compiled(**point) - float(ref)) <= 1e-14 * float(scale)
@@ -111,9 +107,7 @@ def test_numeric_matches_sympy_lambdify_with_broadcasting():
     symbols = [sympy.Symbol(n) for n in SAM_RING.variables]
     reference = sympy.lambdify(symbols, f.to_sympy(), "numpy")
     rng = np.random.default_rng(12)
-    args = [
-        rng.uniform(0.5, 2.0, size=shape) for shape in [(4, 1), (1, 3), (3,), (), (4, 3), (), ()]
-    ]
+    args = [rng.uniform(0.5, 2.0, size=shape) for shape in [(4, 1), (1, 3), (3,), (), (4, 3), (), ()]]
     out = compiled(*args)
     assert out.shape == (4, 3)
     np.testing.assert_allclose(out, reference(*args), rtol=1e-12, atol=1e-12)
@@ -155,13 +149,9 @@ def test_substitution_matches_sympy():
         with pytest.raises(ValueError, match="Laurent monomial"):
             f.subs({"G": value})
         f = f * R("G") ** max(-t.exponents[1] for t in f.terms())
-        expected = sympy.expand(
-            sympy.expand(f.to_sympy().subs(G, L * G + a)).subs(beta**2, 1 - s**2)
-        )
+        expected = sympy.expand(sympy.expand(f.to_sympy().subs(G, L * G + a)).subs(beta**2, 1 - s**2))
     assert R.from_sympy(expected) == f.subs({"G": value})
-    assert f.subs({"G": "3/2", "a": 2}) == R.from_sympy(
-        f.to_sympy().subs({G: sympy.Rational(3, 2), a: 2})
-    )
+    assert f.subs({"G": "3/2", "a": 2}) == R.from_sympy(f.to_sympy().subs({G: sympy.Rational(3, 2), a: 2}))
 
 
 def test_substitution_is_simultaneous():
@@ -189,12 +179,7 @@ def test_taylor_shift_matches_sympy_series():
     x, X, e = sympy.symbols("x X e")
     expr = f.to_sympy().subs({x: x + dx.to_sympy(), X: X + dX.to_sympy()}, simultaneous=True)
     series = sympy.series(expr, e, 0, order + 1).removeO()
-    assert (
-        R.from_sympy(
-            sympy.expand(sympy.expand_trig(series) - sympy.expand_trig(shifted.to_sympy()))
-        )
-        == 0
-    )
+    assert R.from_sympy(sympy.expand(sympy.expand_trig(series) - sympy.expand_trig(shifted.to_sympy()))) == 0
 
 
 def test_taylor_shift_requires_higher_order_increment():

@@ -115,9 +115,7 @@ def test_sam_tables_reconstruct_the_transformation():
         rebuilt = R.zero
         for (j, m), coeffs in theory.l.items():
             if j == i:
-                poly = sum(
-                    (R.constant(c) * R.gen("beta") ** p for p, c in enumerate(coeffs)), R.zero
-                )
+                poly = sum((R.constant(c) * R.gen("beta") ** p for p, c in enumerate(coeffs)), R.zero)
                 rebuilt += poly * R(f"(-beta)**{m} * sin({2 * m}*l)")
         assert dl[i] / factorial(i) == rebuilt * R(f"L**{i}*G**{-i}*s**{-i}")
 
@@ -144,9 +142,7 @@ def test_sam_transformation_reproduces_integrated_motion(order):
         sol = solve_ivp(_k_rhs, (0, t[-1]), y0, method="DOP853", t_eval=t, rtol=1e-13, atol=1e-15)
         new = theory.inverse(*y0, G, alpha=ALPHA, beta=BETA, C=C)
         n_l, n_g = theory.frequencies(new[2], G, ALPHA, BETA, C)
-        old = theory.direct(
-            new[0] + n_l * t, new[1] + n_g * t, new[2], G, alpha=ALPHA, beta=BETA, C=C
-        )
+        old = theory.direct(new[0] + n_l * t, new[1] + n_g * t, new[2], G, alpha=ALPHA, beta=BETA, C=C)
         err = max(
             np.max(np.abs(old[0] - sol.y[0])),
             np.max(np.abs(old[1] - sol.y[1])),

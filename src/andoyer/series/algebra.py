@@ -81,9 +81,7 @@ def scaled(ring: PoissonRing, comps: Comps, diff: Shift) -> Comps:
     return {m: p * mono for m, p in comps.items()}
 
 
-def aligned(
-    ring: PoissonRing, a: tuple[Shift, Comps], b: tuple[Shift, Comps]
-) -> tuple[Shift, Comps, Comps]:
+def aligned(ring: PoissonRing, a: tuple[Shift, Comps], b: tuple[Shift, Comps]) -> tuple[Shift, Comps, Comps]:
     """Rewrite two decompositions over their common (elementwise minimum) shift.
 
     Examples

@@ -44,9 +44,7 @@ def _source(f: PoissonSeries, used: tuple[str, ...]) -> str:
         )
         if bottom < 0:
             lines.append(f"    m_{name}_1 = 1.0 / v_{name}")
-        lines.extend(
-            f"    m_{name}_{e} = m_{name}_{e - 1} * m_{name}_1" for e in range(2, -bottom + 1)
-        )
+        lines.extend(f"    m_{name}_{e} = m_{name}_{e - 1} * m_{name}_1" for e in range(2, -bottom + 1))
     lines.append("    acc = 0.0")
     for (kind, k), parts in groups.items():
         lines.append("    h = 0.0")

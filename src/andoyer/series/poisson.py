@@ -166,9 +166,7 @@ class PoissonSeries(CalculusMixin, ConversionsMixin):
             c = to_fmpq(other)
             if c == 0:
                 return self._ring.zero
-            return PoissonSeries(
-                self._ring, self._shift, {m: p * c for m, p in self._comps.items()}
-            )
+            return PoissonSeries(self._ring, self._shift, {m: p * c for m, p in self._comps.items()})
         o = self._coerce(other)
         if o is None:
             return NotImplemented
@@ -214,9 +212,7 @@ class PoissonSeries(CalculusMixin, ConversionsMixin):
             msg = f"expected a rational times a Laurent monomial to invert, got {self}"
             raise ValueError(msg)
         c = self._comps[0].coeffs()[0]
-        return PoissonSeries(
-            self._ring, tuple(-a for a in self._shift), {0: self._ring._ctx.constant(1 / c)}
-        )
+        return PoissonSeries(self._ring, tuple(-a for a in self._shift), {0: self._ring._ctx.constant(1 / c)})
 
     def __truediv__(self, other: Any) -> PoissonSeries:
         if isinstance(other, EXACT_TYPES) and not isinstance(other, bool):
@@ -297,9 +293,7 @@ class PoissonSeries(CalculusMixin, ConversionsMixin):
             used.update(n for n, v in zip(ring.poly_names, t.exponents, strict=True) if v)
         return tuple(n for n in ring.variables if n in used)
 
-    def trig_coefficient(
-        self, kind: str, harmonics: Sequence[int] | Mapping[str, int]
-    ) -> PoissonSeries:
+    def trig_coefficient(self, kind: str, harmonics: Sequence[int] | Mapping[str, int]) -> PoissonSeries:
         """Return the angle-free coefficient of ``cos(k·θ)`` or ``sin(k·θ)``.
 
         Parameters

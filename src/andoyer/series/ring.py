@@ -111,15 +111,13 @@ class PoissonRing(RingConstructorsMixin):
         self.pairs = self._make_pairs(pairs)
         self.poly_names = self.momenta + self.params
         self.weights = self._make_weights(weights or {})
-        self._w = tuple(self.weights.get(n, Fraction(0)) for n in self._free) + (
-            Fraction(0),
-        ) * len(self.angles)
+        self._w = tuple(self.weights.get(n, Fraction(0)) for n in self._free) + (Fraction(0),) * len(
+            self.angles
+        )
         self._w_rel = tuple(self.weights.get(n, Fraction(0)) for n in self._rel)
         # Where each name of poly_names lives: ("ctx", index) or ("rel", bit).
         self._slots = tuple(
-            ("rel", 1 << (self._rel.index(n) + 1))
-            if n in self.relations
-            else ("ctx", self._index[n])
+            ("rel", 1 << (self._rel.index(n) + 1)) if n in self.relations else ("ctx", self._index[n])
             for n in self.poly_names
         )
         self._rel_polys = self._parse_relations()
@@ -134,10 +132,7 @@ class PoissonRing(RingConstructorsMixin):
         used: list[str] = []
         for q, p in out:
             if q not in self.angles + self.momenta or p not in self.momenta:
-                msg = (
-                    "expected pairs (angle or momentum, momentum) of declared names, "
-                    f"got ({q!r}, {p!r})"
-                )
+                msg = f"expected pairs (angle or momentum, momentum) of declared names, got ({q!r}, {p!r})"
                 raise ValueError(msg)
             used += [q, p]
         if len(set(used)) != len(used):
@@ -157,9 +152,7 @@ class PoissonRing(RingConstructorsMixin):
     def _parse_relations(self) -> tuple[Any, ...]:
         if not self._rel:
             return ()
-        base = PoissonRing(
-            self.angles, self.momenta, [p for p in self.params if p not in self._rel]
-        )
+        base = PoissonRing(self.angles, self.momenta, [p for p in self.params if p not in self._rel])
         polys = []
         for name, text in self.relations.items():
             d = parse_series(base, text)

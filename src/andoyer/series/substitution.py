@@ -72,11 +72,7 @@ def truncate(f: PoissonSeries, order: Any) -> PoissonSeries:
     comps = {}
     for mask, p in f._comps.items():
         extra = base + sum((wr for j, wr in enumerate(w_rel) if mask >> (j + 1) & 1), Fraction(0))
-        keep = {
-            exps: c
-            for exps, c in p.terms()
-            if extra + sum(w[i] * int(exps[i]) for i in used) <= order
-        }
+        keep = {exps: c for exps, c in p.terms() if extra + sum(w[i] * int(exps[i]) for i in used) <= order}
         if len(keep) == len(p):
             comps[mask] = p
         elif keep:
@@ -145,9 +141,7 @@ def substitute(f: PoissonSeries, values: Mapping[str, Any]) -> PoissonSeries:
     return out
 
 
-def taylor_shift(
-    f: PoissonSeries, deltas: Mapping[str, PoissonSeries], order: Any
-) -> PoissonSeries:
+def taylor_shift(f: PoissonSeries, deltas: Mapping[str, PoissonSeries], order: Any) -> PoissonSeries:
     """Expand ``f(x + Δ(x))`` in a Taylor series truncated at weighted order ``order``.
 
     ``f(x + Δ) = Σ_α ∂^α f(x) Δ(x)^α / α!``, exact up to ``order``.  Every increment must
@@ -181,10 +175,7 @@ def taylor_shift(
         weight = ring.weights.get(name, Fraction(0))
         gain = delta.order() - weight
         if gain <= 0:
-            msg = (
-                f"expected the increment of {name} to have order above {weight}, "
-                f"got order {delta.order()}"
-            )
+            msg = f"expected the increment of {name} to have order above {weight}, got order {delta.order()}"
             raise ValueError(msg)
         items.append((name, delta, gain))
     return _expand(f, items, 0, order)

@@ -68,8 +68,7 @@ def real_terms(ring: PoissonRing, shift: Shift, comps: Comps) -> tuple[Term, ...
             if sign < 0:
                 continue
             e = tuple(
-                full[slot] if where == "ctx" else (1 if mask & slot else 0)
-                for where, slot in ring._slots
+                full[slot] if where == "ctx" else (1 if mask & slot else 0) for where, slot in ring._slots
             )
             value = Fraction(int(c.p), int(c.q))
             if sign == 0 and imag:

@@ -35,9 +35,7 @@ def _linear_text(names: Sequence[str], k: Sequence[int]) -> str:
 
 def _term_text(ring: PoissonRing, t: Term) -> str:
     factors = [
-        name if e == 1 else f"{name}**{e}"
-        for name, e in zip(ring.poly_names, t.exponents, strict=True)
-        if e
+        name if e == 1 else f"{name}**{e}" for name, e in zip(ring.poly_names, t.exponents, strict=True) if e
     ]
     if any(t.harmonics):
         factors.append(f"{t.kind}({_linear_text(ring.angles, t.harmonics)})")

@@ -39,9 +39,7 @@ from andoyer.series import CompiledSeries, LieTransform, PoissonRing, PoissonSer
 
 __all__ = ["SAM_RING", "SAMTheory", "beta_polynomial_value", "sam_hamiltonian", "sam_theory"]
 
-SAM_RING = PoissonRing(
-    ["l", "g"], ["L", "G"], ["alpha", "beta", "s", "C"], relations={"beta": "1 - s**2"}
-)
+SAM_RING = PoissonRing(["l", "g"], ["L", "G"], ["alpha", "beta", "s", "C"], relations={"beta": "1 - s**2"})
 
 BetaPolynomial = tuple[Fraction, ...]
 
@@ -307,9 +305,7 @@ def _tables(T: LieTransform) -> dict[str, dict[Any, BetaPolynomial]]:
     g_tab, l_tab, L_tab = {}, {}, {}
     for i in range(1, N + 1):
         delta_i = R(f"L**{i} * G**{-i} * s**{-i}")
-        terms = {
-            name: series[i] / factorial(i) for name, series in (("l", dl), ("g", dg), ("L", dL))
-        }
+        terms = {name: series[i] / factorial(i) for name, series in (("l", dl), ("g", dg), ("L", dL))}
         for t in terms["l"].terms():
             m = t.harmonics[0] // 2
             coeff = terms["l"].trig_coefficient("sin", [2 * m, 0])

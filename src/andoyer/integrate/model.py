@@ -1,0 +1,62 @@
+"""A rotation model: the body and the disturbing terms acting on it."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+from andoyer.body import RigidBody
+from andoyer.perturbations.base import Perturbation, SumOfPerturbations
+
+__all__ = ["Model"]
+
+
+@dataclass(frozen=True)
+class Model:
+    """A rigid body and the perturbations acting on it (none: the free body).
+
+    Parameters
+    ----------
+    body : RigidBody
+    perturbations : Perturbation or sequence of Perturbation, optional
+
+    Examples
+    --------
+    >>> from andoyer import RigidBody
+    >>> from andoyer.perturbations import HeavyTop
+    >>> model = Model(RigidBody(1, 1, 1.5), HeavyTop(1.0, [0, 0, 0.2]))
+    >>> model.is_free, model.perturbation.hamiltonian
+    (False, True)
+    """
+
+    body: RigidBody
+    perturbations: Perturbation | Sequence[Perturbation] = field(default_factory=tuple)
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.body, RigidBody):
+            msg = f"expected an andoyer.RigidBody, got {type(self.body).__name__}"
+            raise ValueError(msg)
+        items = (
+            (self.perturbations,)
+            if isinstance(self.perturbations, Perturbation)
+            else tuple(self.perturbations)
+        )
+        for item in items:
+            if not isinstance(item, Perturbation):
+                msg = f"expected Perturbation models, got {type(item).__name__}"
+                raise ValueError(msg)
+        object.__setattr__(self, "perturbations", items)
+
+    @property
+    def is_free(self) -> bool:
+        """``True`` when no perturbation acts."""
+        return not self.perturbations
+
+    @property
+    def perturbation(self) -> Perturbation | None:
+        """The sum of the perturbations, or ``None`` for the free body."""
+        if not self.perturbations:
+            return None
+        if len(self.perturbations) == 1:
+            return self.perturbations[0]
+        return SumOfPerturbations(self.perturbations)
