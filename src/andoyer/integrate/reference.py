@@ -14,8 +14,8 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.integrate import solve_ivp
 
 from andoyer._validation import as_finite
-from andoyer.integrate.model import Model
 from andoyer.perturbations.equations import perturbed_rates
+from andoyer.perturbations.model import Model
 from andoyer.state import State
 
 __all__ = ["integrate_reference"]

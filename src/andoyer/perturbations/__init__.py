@@ -3,11 +3,13 @@
 See :mod:`andoyer.perturbations.base` for the equations of motion they enter.
 """
 
+from andoyer.perturbations.andoyer_form import andoyer_perturbed_equations
 from andoyer.perturbations.base import Perturbation, SumOfPerturbations
 from andoyer.perturbations.equations import perturbed_rates
 from andoyer.perturbations.frame import PrecessingFrame
 from andoyer.perturbations.gravity import GravityGradient, PointMass
 from andoyer.perturbations.heavy_top import HeavyTop
+from andoyer.perturbations.model import Model
 from andoyer.perturbations.orbits import CircularOrbit, KeplerOrbit, Orbit, TabulatedOrbit, solve_kepler
 from andoyer.perturbations.user import LinearDamping, UserPotential, UserTorque
 
@@ -17,6 +19,7 @@ __all__ = [
     "HeavyTop",
     "KeplerOrbit",
     "LinearDamping",
+    "Model",
     "Orbit",
     "Perturbation",
     "PointMass",
@@ -25,6 +28,7 @@ __all__ = [
     "TabulatedOrbit",
     "UserPotential",
     "UserTorque",
+    "andoyer_perturbed_equations",
     "perturbed_rates",
     "solve_kepler",
 ]
