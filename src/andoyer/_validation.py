@@ -37,7 +37,7 @@ def as_finite(value: ArrayLike, name: str) -> NDArray[np.float64]:
     except (TypeError, ValueError) as exc:
         msg = f"expected {name} to be real numbers, got {describe(value)}"
         raise ValueError(msg) from exc
-    if not np.all(np.isfinite(arr)):
+    if not np.isfinite(arr).all():  # the method skips np.all's dispatch: this runs in ODE right-hand sides
         bad = float(arr[~np.isfinite(arr)].flat[0]) if arr.ndim else float(arr)
         msg = f"expected finite {name}, got {bad!r}"
         raise ValueError(msg)

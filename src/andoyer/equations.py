@@ -129,7 +129,7 @@ def lie_poisson(m_body: ArrayLike, grad_hamiltonian: ArrayLike) -> Array:
     """
     m = as_vectors(m_body, "m_body")
     grad = as_vectors(grad_hamiltonian, "grad_hamiltonian")
-    return np.cross(m, grad)
+    return quat.cross(m, grad)
 
 
 def attitude_rate(quaternion: ArrayLike, omega_body: ArrayLike) -> Array:

@@ -14,7 +14,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.integrate import solve_ivp
 
 from andoyer._validation import as_finite
-from andoyer.perturbations.equations import perturbed_rates
+from andoyer.perturbations.equations import _perturbed_rates
 from andoyer.perturbations.model import Model
 from andoyer.state import State
 
@@ -79,7 +79,9 @@ def integrate_reference(
     body = model.body
 
     def rhs(time: float, y: Array) -> Array:
-        dq, dm = perturbed_rates(body, perturbation, time, y[: 4 * n].reshape(n, 4), y[4 * n :].reshape(n, 3))
+        dq, dm = _perturbed_rates(
+            body, perturbation, time, y[: 4 * n].reshape(n, 4), y[4 * n :].reshape(n, 3)
+        )
         return np.concatenate([dq.ravel(), dm.ravel()])
 
     y0 = np.concatenate([q0.ravel(), m0.ravel()])

@@ -34,6 +34,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.integrate import solve_ivp
 
+from andoyer import _quaternion as quat
 from andoyer._validation import as_finite, as_vectors
 from andoyer.body import RigidBody
 from andoyer.perturbations.gravity import PointMass
@@ -121,7 +122,7 @@ class SecularGravityGradient:
         for p in self.perturbers:
             k = self._normal(p, t)
             coefficient = 2 * self._strength(p, L, np.sqrt(G2)) * np.sum(M * k, -1) / G2
-            rate = rate + coefficient[..., None] * np.cross(k, M)
+            rate = rate + coefficient[..., None] * quat.cross(k, M)
         return rate * np.ones_like(M)
 
     def node_rate(

@@ -32,6 +32,11 @@ Array = NDArray[np.float64]
 class Perturbation:
     """Base class of disturbing models.
 
+    Subclasses implement the raw methods ``_potential``, ``_momentum_gradient``
+    and ``_torque`` on validated float arrays; the public methods check their
+    arguments once and call them, and integrators call the raw methods in
+    their inner loops.
+
     Attributes
     ----------
     hamiltonian : bool
@@ -45,17 +50,31 @@ class Perturbation:
     hamiltonian: bool = True
     attitude_only: bool = True
 
-    def potential(self, t: ArrayLike, q: Array, m: Array) -> Array:  # noqa: ARG002 - interface
+    def potential(self, t: ArrayLike, q: ArrayLike, m: ArrayLike) -> Array:
         """``ΔH`` at times ``t`` (...), attitudes ``q`` (..., 4) and body momenta ``m`` (..., 3)."""
-        msg = f"expected a Hamiltonian model for potential(), got {type(self).__name__}"
-        raise ValueError(msg)
+        if not self.hamiltonian:
+            msg = f"expected a Hamiltonian model for potential(), got {type(self).__name__}"
+            raise ValueError(msg)
+        q, m = hub_arrays(q, m)
+        return self._potential(times(t), q, m)
 
-    def momentum_gradient(self, t: ArrayLike, q: Array, m: Array) -> Array:
+    def momentum_gradient(self, t: ArrayLike, q: ArrayLike, m: ArrayLike) -> Array:
         """``∂ΔH/∂m`` in body components, shape (..., 3); zero for attitude-only models."""
+        q, m = hub_arrays(q, m)
+        return self._momentum_gradient(times(t), q, m)
+
+    def torque(self, t: ArrayLike, q: ArrayLike, m: ArrayLike) -> Array:
+        """Torque in body components, shape (..., 3)."""
+        q, m = hub_arrays(q, m)
+        return self._torque(times(t), q, m)
+
+    def _potential(self, t: Array, q: Array, m: Array) -> Array:
+        raise NotImplementedError
+
+    def _momentum_gradient(self, t: Array, q: Array, m: Array) -> Array:
         return np.zeros((*np.broadcast_shapes(np.shape(t), q.shape[:-1], m.shape[:-1]), 3))
 
-    def torque(self, t: ArrayLike, q: Array, m: Array) -> Array:
-        """Torque in body components, shape (..., 3)."""
+    def _torque(self, t: Array, q: Array, m: Array) -> Array:
         raise NotImplementedError
 
     def __add__(self, other: Perturbation) -> SumOfPerturbations:
@@ -84,20 +103,14 @@ class SumOfPerturbations(Perturbation):
         self.hamiltonian = all(m.hamiltonian for m in flat)
         self.attitude_only = all(m.attitude_only for m in flat)
 
-    def potential(self, t: ArrayLike, q: Array, m: Array) -> Array:
-        """Sum of the models' ``ΔH`` (all must be Hamiltonian)."""
-        if not self.hamiltonian:
-            msg = "expected only Hamiltonian models for potential(), got a non-Hamiltonian torque in the sum"
-            raise ValueError(msg)
-        return sum(model.potential(t, q, m) for model in self.models)
+    def _potential(self, t: Array, q: Array, m: Array) -> Array:
+        return sum(model._potential(t, q, m) for model in self.models)
 
-    def momentum_gradient(self, t: ArrayLike, q: Array, m: Array) -> Array:
-        """Sum of the models' ``∂ΔH/∂m``."""
-        return sum(model.momentum_gradient(t, q, m) for model in self.models)
+    def _momentum_gradient(self, t: Array, q: Array, m: Array) -> Array:
+        return sum(model._momentum_gradient(t, q, m) for model in self.models)
 
-    def torque(self, t: ArrayLike, q: Array, m: Array) -> Array:
-        """Sum of the models' torques."""
-        return sum(model.torque(t, q, m) for model in self.models)
+    def _torque(self, t: Array, q: Array, m: Array) -> Array:
+        return sum(model._torque(t, q, m) for model in self.models)
 
     def __repr__(self) -> str:
         return " + ".join(repr(m) for m in self.models)

@@ -15,7 +15,6 @@ from numpy.typing import ArrayLike, NDArray
 
 from andoyer import _quaternion as quat
 from andoyer.body import RigidBody
-from andoyer.equations import euler_poinsot
 from andoyer.perturbations.base import Perturbation, hub_arrays, times
 
 __all__ = ["perturbed_rates"]
@@ -53,15 +52,23 @@ def perturbed_rates(
     ([0.0, 0.0, 0.0, 0.0], [0.0, 0.0, 0.0])
     """
     q, m = hub_arrays(q, m)
-    t = times(t)
-    rate = euler_poinsot(body, m)
+    return _perturbed_rates(body, model, times(t), q, m)
+
+
+def _perturbed_rates(
+    body: RigidBody, model: Perturbation | None, t: Array, q: Array, m: Array
+) -> tuple[Array, Array]:
+    """:func:`perturbed_rates` on validated arrays (the integrators' inner loop)."""
+    c = body.euler_coefficients
+    m0, m1, m2 = m[..., 0], m[..., 1], m[..., 2]
+    rate = np.stack([c[0] * m1 * m2, c[1] * m2 * m0, c[2] * m0 * m1], axis=-1)
     velocity = m / body.moments
     if model is not None:
         if not model.attitude_only:
-            gradient = model.momentum_gradient(t, q, m)
+            gradient = model._momentum_gradient(t, q, m)
             velocity = velocity + gradient
-            rate = rate + np.cross(m, gradient)
-        rate = rate + model.torque(t, q, m)
+            rate = rate + quat.cross(m, gradient)
+        rate = rate + model._torque(t, q, m)
     w4 = np.concatenate([velocity, np.zeros((*velocity.shape[:-1], 1))], axis=-1)
     dq = 0.5 * quat.multiply(*np.broadcast_arrays(q, w4))
     return dq, rate * np.ones(np.broadcast_shapes(rate.shape, (*dq.shape[:-1], 3)))

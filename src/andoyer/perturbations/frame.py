@@ -22,7 +22,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from andoyer import _quaternion as quat
 from andoyer._validation import as_vectors
-from andoyer.perturbations.base import Perturbation, hub_arrays, times
+from andoyer.perturbations.base import Perturbation
 
 __all__ = ["PrecessingFrame"]
 
@@ -55,26 +55,20 @@ class PrecessingFrame(Perturbation):
     def rate(self, t: ArrayLike) -> Array:
         """``μ`` in reference components at times ``t``, shape (..., 3)."""
         if self._function is not None:
-            return as_vectors(self._function(times(t)), "rate(t)")
-        return np.broadcast_to(self._constant, (*np.shape(times(t)), 3))
+            return as_vectors(self._function(t), "rate(t)")
+        return np.broadcast_to(self._constant, (*np.shape(t), 3))
 
     def _rate_body(self, t: ArrayLike, q: Array) -> Array:
         return quat.rotate(quat.conjugate(q), self.rate(t))
 
-    def potential(self, t: ArrayLike, q: Array, m: Array) -> Array:
-        """``ΔH = -μ_b·m``, shape (...)."""
-        q, m = hub_arrays(q, m)
+    def _potential(self, t: Array, q: Array, m: Array) -> Array:
         return -np.sum(self._rate_body(t, q) * m, axis=-1)
 
-    def momentum_gradient(self, t: ArrayLike, q: Array, m: Array) -> Array:
-        """``∂ΔH/∂m = -μ_b``, shape (..., 3)."""
-        q, m = hub_arrays(q, m)
+    def _momentum_gradient(self, t: Array, q: Array, m: Array) -> Array:
         return -self._rate_body(t, q) * np.ones_like(m)
 
-    def torque(self, t: ArrayLike, q: Array, m: Array) -> Array:
-        """``τ = m × μ_b``, shape (..., 3)."""
-        q, m = hub_arrays(q, m)
-        return np.cross(m, self._rate_body(t, q))
+    def _torque(self, t: Array, q: Array, m: Array) -> Array:
+        return quat.cross(m, self._rate_body(t, q))
 
     def __repr__(self) -> str:
         return f"PrecessingFrame({'<function>' if self._function else self._constant.tolist()})"

@@ -22,7 +22,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from andoyer import _quaternion as quat
 from andoyer.body import RigidBody
-from andoyer.perturbations.base import Perturbation, hub_arrays, times
+from andoyer.perturbations.base import Perturbation
 from andoyer.perturbations.orbits import Orbit
 
 __all__ = ["GravityGradient", "PointMass"]
@@ -91,11 +91,9 @@ class GravityGradient(Perturbation):
 
     def _directions(self, t: ArrayLike, q: Array) -> list[tuple[float, Array]]:
         conj = quat.conjugate(q)
-        return [(p.gm, quat.rotate(conj, p.orbit.position(times(t)))) for p in self.perturbers]
+        return [(p.gm, quat.rotate(conj, p.orbit.position(t))) for p in self.perturbers]
 
-    def potential(self, t: ArrayLike, q: Array, m: Array) -> Array:
-        """``ΔH``, shape (...)."""
-        q, m = hub_arrays(q, m)
+    def _potential(self, t: Array, q: Array, m: Array) -> Array:
         I = self.body.moments
         total = 0.0
         for gm, rho in self._directions(t, q):
@@ -103,15 +101,13 @@ class GravityGradient(Perturbation):
             total = total + gm / (2 * r2**2.5) * np.sum(I * (3 * rho * rho - r2[..., None]), axis=-1)
         return total * np.ones(np.broadcast_shapes(np.shape(total), m.shape[:-1]))
 
-    def torque(self, t: ArrayLike, q: Array, m: Array) -> Array:
-        """Torque in body components, shape (..., 3)."""
-        q, m = hub_arrays(q, m)
+    def _torque(self, t: Array, q: Array, m: Array) -> Array:
         I1, I2, I3 = self.body.moments
         total = 0.0
         for gm, rho in self._directions(t, q):
             r2 = np.sum(rho * rho, axis=-1)
             scale = 3 * gm / r2**2.5
-            x, y, z = np.moveaxis(rho, -1, 0)
+            x, y, z = rho[..., 0], rho[..., 1], rho[..., 2]
             total = total + scale[..., None] * np.stack(
                 [(I3 - I2) * y * z, (I1 - I3) * z * x, (I2 - I1) * x * y], -1
             )

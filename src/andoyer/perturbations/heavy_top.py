@@ -17,9 +17,10 @@ from numpy.typing import ArrayLike, NDArray
 
 from andoyer import _quaternion as quat
 from andoyer._validation import as_finite, as_vectors
-from andoyer.perturbations.base import Perturbation, hub_arrays
+from andoyer.body import RigidBody
+from andoyer.perturbations.base import Perturbation
 
-__all__ = ["HeavyTop"]
+__all__ = ["HeavyTop", "kovalevskaya_integral", "kovalevskaya_top", "lagrange_top"]
 
 Array = NDArray[np.float64]
 
@@ -60,17 +61,75 @@ class HeavyTop(Perturbation):
         """The upward vertical in body components, shape (..., 3)."""
         return quat.rotate(quat.conjugate(q), _UP)
 
-    def potential(self, t: ArrayLike, q: Array, m: Array) -> Array:
-        """``ΔH``, shape (...)."""
-        q, m = hub_arrays(q, m)
+    def _potential(self, t: Array, q: Array, m: Array) -> Array:
         value = self.weight * np.sum(self.gamma(q) * self.center_of_mass, axis=-1)
         return value * np.ones(np.broadcast_shapes(np.shape(t), m.shape[:-1], value.shape))
 
-    def torque(self, t: ArrayLike, q: Array, m: Array) -> Array:
-        """``τ = m g0 γ × r_c``, shape (..., 3)."""
-        q, m = hub_arrays(q, m)
-        value = self.weight * np.cross(self.gamma(q), self.center_of_mass)
+    def _torque(self, t: Array, q: Array, m: Array) -> Array:
+        value = self.weight * quat.cross(self.gamma(q), self.center_of_mass)
         return value * np.ones((*np.broadcast_shapes(np.shape(t), m.shape[:-1], value.shape[:-1]), 3))
 
     def __repr__(self) -> str:
         return f"HeavyTop(weight={self.weight!r}, center_of_mass={self.center_of_mass.tolist()})"
+
+
+def lagrange_top(A: float, C: float, weight: float, height: float) -> tuple[RigidBody, HeavyTop]:
+    """The Lagrange top: ``I1 = I2 = A``, centre of mass on the symmetry axis ``b3`` at ``height``.
+
+    ``M3 = L`` (the momentum about the symmetry axis) is an integral besides the
+    energy and the Casimirs ``|γ| = 1`` and ``M·γ``.
+
+    Examples
+    --------
+    >>> body, top = lagrange_top(1.0, 0.5, 2.0, 0.3)
+    >>> body.moments.tolist(), top.center_of_mass.tolist()
+    ([1.0, 1.0, 0.5], [0.0, 0.0, 0.3])
+    """
+    return RigidBody(A, A, C, name="Lagrange top"), HeavyTop(weight, [0.0, 0.0, height])
+
+
+def kovalevskaya_top(C: float, weight: float, distance: float) -> tuple[RigidBody, HeavyTop]:
+    """The Kovalevskaya top: ``I1 = I2 = 2 I3 = 2C``, centre of mass on ``b1`` at ``distance``.
+
+    Examples
+    --------
+    >>> body, top = kovalevskaya_top(1.0, 1.0, 0.5)
+    >>> body.moments.tolist()
+    [2.0, 2.0, 1.0]
+    """
+    return RigidBody(2 * C, 2 * C, C, name="Kovalevskaya top"), HeavyTop(weight, [distance, 0.0, 0.0])
+
+
+def kovalevskaya_integral(body: RigidBody, top: HeavyTop, quaternion: ArrayLike, m_body: ArrayLike) -> Array:
+    r"""Kovalevskaya's integral ``K = (p² - q² - c γ1)² + (2pq - c γ2)²``, ``c = m g0 x0 / I3``.
+
+    ``(p, q, r) = ω`` is the body angular velocity and ``γ`` the upward vertical
+    (:meth:`HeavyTop.gamma`), for the top of :func:`kovalevskaya_top`.
+
+    Parameters
+    ----------
+    body : RigidBody
+    top : HeavyTop
+    quaternion : array_like, shape (..., 4)
+    m_body : array_like, shape (..., 3)
+
+    Returns
+    -------
+    numpy.ndarray, shape (...)
+
+    Examples
+    --------
+    >>> body, top = kovalevskaya_top(1.0, 1.0, 0.5)
+    >>> float(kovalevskaya_integral(body, top, [0, 0, 0, 1.0], [2.0, 0.0, 0.0]))  # p = 1, γ = e3
+    1.0
+    """
+    I1, I2, I3 = body.moments
+    x0, y0, z0 = top.center_of_mass
+    if not (I1 == I2 == 2 * I3 and y0 == 0 and z0 == 0):
+        msg = f"expected a Kovalevskaya top (I1 = I2 = 2 I3, centre of mass on b1), got {body!r} and {top!r}"
+        raise ValueError(msg)
+    q, m = as_vectors(quaternion, "quaternion", 4), as_vectors(m_body, "m_body")
+    p, qq = m[..., 0] / I1, m[..., 1] / I2
+    gamma = top.gamma(q)
+    c = top.weight * x0 / I3
+    return (p * p - qq * qq - c * gamma[..., 0]) ** 2 + (2 * p * qq - c * gamma[..., 1]) ** 2

@@ -16,7 +16,7 @@ from scipy.spatial.transform import Rotation
 from andoyer import _quaternion as quat
 from andoyer._validation import as_finite, as_vectors
 from andoyer.body import RigidBody
-from andoyer.perturbations.base import Perturbation, hub_arrays, times
+from andoyer.perturbations.base import Perturbation
 
 __all__ = ["LinearDamping", "UserPotential", "UserTorque"]
 
@@ -65,23 +65,19 @@ class UserPotential(Perturbation):
         _check_callable(potential, "potential(rotation, t)")
         if torque is not None:
             _check_callable(torque, "torque(rotation, t)")
-        self._potential = potential
-        self._torque = torque
+        self._user_potential = potential
+        self._user_torque = torque
         self.step = float(step)
 
     def _value(self, t: ArrayLike, q: Array) -> Array:
-        return as_finite(self._potential(Rotation.from_quat(q), times(t)), "potential(rotation, t)")
+        return as_finite(self._user_potential(Rotation.from_quat(q), t), "potential(rotation, t)")
 
-    def potential(self, t: ArrayLike, q: Array, m: Array) -> Array:
-        """``V``, shape (...)."""
-        q, m = hub_arrays(q, m)
+    def _potential(self, t: Array, q: Array, m: Array) -> Array:
         return self._value(t, q) * np.ones(m.shape[:-1])
 
-    def torque(self, t: ArrayLike, q: Array, m: Array) -> Array:
-        """Analytic or central-difference torque, shape (..., 3)."""
-        q, m = hub_arrays(q, m)
-        if self._torque is not None:
-            return as_vectors(self._torque(Rotation.from_quat(q), times(t)), "torque(rotation, t)")
+    def _torque(self, t: Array, q: Array, m: Array) -> Array:
+        if self._user_torque is not None:
+            return as_vectors(self._user_torque(Rotation.from_quat(q), t), "torque(rotation, t)")
         h = self.step
         out = []
         for axis in np.eye(3):
@@ -118,12 +114,10 @@ class UserTorque(Perturbation):
             raise ValueError(msg)
         _check_callable(torque, "torque(t, rotation, omega)")
         self.body = body
-        self._torque = torque
+        self._user_torque = torque
 
-    def torque(self, t: ArrayLike, q: Array, m: Array) -> Array:
-        """``u(t, rotation, ω)``, shape (..., 3)."""
-        q, m = hub_arrays(q, m)
-        value = self._torque(times(t), Rotation.from_quat(q), m / self.body.moments)
+    def _torque(self, t: Array, q: Array, m: Array) -> Array:
+        value = self._user_torque(t, Rotation.from_quat(q), m / self.body.moments)
         return as_vectors(value, "torque(t, rotation, omega)") * np.ones_like(m)
 
 
