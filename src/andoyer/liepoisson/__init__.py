@@ -1,0 +1,1 @@
+"""Lie–Poisson layer (work in progress)."""
