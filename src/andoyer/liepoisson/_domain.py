@@ -74,7 +74,7 @@ def unit_vectors(name: str, v: np.ndarray) -> np.ndarray:
 
 
 def momenta(L: Any, G: Any, H: Any | None) -> tuple[np.ndarray, ...]:
-    """Check ``G > 0``, ``|L| ≤ G``, ``|H| ≤ G``; return broadcast (L, G, H) clipped to ``[-G, G]``."""
+    """Check ``G > 0``, ``|L| ≤ G``, ``|H| ≤ G``; return broadcast (L, G, H) clipped to ±G."""
     L = as_scalars("L", L)
     G = as_scalars("G", G)
     H = as_scalars("H", 0.0 if H is None else H)
@@ -115,7 +115,7 @@ def wrap_angle(angle: np.ndarray, period: float = TWO_PI) -> np.ndarray:
 
 
 def body_angle_l(m: np.ndarray, G: np.ndarray, stacklevel: int) -> tuple[np.ndarray, ...]:
-    """``l``, ``sin l``, ``cos l``, ``sin J``, ``cos J`` from body momentum, with the l = 0 convention."""
+    """``l, sin l, cos l, sin J, cos J`` from body momentum, with the l = 0 convention."""
     rho = np.hypot(m[..., 0], m[..., 1])
     sin_J = rho / G
     singular = sin_J <= SINGULAR_TOL
@@ -127,8 +127,8 @@ def body_angle_l(m: np.ndarray, G: np.ndarray, stacklevel: int) -> tuple[np.ndar
     safe = np.where(singular, 1.0, rho)
     sin_l = np.where(singular, 0.0, m[..., 0] / safe)
     cos_l = np.where(singular, 1.0, m[..., 1] / safe)
-    l = np.where(singular, 0.0, wrap_angle(np.arctan2(m[..., 0], m[..., 1])))
-    return l, sin_l, cos_l, sin_J, m[..., 2] / G
+    ell = np.where(singular, 0.0, wrap_angle(np.arctan2(m[..., 0], m[..., 1])))
+    return ell, sin_l, cos_l, sin_J, m[..., 2] / G
 
 
 def momentum_magnitude(m: np.ndarray) -> np.ndarray:

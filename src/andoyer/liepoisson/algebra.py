@@ -1,4 +1,4 @@
-"""Lie–Poisson algebras so(3), e(3) and l(7) with linear Poisson tensors.
+r"""Lie–Poisson algebras so(3), e(3) and l(7) with linear Poisson tensors.
 
 Every algebra here is a linear Poisson structure on R^n with generators
 ``x = (x_1, ..., x_n)`` and structure constants ``C``:
@@ -311,7 +311,7 @@ class LiePoissonAlgebra:
         >>> so3 = get_algebra("so3")
         >>> m1, m2, m3 = so3.symbols()
         >>> so3.bracket_sym_unexpanded(m1 * m2, m3)
-        m1**2 - m2**2
+        -m1**2 + m2**2
         """
         import sympy as sp  # noqa: PLC0415
 

@@ -146,7 +146,7 @@ def check_coordinates(
     absP = np.abs(P)
     substitution = None
     if coords.forward is not None:
-        substitution = {x: coords.forward[name] for x, name in zip(xs, alg.generators)}
+        substitution = {x: coords.forward[name] for x, name in zip(xs, alg.generators, strict=True)}
     records = []
     for a, b in itertools.combinations(coords.symbols, 2):
         expected = coords.canonical_value(a, b)
@@ -208,7 +208,8 @@ def check_poisson_map(
     >>> from andoyer.liepoisson.coordinates import euler_coordinates
     >>> [(r.left, r.right, r.value, r.symbolic_ok, r.numeric_ok)
     ...  for r in check_poisson_map(euler_coordinates("so3"), n_points=50)]
-    [('m1', 'm2', '-m3', True, True), ('m1', 'm3', 'm2', True, True), ('m2', 'm3', '-m1', True, True)]
+    [('m1', 'm2', '-m3', True, True), ('m1', 'm3', 'm2', True, True),
+     ('m2', 'm3', '-m1', True, True)]
     """
     if coords.forward is None:
         raise ValueError("expected coordinates with a forward map, got forward=None")
@@ -224,7 +225,9 @@ def check_poisson_map(
              for z in zs], axis=-1,
         )
     else:
-        raise ValueError("expected a sampler or an inverse map for the numeric check, got neither")
+        raise ValueError(
+            "expected a sampler or an inverse map for the numeric check, got neither"
+        )
     X = [coords.forward[name] for name in alg.generators]
     jac = np.stack([_lambdify_gradient(x, zs)(zpts) for x in X], axis=-2)  # (N, n, nz)
     omega = np.zeros((len(zs), len(zs)))
@@ -241,7 +244,7 @@ def check_poisson_map(
     scale = np.maximum(1.0, scale_can + np.abs(alg.poisson_tensor(np.abs(xvals))))
     err = np.abs(canonical - structure) / scale
     P_sym = alg.poisson_tensor_sym()
-    substitution = dict(zip(alg.symbols(), X))
+    substitution = dict(zip(alg.symbols(), X, strict=True))
     records = []
     for a, b in itertools.combinations(range(alg.dim), 2):
         expected = P_sym[a, b]

@@ -110,7 +110,9 @@ def andoyer_symbols() -> dict[str, Any]:
     return names
 
 
-def _andoyer_sampler(n_angles: int, with_h: bool) -> Callable[[np.random.Generator, int], np.ndarray]:
+def _andoyer_sampler(
+    n_angles: int, with_h: bool
+) -> Callable[[np.random.Generator, int], np.ndarray]:
     def sample(rng: np.random.Generator, n: int) -> np.ndarray:
         G = rng.uniform(0.5, 2.0, n)
         L = G * rng.uniform(-0.95, 0.95, n)
@@ -152,25 +154,25 @@ def andoyer_coordinates(algebra: str) -> CanonicalCoordinates:
     """
     alg = get_algebra(algebra)
     s = andoyer_symbols()
-    l, g, h, L, G, H = (s[k] for k in ("l", "g", "h", "L", "G", "H"))
+    ell, g, h, L, G, H = (s[k] for k in ("l", "g", "h", "L", "G", "H"))
     xs = alg.symbols()
     m = sp.Matrix(xs[:3])
     G_of_x = sp.sqrt(m.dot(m))
-    inverse: dict[Any, Any] = {l: sp.atan2(xs[0], xs[1]), L: xs[2], G: G_of_x}
+    inverse: dict[Any, Any] = {ell: sp.atan2(xs[0], xs[1]), L: xs[2], G: G_of_x}
     if algebra == "so3":
         rho = sp.sqrt(G**2 - L**2)
-        forward = {"m1": rho * sp.sin(l), "m2": rho * sp.cos(l), "m3": L}
+        forward = {"m1": rho * sp.sin(ell), "m2": rho * sp.cos(ell), "m3": L}
         return CanonicalCoordinates(
-            "so3", ((l, L),), (G,), forward, inverse, _andoyer_sampler(1, False)
+            "so3", ((ell, L),), (G,), forward, inverse, _andoyer_sampler(1, False)
         )
     if algebra == "e3":
         rho = sp.sqrt(G**2 - L**2)
         sI, cI, sJ, cJ = sp.sqrt(G**2 - H**2) / G, H / G, rho / G, L / G
         u = cI * sJ + sI * cJ * sp.cos(g)
         forward = {
-            "m1": rho * sp.sin(l), "m2": rho * sp.cos(l), "m3": L,
-            "gamma1": u * sp.sin(l) + sI * sp.sin(g) * sp.cos(l),
-            "gamma2": u * sp.cos(l) - sI * sp.sin(g) * sp.sin(l),
+            "m1": rho * sp.sin(ell), "m2": rho * sp.cos(ell), "m3": L,
+            "gamma1": u * sp.sin(ell) + sI * sp.sin(g) * sp.cos(ell),
+            "gamma2": u * sp.cos(ell) - sI * sp.sin(g) * sp.sin(ell),
             "gamma3": cI * cJ - sI * sJ * sp.cos(g),
         }
         gamma = sp.Matrix(xs[3:])
@@ -178,7 +180,7 @@ def andoyer_coordinates(algebra: str) -> CanonicalCoordinates:
         inverse[g] = _g_of(m, gamma, H_of_x)
         inverse[H] = H_of_x
         return CanonicalCoordinates(
-            "e3", ((l, L), (g, G)), (H,), forward, inverse, _andoyer_sampler(2, False)
+            "e3", ((ell, L), (g, G)), (H,), forward, inverse, _andoyer_sampler(2, False)
         )
     if algebra != "l7":
         get_algebra(algebra)  # raises the standard error
@@ -186,10 +188,10 @@ def andoyer_coordinates(algebra: str) -> CanonicalCoordinates:
             (("I", H), ("J", L))}
     lam = _quat(
         _quat(_quat(_qz(h), _qx(*half["I"])), _qz(g)),
-        _quat(_qx(*half["J"]), _qz(l)),
+        _quat(_qx(*half["J"]), _qz(ell)),
     )
     rho = 2 * G * half["J"][0] * half["J"][1]
-    forward = {"m1": rho * sp.sin(l), "m2": rho * sp.cos(l), "m3": L}
+    forward = {"m1": rho * sp.sin(ell), "m2": rho * sp.cos(ell), "m3": L}
     forward.update({f"lambda{i}": lam[i] for i in range(4)})
     gamma = quaternion_gamma(xs[3:])
     m_ref = quaternion_matrix(xs[3:]) * m
@@ -197,7 +199,7 @@ def andoyer_coordinates(algebra: str) -> CanonicalCoordinates:
     inverse[h] = sp.atan2(m_ref[0], -m_ref[1])
     inverse[g] = _g_of(m, gamma, m.dot(gamma))
     return CanonicalCoordinates(
-        "l7", ((l, L), (g, G), (h, H)), (), forward, inverse, _andoyer_sampler(3, True)
+        "l7", ((ell, L), (g, G), (h, H)), (), forward, inverse, _andoyer_sampler(3, True)
     )
 
 

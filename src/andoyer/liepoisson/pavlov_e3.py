@@ -1,4 +1,4 @@
-"""Andoyer–Deprit coordinates on the symplectic leaves of so(3) and e(3) (Pavlov §1).
+r"""Andoyer–Deprit coordinates on the symplectic leaves of so(3) and e(3) (Pavlov §1).
 
 Conventions are those of the project's Andoyer chart: ``rot = Rz(h) Rx(I) Rz(g) Rx(J) Rz(l)``
 (body → reference), ``cos I = H/G``, ``cos J = L/G``, ``0 ≤ I, J ≤ π``, and
@@ -57,7 +57,7 @@ __all__ = [
 class So3Coordinates(NamedTuple):
     """Cylindrical coordinates ``(l, L)`` on the sphere ``|m| = G`` (arrays of equal shape)."""
 
-    l: np.ndarray
+    l: np.ndarray  # noqa: E741 - Andoyer angle l
     L: np.ndarray
     G: np.ndarray
 
@@ -65,7 +65,7 @@ class So3Coordinates(NamedTuple):
 class E3Coordinates(NamedTuple):
     """Andoyer–Deprit coordinates ``(l, g, L, G)`` on the e(3) leaf labelled by ``H``."""
 
-    l: np.ndarray
+    l: np.ndarray  # noqa: E741 - Andoyer angle l
     g: np.ndarray
     L: np.ndarray
     G: np.ndarray
@@ -103,11 +103,11 @@ def so3_to_andoyer(m: Any) -> So3Coordinates:
     """
     m = as_components("m", m, 3)
     G = momentum_magnitude(m)
-    l, *_ = body_angle_l(m, G, stacklevel=2)
-    return So3Coordinates(l[()], m[..., 2][()], G[()])
+    ell, *_ = body_angle_l(m, G, stacklevel=2)
+    return So3Coordinates(ell[()], m[..., 2][()], G[()])
 
 
-def so3_from_andoyer(l: Any, L: Any, G: Any) -> np.ndarray:
+def so3_from_andoyer(l: Any, L: Any, G: Any) -> np.ndarray:  # noqa: E741
     """Body angular momentum ``m = (√(G²−L²) sin l, √(G²−L²) cos l, L)`` (Pavlov eq. 1.2).
 
     Parameters
@@ -130,13 +130,14 @@ def so3_from_andoyer(l: Any, L: Any, G: Any) -> np.ndarray:
     array([0. , 0.8, 0.6])
     """
     L, G, _ = momenta(L, G, None)
-    l = as_scalars("l", l)
-    l, L, G = broadcast(l=l, L=L, G=G)
+    ell, L, G = broadcast(l=as_scalars("l", l), L=L, G=G)
     rho = np.sqrt((G - L) * (G + L))
-    return np.stack([rho * np.sin(l), rho * np.cos(l), L], axis=-1)
+    return np.stack([rho * np.sin(ell), rho * np.cos(ell), L], axis=-1)
 
 
-def e3_from_andoyer(l: Any, g: Any, L: Any, G: Any, H: Any) -> tuple[np.ndarray, np.ndarray]:
+def e3_from_andoyer(
+    l: Any, g: Any, L: Any, G: Any, H: Any  # noqa: E741 - Andoyer angle l
+) -> tuple[np.ndarray, np.ndarray]:
     """``(m, γ)`` on the e(3) leaf from Andoyer–Deprit coordinates (Pavlov eqs. 1.2, 1.7).
 
     Parameters
@@ -171,14 +172,14 @@ def e3_from_andoyer(l: Any, g: Any, L: Any, G: Any, H: Any) -> tuple[np.ndarray,
     -0.7
     """
     L, G, H = momenta(L, G, H)
-    l, g, L, G, H = broadcast(
+    ell, g, L, G, H = broadcast(
         l=as_scalars("l", l), g=as_scalars("g", g), L=L, G=G, H=H
     )
     sin_J = np.sqrt((G - L) * (G + L)) / G
     cos_J = L / G
     sin_I = np.sqrt((G - H) * (G + H)) / G
     cos_I = H / G
-    sl, cl, sg, cg = np.sin(l), np.cos(l), np.sin(g), np.cos(g)
+    sl, cl, sg, cg = np.sin(ell), np.cos(ell), np.sin(g), np.cos(g)
     u = cos_I * sin_J + sin_I * cos_J * cg
     gamma = np.stack(
         [u * sl + sin_I * sg * cl, u * cl - sin_I * sg * sl, cos_I * cos_J - sin_I * sin_J * cg],
@@ -227,7 +228,7 @@ def e3_to_andoyer(m: Any, gamma: Any) -> E3Coordinates:
     m = np.broadcast_to(m, (*shape, 3))
     gamma = unit_vectors("gamma", np.broadcast_to(gamma, (*shape, 3)))
     G = momentum_magnitude(m)
-    l, sl, cl, sin_J, cos_J = body_angle_l(m, G, stacklevel=2)
+    ell, sl, cl, sin_J, cos_J = body_angle_l(m, G, stacklevel=2)
     g1, g2, g3 = np.moveaxis(gamma, -1, 0)
     sin_I_sin_g = g1 * cl - g2 * sl
     sin_I_cos_g = (g1 * sl + g2 * cl) * cos_J - g3 * sin_J
@@ -239,4 +240,4 @@ def e3_to_andoyer(m: Any, gamma: Any) -> E3Coordinates:
     )
     g = np.where(singular, 0.0, wrap_angle(np.arctan2(sin_I_sin_g, sin_I_cos_g)))
     H = np.clip(np.sum(m * gamma, axis=-1), -G, G)
-    return E3Coordinates(l[()], g[()], m[..., 2][()], G[()], H[()])
+    return E3Coordinates(ell[()], g[()], m[..., 2][()], G[()], H[()])

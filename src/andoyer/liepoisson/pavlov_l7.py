@@ -1,4 +1,4 @@
-"""Andoyer–Deprit coordinates on the six-dimensional leaves of l(7) (Pavlov §2).
+r"""Andoyer–Deprit coordinates on the six-dimensional leaves of l(7) (Pavlov §2).
 
 A point of l(7) is ``(m, λ)``: body angular momentum and Pavlov's unit quaternion
 λ = (w, x, y, z) of the attitude ``rot`` (body → reference), see
@@ -54,7 +54,7 @@ __all__ = ["L7Coordinates", "l7_from_andoyer", "l7_to_andoyer"]
 class L7Coordinates(NamedTuple):
     """Andoyer–Deprit coordinates ``(l, g, h, L, G, H)`` on an l(7) leaf (arrays of equal shape)."""
 
-    l: np.ndarray
+    l: np.ndarray  # noqa: E741 - Andoyer angle l
     g: np.ndarray
     h: np.ndarray
     L: np.ndarray
@@ -77,8 +77,8 @@ def _qx(c: np.ndarray, s: np.ndarray) -> np.ndarray:
     return np.stack([c, s, zero, zero], axis=-1)
 
 
-def l7_from_andoyer(
-    l: Any, g: Any, h: Any, L: Any, G: Any, H: Any
+def l7_from_andoyer(  # noqa: PLR0917 - the six Andoyer variables, in order
+    l: Any, g: Any, h: Any, L: Any, G: Any, H: Any  # noqa: E741 - Andoyer angle l
 ) -> tuple[np.ndarray, np.ndarray]:
     """``(m, λ)`` on the l(7) leaf ``|λ| = 1`` from Andoyer–Deprit coordinates.
 
@@ -113,7 +113,7 @@ def l7_from_andoyer(
     True
     """
     L, G, H = momenta(L, G, H)
-    l, g, h, L, G, H = broadcast(
+    ell, g, h, L, G, H = broadcast(
         l=as_scalars("l", l), g=as_scalars("g", g), h=as_scalars("h", h), L=L, G=G, H=H
     )
     cI, sI = _half_angle_factors(H, G)
@@ -122,10 +122,10 @@ def l7_from_andoyer(
         quaternion_product(_qz(np.cos(h / 2), np.sin(h / 2)), _qx(cI, sI)),
         _qz(np.cos(g / 2), np.sin(g / 2)),
     )
-    back = quaternion_product(_qx(cJ, sJ), _qz(np.cos(l / 2), np.sin(l / 2)))
+    back = quaternion_product(_qx(cJ, sJ), _qz(np.cos(ell / 2), np.sin(ell / 2)))
     lam = quaternion_product(front, back)
     rho = 2 * G * sJ * cJ
-    m = np.stack([rho * np.sin(l), rho * np.cos(l), L], axis=-1)
+    m = np.stack([rho * np.sin(ell), rho * np.cos(ell), L], axis=-1)
     return m, lam
 
 
@@ -175,7 +175,7 @@ def l7_to_andoyer(m: Any, lam: Any, *, double_cover: bool = False) -> L7Coordina
     m = np.broadcast_to(m, (*shape, 3))
     lam = unit_vectors("lam", np.broadcast_to(lam, (*shape, 4)))
     G = momentum_magnitude(m)
-    l, _, _, _, _ = body_angle_l(m, G, stacklevel=2)
+    ell, _, _, _, _ = body_angle_l(m, G, stacklevel=2)
     m_ref = np.einsum("...ij,...j->...i", rotation_matrix(lam), m)
     L = m[..., 2]
     H = np.clip(m_ref[..., 2], -G, G)
@@ -191,8 +191,8 @@ def l7_to_andoyer(m: Any, lam: Any, *, double_cover: bool = False) -> L7Coordina
     # conjugates (inverse rotations) peel the known factors off λ
     rest = quaternion_product(_qz(np.cos(h / 2), -np.sin(h / 2)), lam)
     rest = quaternion_product(_qx(cI, -sI), rest)
-    rest = quaternion_product(rest, _qz(np.cos(l / 2), -np.sin(l / 2)))
+    rest = quaternion_product(rest, _qz(np.cos(ell / 2), -np.sin(ell / 2)))
     rest = quaternion_product(rest, _qx(cJ, -sJ))
     g = 2.0 * np.arctan2(rest[..., 3], rest[..., 0])
     g = wrap_angle(g, 2 * TWO_PI if double_cover else TWO_PI)
-    return L7Coordinates(l[()], g[()], h[()], L[()], G[()], H[()])
+    return L7Coordinates(ell[()], g[()], h[()], L[()], G[()], H[()])

@@ -1,4 +1,4 @@
-"""Pavlov's quaternion λ and its relation to scipy's quaternions.
+r"""Pavlov's quaternion λ and its relation to scipy's quaternions.
 
 Pavlov's Hamilton–Rodrigues parameters ``λ = (λ0, λ1, λ2, λ3)`` (scalar first)
 are the quaternion of the attitude ``rot`` (body → reference), i.e. scipy's
@@ -70,7 +70,7 @@ def quaternion_to_scipy(lam: Any) -> np.ndarray:
 
 
 def gamma_from_quaternion(lam: Any) -> np.ndarray:
-    """γ (reference axis s3 in body components) from λ, Pavlov eq. 2.2.
+    r"""γ (reference axis s3 in body components) from λ, Pavlov eq. 2.2.
 
     .. math::
 
