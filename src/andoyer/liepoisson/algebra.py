@@ -35,7 +35,7 @@ from typing import Any
 
 import numpy as np
 
-from andoyer.liepoisson._domain import as_components
+from andoyer.liepoisson._domain import as_components, leading_shape
 
 __all__ = ["ALGEBRA_NAMES", "Casimir", "LiePoissonAlgebra", "get_algebra"]
 
@@ -174,6 +174,7 @@ class LiePoissonAlgebra:
         x = as_components("x", x, self.dim)
         gf = as_components("grad_f", grad_f, self.dim)
         gk = as_components("grad_k", grad_k, self.dim)
+        leading_shape(x=x, grad_f=gf, grad_k=gk)
         return np.einsum("abc,...c,...a,...b->...", self.structure, x, gf, gk)[()]
 
     def vector_field(self, x: Any, grad_k: Any) -> np.ndarray:
@@ -200,6 +201,7 @@ class LiePoissonAlgebra:
         """
         x = as_components("x", x, self.dim)
         gk = as_components("grad_k", grad_k, self.dim)
+        leading_shape(x=x, grad_k=gk)
         return np.einsum("abc,...c,...b->...a", self.structure, x, gk)
 
     def hamiltonian_rhs(
