@@ -31,16 +31,16 @@ def andoyer_points(rng, n, regime):
         H = sign[1] * G * (1 - 10 ** rng.uniform(-12, -6, n))
     else:
         L, H = G * rng.uniform(-1, 1, (2, n))
-    l, g, h = rng.uniform(0, TWO_PI, (3, n))
-    return l, g, h, L, G, H
+    ell, g, h = rng.uniform(0, TWO_PI, (3, n))
+    return ell, g, h, L, G, H
 
 
-def andoyer_rotation(l, g, h, L, G, H):
+def andoyer_rotation(ell, g, h, L, G, H):  # noqa: PLR0917 - the Andoyer variables
     """Project convention rot = Rz(h) Rx(I) Rz(g) Rx(J) Rz(l), angles computed accurately."""
     inc = np.arctan2(np.sqrt((G - H) * (G + H)), H)
     J = np.arctan2(np.sqrt((G - L) * (G + L)), L)
     return (Rotation.from_euler("ZXZ", np.stack([h, inc, g], -1))
-            * Rotation.from_euler("XZ", np.stack([J, l], -1)))
+            * Rotation.from_euler("XZ", np.stack([J, ell], -1)))
 
 
 def angle_diff(a, b):
@@ -52,9 +52,9 @@ REGIMES = ["generic", "near-poles", "tiny", "huge"]
 
 @pytest.mark.parametrize("regime", REGIMES)
 def test_e3_gamma_and_m_match_andoyer_chart(regime):
-    l, g, h, L, G, H = andoyer_points(np.random.default_rng(10), 20000, regime)
-    rot = andoyer_rotation(l, g, h, L, G, H)
-    m, gamma = e3_from_andoyer(l, g, L, G, H)
+    ell, g, h, L, G, H = andoyer_points(np.random.default_rng(10), 20000, regime)
+    rot = andoyer_rotation(ell, g, h, L, G, H)
+    m, gamma = e3_from_andoyer(ell, g, L, G, H)
     assert np.max(np.abs(gamma - rot.as_matrix()[:, 2, :])) <= 1e-14
     sI = np.sqrt((G - H) * (G + H)) / G
     m_ref = G[:, None] * np.stack([sI * np.sin(h), -sI * np.cos(h), H / G], -1)
@@ -64,41 +64,41 @@ def test_e3_gamma_and_m_match_andoyer_chart(regime):
 
 @pytest.mark.parametrize("regime", REGIMES)
 def test_l7_quaternion_matches_scipy_up_to_sign(regime):
-    l, g, h, L, G, H = andoyer_points(np.random.default_rng(11), 20000, regime)
-    rot = andoyer_rotation(l, g, h, L, G, H)
-    m, lam = l7_from_andoyer(l, g, h, L, G, H)
+    ell, g, h, L, G, H = andoyer_points(np.random.default_rng(11), 20000, regime)
+    rot = andoyer_rotation(ell, g, h, L, G, H)
+    m, lam = l7_from_andoyer(ell, g, h, L, G, H)
     q = quaternion_from_scipy(rot.as_quat())
     sign = np.sign(np.sum(q * lam, -1))[:, None]
     assert np.max(np.abs(lam - sign * q)) <= 1e-14
-    assert np.max(np.abs(gamma_from_quaternion(lam) - e3_from_andoyer(l, g, L, G, H)[1])) <= 1e-14
-    assert np.max(np.abs(m - e3_from_andoyer(l, g, L, G, H)[0]) / G[:, None]) <= 1e-14
+    assert np.max(np.abs(gamma_from_quaternion(lam) - e3_from_andoyer(ell, g, L, G, H)[1])) <= 1e-14
+    assert np.max(np.abs(m - e3_from_andoyer(ell, g, L, G, H)[0]) / G[:, None]) <= 1e-14
 
 
 def test_l7_quaternion_is_product_of_half_angle_rotations():
     """The sign of λ: λ = q_z(h) q_x(I) q_z(g) q_x(J) q_z(l), continuous and 4π-periodic."""
-    l, g, h, L, G, H = 0.3, 1.0, -0.5, 0.2, 1.0, 0.4
+    ell, g, h, L, G, H = 0.3, 1.0, -0.5, 0.2, 1.0, 0.4
     parts = [Rotation.from_euler("Z", h), Rotation.from_euler("X", np.arccos(H / G)),
              Rotation.from_euler("Z", g), Rotation.from_euler("X", np.arccos(L / G)),
-             Rotation.from_euler("Z", l)]
+             Rotation.from_euler("Z", ell)]
     lam = quaternion_from_scipy(parts[0].as_quat())
     for p in parts[1:]:  # all these factors have w > 0, so no sign is lost here
         a, b = lam, quaternion_from_scipy(p.as_quat())
         lam = np.array([a[0] * b[0] - a[1:] @ b[1:], *(a[0] * b[1:] + b[0] * a[1:]
                                                       + np.cross(a[1:], b[1:]))])
-    np.testing.assert_allclose(l7_from_andoyer(l, g, h, L, G, H)[1], lam, atol=1e-15)
-    shifted = l7_from_andoyer(l, g + TWO_PI, h, L, G, H)[1]
+    np.testing.assert_allclose(l7_from_andoyer(ell, g, h, L, G, H)[1], lam, atol=1e-15)
+    shifted = l7_from_andoyer(ell, g + TWO_PI, h, L, G, H)[1]
     np.testing.assert_allclose(shifted, -lam, atol=1e-15)
 
 
 @pytest.mark.parametrize("regime", ["generic", "tiny", "huge"])
 def test_round_trips_coordinates(regime):
     rng = np.random.default_rng(12)
-    l, g, h, L, G, H = andoyer_points(rng, 20000, regime)
-    c = e3_to_andoyer(*e3_from_andoyer(l, g, L, G, H))
-    c7 = l7_to_andoyer(*l7_from_andoyer(l, g, h, L, G, H))
+    ell, g, h, L, G, H = andoyer_points(rng, 20000, regime)
+    c = e3_to_andoyer(*e3_from_andoyer(ell, g, L, G, H))
+    c7 = l7_to_andoyer(*l7_from_andoyer(ell, g, h, L, G, H))
     # away from the poles, where angles are well defined
     ok = (np.abs(L) < 0.999 * G) & (np.abs(H) < 0.999 * G)
-    for got, want in ((c.l, l), (c.g, g), (c7.l, l), (c7.g, g), (c7.h, h)):
+    for got, want in ((c.l, ell), (c.g, g), (c7.l, ell), (c7.g, g), (c7.h, h)):
         assert np.max(angle_diff(got, want)[ok]) <= 1e-13
     for got, want in ((c.L, L), (c.G, G), (c.H, H), (c7.L, L), (c7.G, G), (c7.H, H)):
         assert np.max(np.abs(got - want) / G) <= 1e-13
@@ -113,17 +113,17 @@ def test_round_trips_algebra_points(regime):
     Near the poles the momenta fix sin J = √((G−L)(G+L))/G only to ~ε/sin J (G is a
     rounded |m|): an intrinsic limit of the Andoyer momenta, allowed for in ``bound``.
     """
-    l, g, h, L, G, H = andoyer_points(np.random.default_rng(13), 20000, regime)
+    ell, g, h, L, G, H = andoyer_points(np.random.default_rng(13), 20000, regime)
     eps = np.finfo(float).eps
     sJ = np.sqrt((G - L) * (G + L)) / G
     sI = np.sqrt((G - H) * (G + H)) / G
     # ≤ 1e-13 at generic points, the intrinsic ε/sin bound near the poles
     bound = np.maximum(1e-13, 4 * eps * (1 / sJ + 1 / sI))[:, None]
-    m, gamma = e3_from_andoyer(l, g, L, G, H)
+    m, gamma = e3_from_andoyer(ell, g, L, G, H)
     m2, gamma2 = e3_from_andoyer(*e3_to_andoyer(m, gamma))
     assert np.all(np.abs(m2 - m) / G[:, None] <= bound)
     assert np.all(np.abs(gamma2 - gamma) <= bound)
-    m, lam = l7_from_andoyer(l, g, h, L, G, H)
+    m, lam = l7_from_andoyer(ell, g, h, L, G, H)
     m3, lam3 = l7_from_andoyer(*l7_to_andoyer(m, lam, double_cover=True))
     assert np.all(np.abs(m3 - m) / G[:, None] <= bound)
     assert np.all(np.abs(lam3 - lam) <= bound)
@@ -142,7 +142,7 @@ def test_round_trip_from_random_algebra_points():
     assert np.max(np.abs(m2 - m)) <= 1e-13 * np.max(np.abs(m))
     assert np.max(np.abs(lam2 - lam)) <= 1e-13
     gamma = rot.inv().apply([0.0, 0.0, 1.0])
-    m3, gamma3 = e3_from_andoyer(*e3_to_andoyer(m, gamma))
+    _, gamma3 = e3_from_andoyer(*e3_to_andoyer(m, gamma))
     assert np.max(np.abs(gamma3 - gamma)) <= 1e-13
 
 
@@ -151,10 +151,10 @@ unit = st.floats(-1.0, 1.0, allow_nan=False)
 
 
 @settings(max_examples=300, deadline=None)
-@given(l=angles, g=angles, h=angles, x=unit, y=unit, G=st.floats(1e-6, 1e6))
-def test_round_trip_hypothesis(l, g, h, x, y, G):
+@given(ell=angles, g=angles, h=angles, x=unit, y=unit, G=st.floats(1e-6, 1e6))
+def test_round_trip_hypothesis(ell, g, h, x, y, G):  # noqa: PLR0917 - hypothesis arguments
     L, H = x * G, y * G
-    m, lam = l7_from_andoyer(l, g, h, L, G, H)
+    m, lam = l7_from_andoyer(ell, g, h, L, G, H)
     sJ, sI = np.sqrt((1 - x) * (1 + x)), np.sqrt((1 - y) * (1 + y))
     if min(sJ, sI) < 1e-3:  # singular points and their rounding are tested separately
         return
@@ -193,7 +193,8 @@ def test_shapes_scalar_and_broadcast():
     c = e3_to_andoyer(m, gamma)
     assert all(np.ndim(v) == 0 for v in c)
     m, lam = l7_from_andoyer(np.zeros((5, 1)), np.linspace(0, 1, 4), 0.0, 0.1, 1.0, 0.2)
-    assert m.shape == (5, 4, 3) and lam.shape == (5, 4, 4)
+    assert m.shape == (5, 4, 3)
+    assert lam.shape == (5, 4, 4)
     c7 = l7_to_andoyer(m[:, :1], lam)
     assert all(np.shape(v) == (5, 4) for v in c7)
     c = e3_to_andoyer(m[0], gamma_from_quaternion(lam[:1]))
@@ -203,7 +204,7 @@ def test_shapes_scalar_and_broadcast():
 def test_singular_body_axis_warns_and_reproduces_point():
     """sin J = 0: m along b3; l is set to 0 and g carries g ± l."""
     for L in (1.3, -1.3):
-        m, lam = l7_from_andoyer(0.7, 2.0, 1.0, L, 1.3, 0.4)
+        _, lam = l7_from_andoyer(0.7, 2.0, 1.0, L, 1.3, 0.4)
         m_exact = np.array([0.0, 0.0, L])
         with pytest.warns(SingularChartWarning, match="sin J"):
             c = l7_to_andoyer(m_exact, lam, double_cover=True)
@@ -268,5 +269,5 @@ def test_bad_inputs_raise(call, message):
 def test_momenta_rounding_is_tolerated():
     G = 1.0
     H = G * (1 + 2e-16)
-    m, gamma = e3_from_andoyer(0.1, 0.2, 0.3, G, H)
+    _, gamma = e3_from_andoyer(0.1, 0.2, 0.3, G, H)
     assert np.all(np.isfinite(gamma))

@@ -80,7 +80,8 @@ def test_euler_rotation_matrix_matches_scipy():
         assert np.allclose(np.array(f(*angles), float), rot.as_matrix(), atol=1e-15)
         x, y, z, w = rot.as_quat()
         lam = np.array(q(*angles), float)
-        assert min(np.abs(lam - [w, x, y, z]).max(), np.abs(lam + [w, x, y, z]).max()) < 1e-15
+        want = np.array([w, x, y, z])
+        assert min(np.abs(lam - want).max(), np.abs(lam + want).max()) < 1e-15
 
 
 def test_gurfil_eqs_25_27_from_lagrangian():

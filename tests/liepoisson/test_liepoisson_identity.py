@@ -1,4 +1,4 @@
-"""The algebraic zero test used for symbolic proofs: it proves true identities and never false ones."""
+"""The algebraic zero test behind the symbolic proofs: true identities proven, false ones never."""
 
 import pytest
 import sympy as sp

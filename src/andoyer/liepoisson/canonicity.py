@@ -85,15 +85,17 @@ def _shorten(expr: Any) -> str:
     return text if len(text) <= _MAX_VALUE_CHARS else text[: _MAX_VALUE_CHARS - 1] + "…"
 
 
-def _lambdify_gradient(expr: Any, xs: tuple[Any, ...]) -> Any:
-    grads = [sp.diff(expr, x) for x in xs]
-    f = sp.lambdify([xs], grads, "numpy")
+def _evaluate_many(exprs: list[Any], symbols: tuple[Any, ...], pts: np.ndarray) -> np.ndarray:
+    """Values of ``exprs`` at ``pts`` (N, len(symbols)), shape (len(exprs), N); one lambdify."""
+    f = sp.lambdify([symbols], list(exprs), "numpy", cse=True)
+    return np.stack([np.broadcast_to(np.asarray(v, dtype=float), pts.shape[:1])
+                     for v in f(pts.T)])
 
-    def evaluate(points: np.ndarray) -> np.ndarray:
-        cols = f(points.T)
-        return np.stack([np.broadcast_to(np.asarray(c, float), points.shape[:1]) for c in cols], -1)
 
-    return evaluate
+def _gradients(exprs: list[Any], symbols: tuple[Any, ...], pts: np.ndarray) -> np.ndarray:
+    """Gradients of ``exprs`` at ``pts``, shape (len(exprs), N, len(symbols))."""
+    values = _evaluate_many([sp.diff(e, s) for e in exprs for s in symbols], symbols, pts)
+    return values.reshape(len(exprs), len(symbols), -1).transpose(0, 2, 1)
 
 
 def check_coordinates(
@@ -141,7 +143,8 @@ def check_coordinates(
     alg = get_algebra(coords.algebra)
     xs = alg.symbols()
     points = alg.sample(np.random.default_rng(seed), n_points)
-    grads = {z: _lambdify_gradient(coords.inverse[z], xs)(points) for z in coords.symbols}
+    grads = dict(zip(coords.symbols, _gradients(
+        [coords.inverse[z] for z in coords.symbols], xs, points), strict=True))
     P = alg.poisson_tensor(points)
     absP = np.abs(P)
     substitution = None
@@ -220,26 +223,20 @@ def check_poisson_map(
         zpts = np.asarray(coords.sampler(rng, n_points), dtype=float)
     elif coords.inverse is not None:
         xpts = alg.sample(rng, n_points)
-        zpts = np.stack(
-            [np.broadcast_to(sp.lambdify([alg.symbols()], coords.inverse[z])(xpts.T), n_points)
-             for z in zs], axis=-1,
-        )
+        zpts = _evaluate_many([coords.inverse[z] for z in zs], alg.symbols(), xpts).T
     else:
         raise ValueError(
             "expected a sampler or an inverse map for the numeric check, got neither"
         )
     X = [coords.forward[name] for name in alg.generators]
-    jac = np.stack([_lambdify_gradient(x, zs)(zpts) for x in X], axis=-2)  # (N, n, nz)
+    jac = np.moveaxis(_gradients(X, zs, zpts), 0, -2)  # (N, n, nz)
     omega = np.zeros((len(zs), len(zs)))
     for q, p in coords.pairs:
         omega[zs.index(q), zs.index(p)] = 1.0
         omega[zs.index(p), zs.index(q)] = -1.0
     canonical = jac @ omega @ np.swapaxes(jac, -1, -2)
     scale_can = np.abs(jac) @ np.abs(omega) @ np.abs(np.swapaxes(jac, -1, -2))
-    xvals = np.stack(
-        [np.broadcast_to(np.asarray(sp.lambdify([zs], x)(zpts.T), float), n_points) for x in X],
-        axis=-1,
-    )
+    xvals = _evaluate_many(X, zs, zpts).T
     structure = alg.poisson_tensor(xvals)
     scale = np.maximum(1.0, scale_can + np.abs(alg.poisson_tensor(np.abs(xvals))))
     err = np.abs(canonical - structure) / scale

@@ -28,7 +28,12 @@ import sympy as sp
 
 from andoyer.liepoisson._identity import vanishes
 from andoyer.liepoisson.algebra import LiePoissonAlgebra, get_algebra
-from andoyer.liepoisson.canonicity import BracketRecord, _level_relations, _shorten
+from andoyer.liepoisson.canonicity import (
+    BracketRecord,
+    _evaluate_many,
+    _level_relations,
+    _shorten,
+)
 from andoyer.liepoisson.coordinates import (
     CanonicalCoordinates,
     andoyer_coordinates,
@@ -170,78 +175,79 @@ def check_pavlov_table(
     alg = get_algebra(algebra)
     coords = andoyer_coordinates(algebra)
     table = pavlov_table(algebra)
+    rhs = [e.printed if printed and e.printed is not None else e.rhs for e in table]
     check = _via_lie_poisson if via == "lie-poisson" else _via_canonical
-    records = []
-    for entry in table:
-        rhs = entry.printed if printed and entry.printed is not None else entry.rhs
-        proven, max_err = check(
-            alg, coords, entry, rhs, n_points=n_points, seed=seed, symbolic=symbolic
+    proven, errors = check(alg, coords, table, rhs, n_points=n_points, seed=seed,
+                           symbolic=symbolic)
+    return [
+        BracketRecord(
+            e.left, e.right, _shorten(r) if ok else "<not proven>", _shorten(r), ok,
+            bool(err <= tol), float(err),
         )
-        records.append(BracketRecord(
-            entry.left, entry.right, _shorten(rhs) if proven else "<not proven>",
-            _shorten(rhs), proven, max_err <= tol, max_err,
-        ))
-    return records
+        for e, r, ok, err in zip(table, rhs, proven, errors, strict=True)
+    ]
 
 
 def _via_lie_poisson(
-    alg: LiePoissonAlgebra, coords: CanonicalCoordinates, entry: TableEntry, rhs: Any, *,
-    n_points: int, seed: int, symbolic: bool,
-) -> tuple[bool, float]:
+    alg: LiePoissonAlgebra, coords: CanonicalCoordinates, table: tuple[TableEntry, ...],
+    rhs: list[Any], *, n_points: int, seed: int, symbolic: bool,
+) -> tuple[list[bool], np.ndarray]:
     xs = alg.symbols()
     names = {str(z): z for z in coords.symbols}
-
-    def as_function(name: str) -> Any:
-        return coords.inverse[names[name]] if name in names else xs[alg.generators.index(name)]
-
-    f, k = as_function(entry.left), as_function(entry.right)
+    functions = {n: coords.inverse[names[n]] for n in names}
+    functions.update(zip(alg.generators, xs, strict=True))
     H = names.get("H")
-    proven = False
-    if symbolic:
-        bracket = alg.bracket_sym_unexpanded(f, k)
-        rhs_x = rhs.xreplace({H: coords.inverse[H]}) if H is not None else rhs
-        m_of_lLG = {x: coords.forward[n] for x, n in zip(xs[:3], alg.generators[:3], strict=True)}
-        proven = vanishes(bracket - rhs_x, _level_relations(alg), substitution=m_of_lLG)
+    m_of_lLG = {x: coords.forward[n] for x, n in zip(xs[:3], alg.generators[:3], strict=True)}
+    proven = []
+    for entry, r in zip(table, rhs, strict=True):
+        ok = False
+        if symbolic:
+            bracket = alg.bracket_sym_unexpanded(functions[entry.left], functions[entry.right])
+            r_x = r.xreplace({H: coords.inverse[H]}) if H is not None else r
+            ok = vanishes(bracket - r_x, _level_relations(alg), substitution=m_of_lLG)
+        proven.append(ok)
     pts = alg.sample(np.random.default_rng(seed), n_points)
-    gf, gk = (_gradient(e, xs, pts) for e in (f, k))
-    value = np.einsum("...a,...ab,...b->...", gf, alg.poisson_tensor(pts), gk)
-    scale = np.einsum("...a,...ab,...b->...", np.abs(gf), np.abs(alg.poisson_tensor(pts)),
-                      np.abs(gk))
-    zvals = {z: _evaluate(coords.inverse[z], xs, pts) for z in coords.symbols}
-    expected = _evaluate(rhs, (*xs, *coords.symbols), np.column_stack(
-        [pts, *(zvals[z] for z in coords.symbols)]))
-    err = np.abs(value - expected) / np.maximum(1.0, scale + np.abs(expected))
-    return proven, float(np.max(err))
+    used = sorted({e.left for e in table} | {e.right for e in table})
+    grads = _evaluate_many([sp.diff(functions[n], x) for n in used for x in xs], xs, pts)
+    grads = dict(zip(used, grads.reshape(len(used), len(xs), -1).transpose(0, 2, 1),
+                     strict=True))
+    z_values = _evaluate_many([coords.inverse[z] for z in coords.symbols], xs, pts)
+    expected = _evaluate_many(rhs, (*xs, *coords.symbols), np.column_stack([pts, z_values.T]))
+    P = alg.poisson_tensor(pts)
+    errors = []
+    for entry, want in zip(table, expected, strict=True):
+        gf, gk = grads[entry.left], grads[entry.right]
+        value = np.einsum("...a,...ab,...b->...", gf, P, gk)
+        scale = np.einsum("...a,...ab,...b->...", np.abs(gf), np.abs(P), np.abs(gk))
+        errors.append(np.max(np.abs(value - want) / np.maximum(1.0, scale + np.abs(want))))
+    return proven, np.array(errors)
 
 
 def _via_canonical(
-    alg: LiePoissonAlgebra, coords: CanonicalCoordinates, entry: TableEntry, rhs: Any, *,
-    n_points: int, seed: int, symbolic: bool,
-) -> tuple[bool, float]:
+    alg: LiePoissonAlgebra, coords: CanonicalCoordinates, table: tuple[TableEntry, ...],
+    rhs: list[Any], *, n_points: int, seed: int, symbolic: bool,
+) -> tuple[list[bool], np.ndarray]:
     zs = coords.symbols
     names = {str(z): z for z in zs}
+    functions = dict(names)
+    functions.update(coords.forward)
     fwd = {x: coords.forward[n] for x, n in zip(alg.symbols(), alg.generators, strict=True)}
+    derivative: dict[tuple[str, Any], Any] = {}
 
-    def as_function(name: str) -> Any:
-        return names[name] if name in names else coords.forward[name]
+    def d(name: str, z: Any) -> Any:
+        if (name, z) not in derivative:
+            derivative[name, z] = sp.diff(functions[name], z)
+        return derivative[name, z]
 
-    f, k = as_function(entry.left), as_function(entry.right)
-    bracket = sum(
-        sp.diff(f, q) * sp.diff(k, p) - sp.diff(f, p) * sp.diff(k, q) for q, p in coords.pairs
-    )
-    rhs_z = rhs.xreplace(fwd)
-    proven = bool(symbolic) and vanishes(bracket - rhs_z)
+    brackets, rhs_z, proven = [], [], []
+    for entry, r in zip(table, rhs, strict=True):
+        f, k = entry.left, entry.right
+        bracket = sum(d(f, q) * d(k, p) - d(f, p) * d(k, q) for q, p in coords.pairs)
+        brackets.append(bracket)
+        rhs_z.append(r.xreplace(fwd))
+        proven.append(bool(symbolic) and vanishes(bracket - rhs_z[-1]))
     pts = coords.sampler(np.random.default_rng(seed), n_points)
-    value = _evaluate(bracket, zs, pts)
-    expected = _evaluate(rhs_z, zs, pts)
-    err = np.abs(value - expected) / np.maximum(1.0, np.abs(expected))
-    return proven, float(np.max(err))
-
-
-def _evaluate(expr: Any, symbols: tuple[Any, ...], pts: np.ndarray) -> np.ndarray:
-    f = sp.lambdify([symbols], expr, "numpy")
-    return np.broadcast_to(np.asarray(f(pts.T), dtype=float), pts.shape[:1])
-
-
-def _gradient(expr: Any, symbols: tuple[Any, ...], pts: np.ndarray) -> np.ndarray:
-    return np.stack([_evaluate(sp.diff(expr, x), symbols, pts) for x in symbols], axis=-1)
+    values = _evaluate_many(brackets + rhs_z, zs, pts)
+    value, want = values[: len(table)], values[len(table):]
+    errors = np.max(np.abs(value - want) / np.maximum(1.0, np.abs(want)), axis=-1)
+    return proven, errors
