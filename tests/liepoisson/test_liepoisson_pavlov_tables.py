@@ -134,3 +134,22 @@ def test_printed_2_14_is_still_canonical():
         CanonicalCoordinates("l7", c.pairs, (), forward, None, c.sampler), symbolic=False
     )
     assert all(r.numeric_ok for r in records)
+
+
+def test_corrected_2_14_closed_form():
+    """The closed form given in docs/errata-pavlov.md equals l7_from_andoyer (same sign)."""
+    rng = np.random.default_rng(31)
+    n = 1000
+    G = rng.uniform(0.5, 2.0, n)
+    L, H = G * rng.uniform(-1, 1, (2, n))
+    ell, g, h = rng.uniform(0, 4 * np.pi, (3, n))
+    zeta, tau = np.arcsin(H / G), np.arcsin(L / G)
+    xp, xm, yp, ym = (zeta + tau) / 2, (zeta - tau) / 2, (ell + h) / 2, (ell - h) / 2
+    s, c = np.sin(g / 2), np.cos(g / 2)
+    closed = np.stack([
+        c * np.sin(xp) * np.cos(yp) - s * np.cos(xm) * np.sin(yp),
+        c * np.cos(xp) * np.cos(ym) + s * np.sin(xm) * np.sin(ym),
+        s * np.sin(xm) * np.cos(ym) - c * np.cos(xp) * np.sin(ym),
+        s * np.cos(xm) * np.cos(yp) + c * np.sin(xp) * np.sin(yp),
+    ], -1)
+    assert np.max(np.abs(closed - l7_from_andoyer(ell, g, h, L, G, H)[1])) <= 1e-14

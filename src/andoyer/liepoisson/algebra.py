@@ -36,18 +36,11 @@ from typing import Any
 import numpy as np
 
 from andoyer.liepoisson._domain import as_components, leading_shape
+from andoyer.liepoisson.structure_constants import e3_structure, l7_structure, so3_structure
 
 __all__ = ["ALGEBRA_NAMES", "Casimir", "LiePoissonAlgebra", "get_algebra"]
 
 ALGEBRA_NAMES = ("so3", "e3", "l7")
-
-
-def _levi_civita() -> np.ndarray:
-    eps = np.zeros((3, 3, 3))
-    for i, j, k in ((0, 1, 2), (1, 2, 0), (2, 0, 1)):
-        eps[i, j, k] = 1.0
-        eps[j, i, k] = -1.0
-    return eps
 
 
 @dataclass(frozen=True)
@@ -75,17 +68,36 @@ class Casimir:
     matrix: np.ndarray = field(repr=False)
 
     def value(self, x: Any) -> np.ndarray:
-        """Evaluate ``xᵀ Q x``; ``x`` has shape (..., n), the result (...)."""
+        """Evaluate ``xᵀ Q x``; ``x`` has shape (..., n), the result (...).
+
+        Examples
+        --------
+        >>> float(get_algebra("so3").casimirs[0].value([1.0, 2.0, 2.0]))
+        9.0
+        """
         x = as_components("x", x, self.matrix.shape[0])
         return np.einsum("...a,ab,...b->...", x, self.matrix, x)[()]
 
     def gradient(self, x: Any) -> np.ndarray:
-        """Gradient ``2 Q x``, shape (..., n)."""
+        """Gradient ``2 Q x``, shape (..., n).
+
+        Examples
+        --------
+        >>> get_algebra("so3").casimirs[0].gradient([1.0, 2.0, 2.0])
+        array([2., 4., 4.])
+        """
         x = as_components("x", x, self.matrix.shape[0])
         return 2.0 * x @ self.matrix
 
     def expr(self, symbols: Any) -> Any:
-        """The Casimir as a sympy expression of the algebra's ``symbols``."""
+        """The Casimir as a sympy expression of the algebra's ``symbols``.
+
+        Examples
+        --------
+        >>> l7 = get_algebra("l7")
+        >>> l7.casimirs[0].expr(l7.symbols())
+        lambda0**2 + lambda1**2 + lambda2**2 + lambda3**2
+        """
         import sympy as sp  # noqa: PLC0415 - sympy is needed only for symbolic work
 
         xs = sp.Matrix(symbols)
@@ -127,7 +139,13 @@ class LiePoissonAlgebra:
 
     @property
     def dim(self) -> int:
-        """Number of generators ``n``."""
+        """Number of generators ``n``.
+
+        Examples
+        --------
+        >>> get_algebra("l7").dim
+        7
+        """
         return len(self.generators)
 
     def poisson_tensor(self, x: Any) -> np.ndarray:
@@ -344,34 +362,6 @@ class LiePoissonAlgebra:
         return (self.poisson_tensor_sym() * grad).applyfunc(sp.expand)
 
 
-def _so3_structure() -> np.ndarray:
-    return -_levi_civita()
-
-
-def _e3_structure() -> np.ndarray:
-    eps = _levi_civita()
-    c = np.zeros((6, 6, 6))
-    c[:3, :3, :3] = -eps
-    c[:3, 3:, 3:] = -eps  # {m_i, γ_j} = -ε_ijk γ_k
-    c[3:, :3, 3:] = np.transpose(eps, (1, 0, 2))  # {γ_j, m_i} = +ε_ijk γ_k
-    return c
-
-
-def _l7_structure() -> np.ndarray:
-    eps = _levi_civita()
-    # a[i, mu, nu]: {m_i, λ_mu} = Σ_nu a[i, mu, nu] λ_nu  (Pavlov eq. 2.9)
-    a = np.zeros((3, 4, 4))
-    for i in range(3):
-        a[i, 0, 1 + i] = 0.5
-        a[i, 1 + i, 0] = -0.5
-        a[i, 1:, 1:] = -0.5 * eps[i]
-    c = np.zeros((7, 7, 7))
-    c[:3, :3, :3] = -eps
-    c[:3, 3:, 3:] = a
-    c[3:, :3, 3:] = -np.transpose(a, (1, 0, 2))
-    return c
-
-
 def _quadratic(n: int, pairs: list[tuple[int, int]]) -> np.ndarray:
     q = np.zeros((n, n))
     for i, j in pairs:
@@ -384,12 +374,12 @@ def _build(name: str) -> LiePoissonAlgebra:
     m = ("m1", "m2", "m3")
     if name == "so3":
         return LiePoissonAlgebra(
-            "so3", m, _so3_structure(),
+            "so3", m, so3_structure(),
             (Casimir("m·m", _quadratic(3, [(0, 0), (1, 1), (2, 2)])),),
         )
     if name == "e3":
         return LiePoissonAlgebra(
-            "e3", (*m, "gamma1", "gamma2", "gamma3"), _e3_structure(),
+            "e3", (*m, "gamma1", "gamma2", "gamma3"), e3_structure(),
             (
                 Casimir("γ·γ", _quadratic(6, [(3, 3), (4, 4), (5, 5)])),
                 Casimir("m·γ", _quadratic(6, [(0, 3), (1, 4), (2, 5)])),
@@ -397,7 +387,7 @@ def _build(name: str) -> LiePoissonAlgebra:
             slice(3, 6),
         )
     return LiePoissonAlgebra(
-        "l7", (*m, "lambda0", "lambda1", "lambda2", "lambda3"), _l7_structure(),
+        "l7", (*m, "lambda0", "lambda1", "lambda2", "lambda3"), l7_structure(),
         (Casimir("λ·λ", _quadratic(7, [(3, 3), (4, 4), (5, 5), (6, 6)])),),
         slice(3, 7),
     )

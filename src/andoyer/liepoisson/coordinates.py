@@ -76,7 +76,13 @@ class CanonicalCoordinates:
 
     @property
     def symbols(self) -> tuple[Any, ...]:
-        """Coordinates in the order ``q_1, p_1, q_2, p_2, ..., casimirs``."""
+        """Coordinates in the order ``q_1, p_1, q_2, p_2, ..., casimirs``.
+
+        Examples
+        --------
+        >>> andoyer_coordinates("l7").symbols
+        (l, L, g, G, h, H)
+        """
         return tuple(s for pair in self.pairs for s in pair) + tuple(self.casimirs)
 
     def canonical_value(self, a: Any, b: Any) -> int:

@@ -107,7 +107,13 @@ def gamma_from_quaternion(lam: Any) -> np.ndarray:
 
 
 def quaternion_product(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """Hamilton product of scalar-first quaternions, shapes (..., 4)."""
+    """Hamilton product of scalar-first quaternions, shapes (..., 4).
+
+    Examples
+    --------
+    >>> quaternion_product(np.array([0.0, 1, 0, 0]), np.array([0.0, 0, 1, 0]))  # i j = k
+    array([0., 0., 0., 1.])
+    """
     aw, ax, ay, az = np.moveaxis(a, -1, 0)
     bw, bx, by, bz = np.moveaxis(b, -1, 0)
     return np.stack(
@@ -122,7 +128,16 @@ def quaternion_product(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 
 
 def rotation_matrix(lam: np.ndarray) -> np.ndarray:
-    """Matrix of ``rot`` (body → reference) from a unit λ, shape (..., 3, 3)."""
+    """Matrix of ``rot`` (body → reference) from a unit λ, shape (..., 3, 3).
+
+    Examples
+    --------
+    >>> from scipy.spatial.transform import Rotation
+    >>> rot = Rotation.from_euler("ZXZ", [0.3, 1.1, -0.4])
+    >>> lam = quaternion_from_scipy(rot.as_quat())
+    >>> bool(np.allclose(rotation_matrix(lam), rot.as_matrix(), atol=1e-15))
+    True
+    """
     w, x, y, z = np.moveaxis(lam, -1, 0)
     return np.stack(
         [
