@@ -126,3 +126,12 @@ def test_chart_shapes_broadcast(shape):
     a = State.from_andoyer(l, g, h, 0.5, 1.0, -0.3).as_andoyer()
     assert all(np.shape(x) == shape for x in a)
     assert euler_matrix(l, g, h).shape == (*shape, 3, 3)
+
+
+def test_state_gamma_is_third_row_and_projects_momentum_on_H(rng):
+    q, m = random_states(rng, 500)
+    state = State.from_quaternion(q, m)
+    R = state.rotation.as_matrix()
+    assert np.abs(state.gamma - R[:, 2, :]).max() <= 1e-15
+    a = state.as_andoyer()
+    assert np.max(np.abs(np.sum(state.m_body * state.gamma, -1) - a.H) / a.G) <= 1e-14

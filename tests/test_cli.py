@@ -205,3 +205,15 @@ def test_cli_bad_csv_columns_and_numbers(tmp_path, capsys):
     code, _, err = run_cli(capsys, "convert", "--from", "andoyer", "--to", "euler", "--input", str(text))
     assert code == 2
     assert "expected numbers in column 'L'" in err
+
+
+@pytest.mark.parametrize("algebra", ["so3", "e3"])
+def test_cli_brackets_json_every_entry_verified(capsys, algebra):
+    code, out, _ = run_cli(capsys, "brackets", "--algebra", algebra, "--format", "json")
+    assert code == 0
+    table = json.loads(out)
+    assert {"left", "right", "value", "symbolic_ok", "numeric_ok"} <= set(table[0])
+    assert all(row["symbolic_ok"] and row["numeric_ok"] for row in table)
+    pairs = {(row["left"], row["right"]): row["value"] for row in table}
+    assert pairs[("l", "L")] == "1"
+    assert pairs[("g", "G")] == "1"

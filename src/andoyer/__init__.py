@@ -14,7 +14,7 @@ Examples
 0.500032721584
 """
 
-from andoyer import bodies, charts, perturbations, series, theories
+from andoyer import bodies, charts, liepoisson, perturbations, series, theories
 from andoyer.body import RigidBody, RotationMode, Symmetry
 from andoyer.charts import SingularChartWarning
 from andoyer.state import State
@@ -27,6 +27,7 @@ __all__ = [
     "Symmetry",
     "bodies",
     "charts",
+    "liepoisson",
     "perturbations",
     "series",
     "theories",

@@ -257,6 +257,21 @@ class State:
         return quat.rotate(self._q, self._m)
 
     @property
+    def gamma(self) -> Array:
+        """The reference axis ``s3`` in body components, ``γ = 𝓡ᵀ s3`` (Pavlov's γ), shape (..., 3).
+
+        It is the third row of ``rotation.as_matrix()`` and the third column of
+        Gurfil's ``R`` (eq. 74); ``m_body · γ = H``.
+
+        Examples
+        --------
+        >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.6, 1.0, -0.2)
+        >>> round(float(s.m_body @ s.gamma), 12)
+        -0.2
+        """
+        return quat.rotate(quat.conjugate(self._q), np.array([0.0, 0.0, 1.0]))
+
+    @property
     def shape(self) -> tuple[int, ...]:
         """Leading shape of the state array."""
         return self._m.shape[:-1]

@@ -32,8 +32,7 @@ def pavlov_table_value(algebra, a, b, x):
     if mu == 0:
         return 0.5 * lam[1 + a]
     j = mu - 1
-    return -0.5 * (sum(levi_civita(a, j, k) * lam[1 + k] for k in range(3))
-                   + (lam[0] if a == j else 0.0))
+    return -0.5 * (sum(levi_civita(a, j, k) * lam[1 + k] for k in range(3)) + (lam[0] if a == j else 0.0))
 
 
 @pytest.mark.parametrize("algebra", ALGEBRAS)
@@ -50,8 +49,9 @@ def test_structure_is_a_lie_algebra(algebra):
     """Antisymmetry and the Jacobi identity of the structure constants."""
     C = get_algebra(algebra).structure
     assert np.array_equal(C, -np.transpose(C, (1, 0, 2)))
-    jac = (np.einsum("abd,dce->abce", C, C) + np.einsum("bcd,dae->abce", C, C)
-           + np.einsum("cad,dbe->abce", C, C))
+    jac = (
+        np.einsum("abd,dce->abce", C, C) + np.einsum("bcd,dae->abce", C, C) + np.einsum("cad,dbe->abce", C, C)
+    )
     assert np.max(np.abs(jac)) == 0.0
 
 
@@ -72,8 +72,7 @@ def test_casimir_list():
     assert [c.name for c in get_algebra("e3").casimirs] == ["γ·γ", "m·γ"]
     assert [c.name for c in get_algebra("l7").casimirs] == ["λ·λ"]
     m1, m2, m3, g1, g2, g3 = get_algebra("e3").symbols()
-    assert get_algebra("e3").casimirs[1].expr(get_algebra("e3").symbols()) == (
-        m1 * g1 + m2 * g2 + m3 * g3)
+    assert get_algebra("e3").casimirs[1].expr(get_algebra("e3").symbols()) == (m1 * g1 + m2 * g2 + m3 * g3)
 
 
 def test_gurfil_eq_28_sign():
@@ -96,9 +95,7 @@ def test_numeric_bracket_matches_symbolic(algebra):
     x = alg.sample(np.random.default_rng(5), 200)
     gf, gk = (np.stack([np.broadcast_to(c, len(x)) for c in g(x.T)], -1) for g in grad)
     np.testing.assert_allclose(alg.bracket(x, gf, gk), sym(x.T), rtol=1e-13, atol=1e-13)
-    vf = np.stack(
-        [np.broadcast_to(sp.lambdify([xs], e)(x.T), len(x)) for e in alg.vector_field_sym(k)], -1
-    )
+    vf = np.stack([np.broadcast_to(sp.lambdify([xs], e)(x.T), len(x)) for e in alg.vector_field_sym(k)], -1)
     np.testing.assert_allclose(alg.vector_field(x, gk), vf, rtol=1e-13, atol=1e-13)
 
 
@@ -106,9 +103,13 @@ def test_free_body_vector_field_is_euler_equations():
     """ṁ_i = c_i m_j m_k, c_1 = (I2 − I3)/(I2 I3), cyclic (preamble form)."""
     inertia = np.array([1.0, 1.7, 2.4])
     m = np.random.default_rng(6).standard_normal((100, 3))
-    c = np.array([(inertia[1] - inertia[2]) / (inertia[1] * inertia[2]),
-                  (inertia[2] - inertia[0]) / (inertia[2] * inertia[0]),
-                  (inertia[0] - inertia[1]) / (inertia[0] * inertia[1])])
+    c = np.array(
+        [
+            (inertia[1] - inertia[2]) / (inertia[1] * inertia[2]),
+            (inertia[2] - inertia[0]) / (inertia[2] * inertia[0]),
+            (inertia[0] - inertia[1]) / (inertia[0] * inertia[1]),
+        ]
+    )
     euler = c * np.stack([m[:, 1] * m[:, 2], m[:, 2] * m[:, 0], m[:, 0] * m[:, 1]], -1)
     got = get_algebra("so3").vector_field(m, m / inertia)
     np.testing.assert_allclose(got, euler, rtol=1e-13, atol=1e-14)
@@ -136,14 +137,19 @@ def test_hamiltonian_rhs_for_solve_ivp():
     ("call", "message"),
     [
         (lambda: get_algebra("so4"), "expected one of"),
-        (lambda: get_algebra("e3").bracket(np.zeros(5), np.zeros(6), np.zeros(6)),
-         "expected x with last axis of length 6"),
-        (lambda: get_algebra("so3").vector_field([1.0, np.nan, 0.0], [1, 0, 0]),
-         "expected finite x"),
-        (lambda: get_algebra("so3").bracket([1.0, 0, 0], 1.0, [1, 0, 0]),
-         "expected grad_f with last axis of length 3"),
-        (lambda: get_algebra("e3").bracket(np.zeros((2, 6)), np.zeros((3, 6)), np.zeros(6)),
-         r"expected broadcastable leading shapes, got x \(2,\), grad_f \(3,\)"),
+        (
+            lambda: get_algebra("e3").bracket(np.zeros(5), np.zeros(6), np.zeros(6)),
+            "expected x with last axis of length 6",
+        ),
+        (lambda: get_algebra("so3").vector_field([1.0, np.nan, 0.0], [1, 0, 0]), "expected finite x"),
+        (
+            lambda: get_algebra("so3").bracket([1.0, 0, 0], 1.0, [1, 0, 0]),
+            "expected grad_f with last axis of length 3",
+        ),
+        (
+            lambda: get_algebra("e3").bracket(np.zeros((2, 6)), np.zeros((3, 6)), np.zeros(6)),
+            r"expected broadcastable leading shapes, got x \(2,\), grad_f \(3,\)",
+        ),
     ],
 )
 def test_bad_inputs_raise(call, message):

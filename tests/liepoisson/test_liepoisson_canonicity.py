@@ -86,8 +86,7 @@ def test_forward_map_has_full_rank_on_the_leaf():
         c = andoyer_coordinates(algebra)
         alg = get_algebra(algebra)
         zs = c.symbols
-        jac = sp.lambdify([zs], sp.Matrix([c.forward[n] for n in alg.generators]).jacobian(zs),
-                          cse=True)
+        jac = sp.lambdify([zs], sp.Matrix([c.forward[n] for n in alg.generators]).jacobian(zs), cse=True)
         for z in c.sampler(np.random.default_rng(20), 20):
             assert np.linalg.matrix_rank(np.array(jac(z), float), tol=1e-10) == len(zs)
 
@@ -98,7 +97,9 @@ def test_wrong_coordinates_are_reported():
     ell, L = sp.symbols("l L", real=True)
     G = sp.Symbol("G", positive=True)
     bad = CanonicalCoordinates(
-        "so3", ((ell, L),), (G,),
+        "so3",
+        ((ell, L),),
+        (G,),
         inverse={ell: -sp.atan2(m1, m2), L: m3, G: sp.sqrt(m1**2 + m2**2 + m3**2)},
     )
     records = {(r.left, r.right): r for r in check_coordinates(bad)}
@@ -116,8 +117,7 @@ def test_wrong_forward_map_is_reported():
     forward = dict(c.forward)
     forward["gamma1"] = -forward["gamma1"]
     bad = CanonicalCoordinates("e3", c.pairs, c.casimirs, forward, None, c.sampler)
-    failing = {(r.left, r.right) for r in check_poisson_map(bad)
-               if not (r.symbolic_ok or r.numeric_ok)}
+    failing = {(r.left, r.right) for r in check_poisson_map(bad) if not (r.symbolic_ok or r.numeric_ok)}
     assert failing == {("m2", "gamma1"), ("m2", "gamma3"), ("m3", "gamma1"), ("m3", "gamma2")}
     assert ("m1", "m2") not in failing
 
@@ -149,13 +149,19 @@ def test_bracket_table_fields_and_json():
     [
         (lambda: bracket_table("so4"), "expected one of"),
         (lambda: CanonicalCoordinates("so3", (), ()), "expected a forward or an inverse map"),
-        (lambda: CanonicalCoordinates("so3", (), (), forward={"m1": 0}),
-         "expected forward expressions"),
-        (lambda: check_coordinates(euler_coordinates("so3")),
-         "expected coordinates with an inverse"),
-        (lambda: check_poisson_map(CanonicalCoordinates(
-            "so3", andoyer_coordinates("so3").pairs, andoyer_coordinates("so3").casimirs,
-            andoyer_coordinates("so3").forward)), "expected a sampler or an inverse map"),
+        (lambda: CanonicalCoordinates("so3", (), (), forward={"m1": 0}), "expected forward expressions"),
+        (lambda: check_coordinates(euler_coordinates("so3")), "expected coordinates with an inverse"),
+        (
+            lambda: check_poisson_map(
+                CanonicalCoordinates(
+                    "so3",
+                    andoyer_coordinates("so3").pairs,
+                    andoyer_coordinates("so3").casimirs,
+                    andoyer_coordinates("so3").forward,
+                )
+            ),
+            "expected a sampler or an inverse map",
+        ),
     ],
 )
 def test_bad_inputs_raise(call, message):
@@ -202,7 +208,6 @@ def test_euler_momenta_invert_gurfil_25_27():
     """Φ = m·γ, Θ = m1 cψ − m2 sψ, Ψ = m3 (Gurfil 40–42), composed with eqs. 25–27."""
     J = euler_momenta()
     c = euler_coordinates("so3")
-    sub = dict(zip(get_algebra("so3").symbols(), (c.forward[n] for n in ("m1", "m2", "m3")),
-                   strict=True))
+    sub = dict(zip(get_algebra("so3").symbols(), (c.forward[n] for n in ("m1", "m2", "m3")), strict=True))
     for name, (_, p) in zip(("phi", "theta", "psi"), c.pairs, strict=True):
         assert vanishes(J[name] - p, substitution=sub)

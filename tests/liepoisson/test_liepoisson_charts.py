@@ -35,12 +35,13 @@ def andoyer_points(rng, n, regime):
     return ell, g, h, L, G, H
 
 
-def andoyer_rotation(ell, g, h, L, G, H):  # noqa: PLR0917 - the Andoyer variables
+def andoyer_rotation(ell, g, h, L, G, H):
     """Project convention rot = Rz(h) Rx(I) Rz(g) Rx(J) Rz(l), angles computed accurately."""
     inc = np.arctan2(np.sqrt((G - H) * (G + H)), H)
     J = np.arctan2(np.sqrt((G - L) * (G + L)), L)
-    return (Rotation.from_euler("ZXZ", np.stack([h, inc, g], -1))
-            * Rotation.from_euler("XZ", np.stack([J, ell], -1)))
+    return Rotation.from_euler("ZXZ", np.stack([h, inc, g], -1)) * Rotation.from_euler(
+        "XZ", np.stack([J, ell], -1)
+    )
 
 
 def angle_diff(a, b):
@@ -77,14 +78,17 @@ def test_l7_quaternion_matches_scipy_up_to_sign(regime):
 def test_l7_quaternion_is_product_of_half_angle_rotations():
     """The sign of λ: λ = q_z(h) q_x(I) q_z(g) q_x(J) q_z(l), continuous and 4π-periodic."""
     ell, g, h, L, G, H = 0.3, 1.0, -0.5, 0.2, 1.0, 0.4
-    parts = [Rotation.from_euler("Z", h), Rotation.from_euler("X", np.arccos(H / G)),
-             Rotation.from_euler("Z", g), Rotation.from_euler("X", np.arccos(L / G)),
-             Rotation.from_euler("Z", ell)]
+    parts = [
+        Rotation.from_euler("Z", h),
+        Rotation.from_euler("X", np.arccos(H / G)),
+        Rotation.from_euler("Z", g),
+        Rotation.from_euler("X", np.arccos(L / G)),
+        Rotation.from_euler("Z", ell),
+    ]
     lam = quaternion_from_scipy(parts[0].as_quat())
     for p in parts[1:]:  # all these factors have w > 0, so no sign is lost here
         a, b = lam, quaternion_from_scipy(p.as_quat())
-        lam = np.array([a[0] * b[0] - a[1:] @ b[1:], *(a[0] * b[1:] + b[0] * a[1:]
-                                                      + np.cross(a[1:], b[1:]))])
+        lam = np.array([a[0] * b[0] - a[1:] @ b[1:], *(a[0] * b[1:] + b[0] * a[1:] + np.cross(a[1:], b[1:]))])
     np.testing.assert_allclose(l7_from_andoyer(ell, g, h, L, G, H)[1], lam, atol=1e-15)
     shifted = l7_from_andoyer(ell, g + TWO_PI, h, L, G, H)[1]
     np.testing.assert_allclose(shifted, -lam, atol=1e-15)
@@ -152,7 +156,7 @@ unit = st.floats(-1.0, 1.0, allow_nan=False)
 
 @settings(max_examples=300, deadline=None)
 @given(ell=angles, g=angles, h=angles, x=unit, y=unit, G=st.floats(1e-6, 1e6))
-def test_round_trip_hypothesis(ell, g, h, x, y, G):  # noqa: PLR0917 - hypothesis arguments
+def test_round_trip_hypothesis(ell, g, h, x, y, G):
     L, H = x * G, y * G
     m, lam = l7_from_andoyer(ell, g, h, L, G, H)
     sJ, sI = np.sqrt((1 - x) * (1 + x)), np.sqrt((1 - y) * (1 + y))
@@ -255,8 +259,7 @@ def test_singular_warning_points_at_caller_and_counts():
         (lambda: e3_to_andoyer([0.0, 0, 0], [0.0, 0, 1]), "expected a non-zero angular momentum"),
         (lambda: e3_to_andoyer(np.ones((2, 3)), np.eye(3)), "expected broadcastable leading"),
         (lambda: l7_to_andoyer(np.ones(3), np.ones(3)), "expected lam with last axis of length 4"),
-        (lambda: e3_from_andoyer(np.zeros(2), np.zeros(3), 0.1, 1.0, 0.2),
-         "expected broadcastable inputs"),
+        (lambda: e3_from_andoyer(np.zeros(2), np.zeros(3), 0.1, 1.0, 0.2), "expected broadcastable inputs"),
         (lambda: l7_from_andoyer(np.nan, 0, 0, 0.1, 1.0, 0.2), "expected finite l"),
         (lambda: quaternion_to_scipy([1.0, 0.0]), "expected lam with last axis of length 4"),
     ],

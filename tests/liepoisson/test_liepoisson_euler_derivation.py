@@ -62,13 +62,15 @@ def angular_velocity_matrix():
     return omega.jacobian(qdots), qdots
 
 
-GURFIL_25_27 = sp.Matrix([
-    (Phi * sp.sin(psi) + Theta * sp.sin(theta) * sp.cos(psi)
-     - Psi * sp.sin(psi) * sp.cos(theta)) / sp.sin(theta),
-    (Phi * sp.cos(psi) - Theta * sp.sin(psi) * sp.sin(theta)
-     - Psi * sp.cos(psi) * sp.cos(theta)) / sp.sin(theta),
-    Psi,
-])
+GURFIL_25_27 = sp.Matrix(
+    [
+        (Phi * sp.sin(psi) + Theta * sp.sin(theta) * sp.cos(psi) - Psi * sp.sin(psi) * sp.cos(theta))
+        / sp.sin(theta),
+        (Phi * sp.cos(psi) - Theta * sp.sin(psi) * sp.sin(theta) - Psi * sp.cos(psi) * sp.cos(theta))
+        / sp.sin(theta),
+        Psi,
+    ]
+)
 
 
 def test_euler_rotation_matrix_matches_scipy():
@@ -123,11 +125,13 @@ def test_reference_frame_momentum_brackets_gurfil_eq_33():
     """m_ref = rot m has {G1, G2} = +G3 (Gurfil eq. 33), computed in l(7)."""
     l7 = get_algebra("l7")
     m1, m2, m3, w, x, y, z = l7.symbols()
-    R = sp.Matrix([
-        [w**2 + x**2 - y**2 - z**2, 2 * (x * y - w * z), 2 * (x * z + w * y)],
-        [2 * (x * y + w * z), w**2 - x**2 + y**2 - z**2, 2 * (y * z - w * x)],
-        [2 * (x * z - w * y), 2 * (w * x + y * z), w**2 - x**2 - y**2 + z**2],
-    ])
+    R = sp.Matrix(
+        [
+            [w**2 + x**2 - y**2 - z**2, 2 * (x * y - w * z), 2 * (x * z + w * y)],
+            [2 * (x * y + w * z), w**2 - x**2 + y**2 - z**2, 2 * (y * z - w * x)],
+            [2 * (x * z - w * y), 2 * (w * x + y * z), w**2 - x**2 - y**2 + z**2],
+        ]
+    )
     g = R * sp.Matrix([m1, m2, m3])
     unit = ((w, w**2 + x**2 + y**2 + z**2 - 1),)
     for i, j, k in ((0, 1, 2), (1, 2, 0), (2, 0, 1)):

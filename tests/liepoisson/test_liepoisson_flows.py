@@ -60,14 +60,13 @@ def initial_state(algebra, rng):
 
 
 @pytest.mark.parametrize(
-    ("algebra", "heavy"), [("so3", False), ("e3", False), ("e3", True), ("l7", False),
-                           ("l7", True)],
+    ("algebra", "heavy"),
+    [("so3", False), ("e3", False), ("e3", True), ("l7", False), ("l7", True)],
 )
 def test_casimirs_and_energy_conserved(algebra, heavy):
     alg = get_algebra(algebra)
     x0 = initial_state(algebra, np.random.default_rng(40))
-    sol = solve_ivp(alg.hamiltonian_rhs(gradient(algebra, heavy)), (0.0, 20.0), x0,
-                    dense_output=False, **TOL)
+    sol = solve_ivp(alg.hamiltonian_rhs(gradient(algebra, heavy)), (0.0, 20.0), x0, dense_output=False, **TOL)
     assert sol.success
     traj = sol.y.T
     for cas in alg.casimirs:
@@ -84,24 +83,22 @@ def test_l7_heavy_top_matches_body_frame_newton_euler():
     rng = np.random.default_rng(41)
     x0 = initial_state("l7", rng)
     l7 = get_algebra("l7")
-    sol = solve_ivp(l7.hamiltonian_rhs(gradient("l7", True)), (0.0, 5.0), x0,
-                    t_eval=np.linspace(0, 5, 11), **TOL)
+    sol = solve_ivp(
+        l7.hamiltonian_rhs(gradient("l7", True)), (0.0, 5.0), x0, t_eval=np.linspace(0, 5, 11), **TOL
+    )
 
     def newton_euler(_t, y):
         m, R = y[:3], y[3:].reshape(3, 3)
         omega = m / INERTIA
         gamma = R[2]
-        hat = np.array([[0, -omega[2], omega[1]], [omega[2], 0, -omega[0]],
-                        [-omega[1], omega[0], 0]])
-        return np.concatenate([np.cross(m, omega) + MGL * np.cross(gamma, CHI),
-                               (R @ hat).ravel()])
+        hat = np.array([[0, -omega[2], omega[1]], [omega[2], 0, -omega[0]], [-omega[1], omega[0], 0]])
+        return np.concatenate([np.cross(m, omega) + MGL * np.cross(gamma, CHI), (R @ hat).ravel()])
 
-    from scipy.spatial.transform import Rotation  # noqa: PLC0415
+    from scipy.spatial.transform import Rotation
 
     lam0 = x0[3:]
     R0 = Rotation.from_quat(np.r_[lam0[1:], lam0[0]]).as_matrix()
-    ref = solve_ivp(newton_euler, (0.0, 5.0), np.r_[x0[:3], R0.ravel()],
-                    t_eval=np.linspace(0, 5, 11), **TOL)
+    ref = solve_ivp(newton_euler, (0.0, 5.0), np.r_[x0[:3], R0.ravel()], t_eval=np.linspace(0, 5, 11), **TOL)
     np.testing.assert_allclose(sol.y[:3], ref.y[:3], atol=1e-9)
     for k in range(11):
         lam = sol.y[3:, k]
@@ -114,10 +111,8 @@ def test_e3_and_l7_heavy_tops_agree():
     x7 = initial_state("l7", rng)
     x3 = np.r_[x7[:3], gamma_from_quaternion(x7[3:])]
     t = np.linspace(0, 10, 21)
-    s7 = solve_ivp(get_algebra("l7").hamiltonian_rhs(gradient("l7", True)), (0, 10), x7,
-                   t_eval=t, **TOL)
-    s3 = solve_ivp(get_algebra("e3").hamiltonian_rhs(gradient("e3", True)), (0, 10), x3,
-                   t_eval=t, **TOL)
+    s7 = solve_ivp(get_algebra("l7").hamiltonian_rhs(gradient("l7", True)), (0, 10), x7, t_eval=t, **TOL)
+    s3 = solve_ivp(get_algebra("e3").hamiltonian_rhs(gradient("e3", True)), (0, 10), x3, t_eval=t, **TOL)
     np.testing.assert_allclose(s7.y[:3], s3.y[:3], atol=1e-9)
     np.testing.assert_allclose(gamma_from_quaternion(s7.y[3:].T).T, s3.y[3:], atol=1e-9)
 
@@ -147,8 +142,11 @@ def test_momentum_flow_advances_its_angle(momentum, angle):
     if momentum != "H":  # on e(3) too, for the flows that live there
         gamma0 = gamma_from_quaternion(lam0)
         e3 = get_algebra("e3")
-        sol3 = solve_ivp(e3.hamiltonian_rhs(lambda x: np.r_[grad(np.r_[x[:3], lam0])[:3],
-                                                             np.zeros(3)]),
-                         (0, T), np.r_[m0, gamma0], **TOL)
+        sol3 = solve_ivp(
+            e3.hamiltonian_rhs(lambda x: np.r_[grad(np.r_[x[:3], lam0])[:3], np.zeros(3)]),
+            (0, T),
+            np.r_[m0, gamma0],
+            **TOL,
+        )
         c = e3_to_andoyer(sol3.y[:3, -1], sol3.y[3:, -1])._asdict()
         assert abs((c[angle] - coords0[angle] - T + np.pi) % (2 * np.pi) - np.pi) < 1e-11

@@ -59,20 +59,22 @@ def test_printed_2_12_is_wrong_and_the_rest_as_printed():
 SQRT2 = np.sqrt(2)
 
 
-def pavlov_2_14(  # noqa: PLR0917 - the Andoyer variables in Pavlov's order
-    ell, L, g, G, h, H, *, sin=np.sin, cos=np.cos, asin=np.arcsin, sqrt2=SQRT2
-):
+def pavlov_2_14(ell, L, g, G, h, H, *, sin=np.sin, cos=np.cos, asin=np.arcsin, sqrt2=SQRT2):
     zeta, tau = asin(H / G), asin(L / G)
     xp, xm, yp, ym = (zeta + tau) / 2, (zeta - tau) / 2, (ell + h) / 2, (ell - h) / 2
     s, c = sin(g / 2), cos(g / 2)
-    lam0 = (s * sin(yp) * cos(xm) + s * cos(yp) * cos(xm)
-            + c * sin(yp) * sin(xp) - c * cos(yp) * sin(xp)) / sqrt2
-    lam1 = (s * cos(ym) * sin(xm) - s * sin(ym) * sin(xm)
-            - c * sin(ym) * cos(xp) - c * cos(ym) * cos(xp)) / sqrt2
-    lam2 = (-s * sin(ym) * sin(xm) - s * cos(ym) * sin(xm)
-            + c * sin(ym) * cos(xp) - c * cos(ym) * cos(xp)) / sqrt2
-    lam3 = (s * sin(yp) * cos(xm) - s * cos(yp) * cos(xm)
-            - c * sin(yp) * sin(xp) - c * cos(yp) * sin(xp)) / sqrt2
+    lam0 = (
+        s * sin(yp) * cos(xm) + s * cos(yp) * cos(xm) + c * sin(yp) * sin(xp) - c * cos(yp) * sin(xp)
+    ) / sqrt2
+    lam1 = (
+        s * cos(ym) * sin(xm) - s * sin(ym) * sin(xm) - c * sin(ym) * cos(xp) - c * cos(ym) * cos(xp)
+    ) / sqrt2
+    lam2 = (
+        -s * sin(ym) * sin(xm) - s * cos(ym) * sin(xm) + c * sin(ym) * cos(xp) - c * cos(ym) * cos(xp)
+    ) / sqrt2
+    lam3 = (
+        s * sin(yp) * cos(xm) - s * cos(yp) * cos(xm) - c * sin(yp) * sin(xp) - c * cos(yp) * sin(xp)
+    ) / sqrt2
     return lam0, lam1, lam2, lam3
 
 
@@ -126,8 +128,9 @@ def test_printed_2_14_is_still_canonical():
     """A shift of h is canonical: Pavlov's λ(l, L, g, G, h, H) passes the Poisson-map check."""
     c = andoyer_coordinates("l7")
     s = {str(z): z for z in c.symbols}
-    lam = pavlov_2_14(s["l"], s["L"], s["g"], s["G"], s["h"], s["H"], sin=sp.sin, cos=sp.cos,
-                      asin=sp.asin, sqrt2=sp.sqrt(2))
+    lam = pavlov_2_14(
+        s["l"], s["L"], s["g"], s["G"], s["h"], s["H"], sin=sp.sin, cos=sp.cos, asin=sp.asin, sqrt2=sp.sqrt(2)
+    )
     forward = dict(c.forward)
     forward.update({f"lambda{i}": lam[i] for i in range(4)})
     records = check_poisson_map(
@@ -146,10 +149,13 @@ def test_corrected_2_14_closed_form():
     zeta, tau = np.arcsin(H / G), np.arcsin(L / G)
     xp, xm, yp, ym = (zeta + tau) / 2, (zeta - tau) / 2, (ell + h) / 2, (ell - h) / 2
     s, c = np.sin(g / 2), np.cos(g / 2)
-    closed = np.stack([
-        c * np.sin(xp) * np.cos(yp) - s * np.cos(xm) * np.sin(yp),
-        c * np.cos(xp) * np.cos(ym) + s * np.sin(xm) * np.sin(ym),
-        s * np.sin(xm) * np.cos(ym) - c * np.cos(xp) * np.sin(ym),
-        s * np.cos(xm) * np.cos(yp) + c * np.sin(xp) * np.sin(yp),
-    ], -1)
+    closed = np.stack(
+        [
+            c * np.sin(xp) * np.cos(yp) - s * np.cos(xm) * np.sin(yp),
+            c * np.cos(xp) * np.cos(ym) + s * np.sin(xm) * np.sin(ym),
+            s * np.sin(xm) * np.cos(ym) - c * np.cos(xp) * np.sin(ym),
+            s * np.cos(xm) * np.cos(yp) + c * np.sin(xp) * np.sin(yp),
+        ],
+        -1,
+    )
     assert np.max(np.abs(closed - l7_from_andoyer(ell, g, h, L, G, H)[1])) <= 1e-14

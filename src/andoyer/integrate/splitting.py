@@ -72,8 +72,10 @@ COMPOSITIONS = {order: splitting_coefficients(order) for order in (2, 4, 6)}
 
 
 def _parts(perturbation: Perturbation | None) -> tuple[list[Perturbation], list[PrecessingFrame]]:
-    models = [] if perturbation is None else (
-        list(perturbation.models) if isinstance(perturbation, SumOfPerturbations) else [perturbation]
+    models = (
+        []
+        if perturbation is None
+        else (list(perturbation.models) if isinstance(perturbation, SumOfPerturbations) else [perturbation])
     )
     kicks, frames = [], []
     for model in models:

@@ -19,23 +19,19 @@ from typing import Any
 
 import numpy as np
 
+from andoyer.charts.singular import SingularChartWarning  # one warning class for every chart
+
 UNIT_TOL = 1e-9
 MOMENTUM_TOL = 8 * np.finfo(float).eps
 SINGULAR_TOL = 1e-12
 TWO_PI = 2.0 * np.pi
 
 
-class SingularChartWarning(UserWarning):
-    """An Andoyer angle is undefined at this point; a documented convention was applied."""
-
-
 def as_components(name: str, value: Any, length: int) -> np.ndarray:
     """Float64 array with ``length`` components on the last axis, all finite."""
     arr = np.asarray(value, dtype=float)
     if arr.ndim == 0 or arr.shape[-1] != length:
-        raise ValueError(
-            f"expected {name} with last axis of length {length}, got shape {arr.shape}"
-        )
+        raise ValueError(f"expected {name} with last axis of length {length}, got shape {arr.shape}")
     if not np.all(np.isfinite(arr)):
         raise ValueError(f"expected finite {name}, got non-finite values")
     return arr
@@ -56,9 +52,7 @@ def leading_shape(**arrays: np.ndarray) -> tuple[int, ...]:
         return np.broadcast_shapes(*shapes.values())
     except ValueError:
         described = ", ".join(f"{k} {v}" for k, v in shapes.items())
-        raise ValueError(
-            f"expected broadcastable leading shapes, got {described}"
-        ) from None
+        raise ValueError(f"expected broadcastable leading shapes, got {described}") from None
 
 
 def unit_vectors(name: str, v: np.ndarray) -> np.ndarray:
@@ -91,8 +85,7 @@ def momenta(L: Any, G: Any, H: Any | None) -> tuple[np.ndarray, ...]:
         if np.any(excess > 0):
             i = np.unravel_index(np.argmax(excess), excess.shape)
             raise ValueError(
-                f"expected |{name}| ≤ G, got |{name}| = {abs(float(p[i])):.17g} "
-                f"> G = {float(G[i]):.17g}"
+                f"expected |{name}| ≤ G, got |{name}| = {abs(float(p[i])):.17g} > G = {float(G[i]):.17g}"
             )
     return np.clip(L, -G, G), G, np.clip(H, -G, G)
 

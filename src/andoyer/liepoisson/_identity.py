@@ -72,9 +72,7 @@ def _linear_coefficients(arg: Any) -> dict[Any, Any] | None:
 
 
 class _Algebraizer:
-    def __init__(
-        self, relations: tuple[tuple[Any, Any], ...], substitution: Mapping[Any, Any]
-    ) -> None:
+    def __init__(self, relations: tuple[tuple[Any, Any], ...], substitution: Mapping[Any, Any]) -> None:
         self.substitution = dict(substitution)
         self.scale: dict[Any, tuple[int, Any]] = {}
         self.sines: dict[Any, Any] = {}
@@ -182,9 +180,7 @@ class _Algebraizer:
             root = -sp.sqrt(sp.factor(sp.expand(num * den))) / den
         else:
             return self._opaque(sp.sqrt(base))
-        return root.replace(
-            lambda x: x.is_Pow and x.exp == sp.S.Half, lambda x: self._radical(x.base)
-        )
+        return root.replace(lambda x: x.is_Pow and x.exp == sp.S.Half, lambda x: self._radical(x.base))
 
     def _radical(self, radicand: Any) -> Any:
         radicand = sp.expand(radicand)

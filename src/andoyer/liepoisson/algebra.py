@@ -98,7 +98,7 @@ class Casimir:
         >>> l7.casimirs[0].expr(l7.symbols())
         lambda0**2 + lambda1**2 + lambda2**2 + lambda3**2
         """
-        import sympy as sp  # noqa: PLC0415 - sympy is needed only for symbolic work
+        import sympy as sp
 
         xs = sp.Matrix(symbols)
         return sp.expand((xs.T * sp.Matrix(self.matrix.tolist()) * xs)[0]).nsimplify()
@@ -276,7 +276,7 @@ class LiePoissonAlgebra:
         >>> get_algebra("e3").symbols()
         (m1, m2, m3, gamma1, gamma2, gamma3)
         """
-        import sympy as sp  # noqa: PLC0415
+        import sympy as sp
 
         return tuple(sp.Symbol(name, real=True) for name in self.generators)
 
@@ -291,7 +291,7 @@ class LiePoissonAlgebra:
         [ m3,   0, -m1],
         [-m2,  m1,   0]])
         """
-        import sympy as sp  # noqa: PLC0415
+        import sympy as sp
 
         xs = self.symbols()
         rows = []
@@ -299,8 +299,11 @@ class LiePoissonAlgebra:
             row = []
             for b in range(self.dim):
                 entry = sum(
-                    (sp.nsimplify(self.structure[a, b, c]) * xs[c]
-                     for c in range(self.dim) if self.structure[a, b, c] != 0),
+                    (
+                        sp.nsimplify(self.structure[a, b, c]) * xs[c]
+                        for c in range(self.dim)
+                        if self.structure[a, b, c] != 0
+                    ),
                     sp.Integer(0),
                 )
                 row.append(entry)
@@ -319,7 +322,7 @@ class LiePoissonAlgebra:
         >>> l7.bracket_sym(m3 * q0, m1)
         -lambda0*m2 - lambda1*m3/2
         """
-        import sympy as sp  # noqa: PLC0415
+        import sympy as sp
 
         return sp.expand(self.bracket_sym_unexpanded(f, k))
 
@@ -333,17 +336,20 @@ class LiePoissonAlgebra:
         >>> so3.bracket_sym_unexpanded(m1 * m2, m3)
         -m1**2 + m2**2
         """
-        import sympy as sp  # noqa: PLC0415
+        import sympy as sp
 
         xs = self.symbols()
         P = self.poisson_tensor_sym()
         gf = [sp.diff(f, x) for x in xs]
         gk = [sp.diff(k, x) for x in xs]
-        return sp.Add(*(
-            gf[a] * P[a, b] * gk[b]
-            for a in range(self.dim) for b in range(self.dim)
-            if P[a, b] != 0 and gf[a] != 0 and gk[b] != 0
-        ))
+        return sp.Add(
+            *(
+                gf[a] * P[a, b] * gk[b]
+                for a in range(self.dim)
+                for b in range(self.dim)
+                if P[a, b] != 0 and gf[a] != 0 and gk[b] != 0
+            )
+        )
 
     def vector_field_sym(self, k: Any) -> Any:
         """Hamiltonian vector field ``P(x)∇K`` of a sympy expression, a column ``Matrix``.
@@ -355,7 +361,7 @@ class LiePoissonAlgebra:
         >>> e3.vector_field_sym(m3**2 / 2).T  # rotation about b3
         Matrix([[m2*m3, -m1*m3, 0, gamma2*m3, -gamma1*m3, 0]])
         """
-        import sympy as sp  # noqa: PLC0415
+        import sympy as sp
 
         xs = self.symbols()
         grad = sp.Matrix([sp.diff(k, x) for x in xs])
@@ -374,12 +380,16 @@ def _build(name: str) -> LiePoissonAlgebra:
     m = ("m1", "m2", "m3")
     if name == "so3":
         return LiePoissonAlgebra(
-            "so3", m, so3_structure(),
+            "so3",
+            m,
+            so3_structure(),
             (Casimir("m·m", _quadratic(3, [(0, 0), (1, 1), (2, 2)])),),
         )
     if name == "e3":
         return LiePoissonAlgebra(
-            "e3", (*m, "gamma1", "gamma2", "gamma3"), e3_structure(),
+            "e3",
+            (*m, "gamma1", "gamma2", "gamma3"),
+            e3_structure(),
             (
                 Casimir("γ·γ", _quadratic(6, [(3, 3), (4, 4), (5, 5)])),
                 Casimir("m·γ", _quadratic(6, [(0, 3), (1, 4), (2, 5)])),
@@ -387,7 +397,9 @@ def _build(name: str) -> LiePoissonAlgebra:
             slice(3, 6),
         )
     return LiePoissonAlgebra(
-        "l7", (*m, "lambda0", "lambda1", "lambda2", "lambda3"), l7_structure(),
+        "l7",
+        (*m, "lambda0", "lambda1", "lambda2", "lambda3"),
+        l7_structure(),
         (Casimir("λ·λ", _quadratic(7, [(3, 3), (4, 4), (5, 5), (6, 6)])),),
         slice(3, 7),
     )

@@ -94,8 +94,7 @@ def _shorten(expr: Any) -> str:
 def _evaluate_many(exprs: list[Any], symbols: tuple[Any, ...], pts: np.ndarray) -> np.ndarray:
     """Values of ``exprs`` at ``pts`` (N, len(symbols)), shape (len(exprs), N); one lambdify."""
     f = sp.lambdify([symbols], list(exprs), "numpy", cse=True)
-    return np.stack([np.broadcast_to(np.asarray(v, dtype=float), pts.shape[:1])
-                     for v in f(pts.T)])
+    return np.stack([np.broadcast_to(np.asarray(v, dtype=float), pts.shape[:1]) for v in f(pts.T)])
 
 
 def _gradients(exprs: list[Any], symbols: tuple[Any, ...], pts: np.ndarray) -> np.ndarray:
@@ -149,8 +148,9 @@ def check_coordinates(
     alg = get_algebra(coords.algebra)
     xs = alg.symbols()
     points = alg.sample(np.random.default_rng(seed), n_points)
-    grads = dict(zip(coords.symbols, _gradients(
-        [coords.inverse[z] for z in coords.symbols], xs, points), strict=True))
+    grads = dict(
+        zip(coords.symbols, _gradients([coords.inverse[z] for z in coords.symbols], xs, points), strict=True)
+    )
     P = alg.poisson_tensor(points)
     absP = np.abs(P)
     substitution = None
@@ -174,10 +174,17 @@ def check_coordinates(
                 proven = vanishes(bracket - expected, substitution=substitution)
             if not proven:
                 expr = bracket if substitution is None else sp.Symbol("<not proven>")
-        records.append(BracketRecord(
-            str(a), str(b), _shorten(expr), str(expected), proven,
-            bool(np.all(err <= tol)), max_err,
-        ))
+        records.append(
+            BracketRecord(
+                str(a),
+                str(b),
+                _shorten(expr),
+                str(expected),
+                proven,
+                bool(np.all(err <= tol)),
+                max_err,
+            )
+        )
     return records
 
 
@@ -232,9 +239,7 @@ def check_poisson_map(
         xpts = alg.sample(rng, n_points)
         zpts = _evaluate_many([coords.inverse[z] for z in zs], alg.symbols(), xpts).T
     else:
-        raise ValueError(
-            "expected a sampler or an inverse map for the numeric check, got neither"
-        )
+        raise ValueError("expected a sampler or an inverse map for the numeric check, got neither")
     X = [coords.forward[name] for name in alg.generators]
     jac = np.moveaxis(_gradients(X, zs, zpts), 0, -2)  # (N, n, nz)
     omega = np.zeros((len(zs), len(zs)))
@@ -263,10 +268,17 @@ def check_poisson_map(
             if not proven:
                 shown = bracket
         max_err = float(np.max(err[:, a, b])) if n_points else 0.0
-        records.append(BracketRecord(
-            alg.generators[a], alg.generators[b], _shorten(shown), str(expected), proven,
-            bool(np.all(err[:, a, b] <= tol)), max_err,
-        ))
+        records.append(
+            BracketRecord(
+                alg.generators[a],
+                alg.generators[b],
+                _shorten(shown),
+                str(expected),
+                proven,
+                bool(np.all(err[:, a, b] <= tol)),
+                max_err,
+            )
+        )
     return records
 
 

@@ -66,13 +66,9 @@ class CanonicalCoordinates:
         if self.forward is None and self.inverse is None:
             raise ValueError("expected a forward or an inverse map, got neither")
         if self.forward is not None and set(self.forward) != set(alg.generators):
-            raise ValueError(
-                f"expected forward expressions for {alg.generators}, got {tuple(self.forward)}"
-            )
+            raise ValueError(f"expected forward expressions for {alg.generators}, got {tuple(self.forward)}")
         if self.inverse is not None and set(self.inverse) != set(self.symbols):
-            raise ValueError(
-                f"expected inverse expressions for {self.symbols}, got {tuple(self.inverse)}"
-            )
+            raise ValueError(f"expected inverse expressions for {self.symbols}, got {tuple(self.inverse)}")
 
     @property
     def symbols(self) -> tuple[Any, ...]:
@@ -116,9 +112,7 @@ def andoyer_symbols() -> dict[str, Any]:
     return names
 
 
-def _andoyer_sampler(
-    n_angles: int, with_h: bool
-) -> Callable[[np.random.Generator, int], np.ndarray]:
+def _andoyer_sampler(n_angles: int, with_h: bool) -> Callable[[np.random.Generator, int], np.ndarray]:
     def sample(rng: np.random.Generator, n: int) -> np.ndarray:
         G = rng.uniform(0.5, 2.0, n)
         L = G * rng.uniform(-0.95, 0.95, n)
@@ -168,15 +162,15 @@ def andoyer_coordinates(algebra: str) -> CanonicalCoordinates:
     if algebra == "so3":
         rho = sp.sqrt(G**2 - L**2)
         forward = {"m1": rho * sp.sin(ell), "m2": rho * sp.cos(ell), "m3": L}
-        return CanonicalCoordinates(
-            "so3", ((ell, L),), (G,), forward, inverse, _andoyer_sampler(1, False)
-        )
+        return CanonicalCoordinates("so3", ((ell, L),), (G,), forward, inverse, _andoyer_sampler(1, False))
     if algebra == "e3":
         rho = sp.sqrt(G**2 - L**2)
         sI, cI, sJ, cJ = sp.sqrt(G**2 - H**2) / G, H / G, rho / G, L / G
         u = cI * sJ + sI * cJ * sp.cos(g)
         forward = {
-            "m1": rho * sp.sin(ell), "m2": rho * sp.cos(ell), "m3": L,
+            "m1": rho * sp.sin(ell),
+            "m2": rho * sp.cos(ell),
+            "m3": L,
             "gamma1": u * sp.sin(ell) + sI * sp.sin(g) * sp.cos(ell),
             "gamma2": u * sp.cos(ell) - sI * sp.sin(g) * sp.sin(ell),
             "gamma3": cI * cJ - sI * sJ * sp.cos(g),
@@ -190,8 +184,7 @@ def andoyer_coordinates(algebra: str) -> CanonicalCoordinates:
         )
     if algebra != "l7":
         get_algebra(algebra)  # raises the standard error
-    half = {k: (sp.sqrt((G + p) / (2 * G)), sp.sqrt((G - p) / (2 * G))) for k, p in
-            (("I", H), ("J", L))}
+    half = {k: (sp.sqrt((G + p) / (2 * G)), sp.sqrt((G - p) / (2 * G))) for k, p in (("I", H), ("J", L))}
     lam = _quat(
         _quat(_quat(_qz(h), _qx(*half["I"])), _qz(g)),
         _quat(_qx(*half["J"]), _qz(ell)),
@@ -257,11 +250,13 @@ def quaternion_matrix(lam: Any) -> Any:
     True
     """
     w, x, y, z = lam
-    return sp.Matrix([
-        [w**2 + x**2 - y**2 - z**2, 2 * (x * y - w * z), 2 * (x * z + w * y)],
-        [2 * (x * y + w * z), w**2 - x**2 + y**2 - z**2, 2 * (y * z - w * x)],
-        [2 * (x * z - w * y), 2 * (w * x + y * z), w**2 - x**2 - y**2 + z**2],
-    ])
+    return sp.Matrix(
+        [
+            [w**2 + x**2 - y**2 - z**2, 2 * (x * y - w * z), 2 * (x * z + w * y)],
+            [2 * (x * y + w * z), w**2 - x**2 + y**2 - z**2, 2 * (y * z - w * x)],
+            [2 * (x * z - w * y), 2 * (w * x + y * z), w**2 - x**2 - y**2 + z**2],
+        ]
+    )
 
 
 def euler_coordinates(algebra: str) -> CanonicalCoordinates:
@@ -306,10 +301,6 @@ def euler_coordinates(algebra: str) -> CanonicalCoordinates:
         angles = rng.uniform(0.0, 2 * np.pi, (n, 3))
         angles[:, 1] = rng.uniform(0.2, np.pi - 0.2, n)
         mom = rng.standard_normal((n, 3))
-        return np.stack(
-            [angles[:, 0], mom[:, 0], angles[:, 1], mom[:, 1], angles[:, 2], mom[:, 2]], axis=-1
-        )
+        return np.stack([angles[:, 0], mom[:, 0], angles[:, 1], mom[:, 1], angles[:, 2], mom[:, 2]], axis=-1)
 
-    return CanonicalCoordinates(
-        alg.name, ((phi, Phi), (theta, Theta), (psi, Psi)), (), forward, None, sample
-    )
+    return CanonicalCoordinates(alg.name, ((phi, Phi), (theta, Theta), (psi, Psi)), (), forward, None, sample)

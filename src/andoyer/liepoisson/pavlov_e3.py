@@ -53,11 +53,10 @@ __all__ = [
 ]
 
 
-
 class So3Coordinates(NamedTuple):
     """Cylindrical coordinates ``(l, L)`` on the sphere ``|m| = G`` (arrays of equal shape)."""
 
-    l: np.ndarray  # noqa: E741 - Andoyer angle l
+    l: np.ndarray
     L: np.ndarray
     G: np.ndarray
 
@@ -65,7 +64,7 @@ class So3Coordinates(NamedTuple):
 class E3Coordinates(NamedTuple):
     """Andoyer–Deprit coordinates ``(l, g, L, G)`` on the e(3) leaf labelled by ``H``."""
 
-    l: np.ndarray  # noqa: E741 - Andoyer angle l
+    l: np.ndarray
     g: np.ndarray
     L: np.ndarray
     G: np.ndarray
@@ -107,7 +106,7 @@ def so3_to_andoyer(m: Any) -> So3Coordinates:
     return So3Coordinates(ell[()], m[..., 2][()], G[()])
 
 
-def so3_from_andoyer(l: Any, L: Any, G: Any) -> np.ndarray:  # noqa: E741
+def so3_from_andoyer(l: Any, L: Any, G: Any) -> np.ndarray:
     """Body angular momentum ``m = (√(G²−L²) sin l, √(G²−L²) cos l, L)`` (Pavlov eq. 1.2).
 
     Parameters
@@ -135,9 +134,7 @@ def so3_from_andoyer(l: Any, L: Any, G: Any) -> np.ndarray:  # noqa: E741
     return np.stack([rho * np.sin(ell), rho * np.cos(ell), L], axis=-1)
 
 
-def e3_from_andoyer(
-    l: Any, g: Any, L: Any, G: Any, H: Any  # noqa: E741 - Andoyer angle l
-) -> tuple[np.ndarray, np.ndarray]:
+def e3_from_andoyer(l: Any, g: Any, L: Any, G: Any, H: Any) -> tuple[np.ndarray, np.ndarray]:
     """``(m, γ)`` on the e(3) leaf from Andoyer–Deprit coordinates (Pavlov eqs. 1.2, 1.7).
 
     Parameters
@@ -172,9 +169,7 @@ def e3_from_andoyer(
     -0.7
     """
     L, G, H = momenta(L, G, H)
-    ell, g, L, G, H = broadcast(
-        l=as_scalars("l", l), g=as_scalars("g", g), L=L, G=G, H=H
-    )
+    ell, g, L, G, H = broadcast(l=as_scalars("l", l), g=as_scalars("g", g), L=L, G=G, H=H)
     sin_J = np.sqrt((G - L) * (G + L)) / G
     cos_J = L / G
     sin_I = np.sqrt((G - H) * (G + H)) / G

@@ -54,7 +54,7 @@ __all__ = ["L7Coordinates", "l7_from_andoyer", "l7_to_andoyer"]
 class L7Coordinates(NamedTuple):
     """Andoyer–Deprit coordinates ``(l, g, h, L, G, H)`` on an l(7) leaf (arrays of equal shape)."""
 
-    l: np.ndarray  # noqa: E741 - Andoyer angle l
+    l: np.ndarray
     g: np.ndarray
     h: np.ndarray
     L: np.ndarray
@@ -77,9 +77,7 @@ def _qx(c: np.ndarray, s: np.ndarray) -> np.ndarray:
     return np.stack([c, s, zero, zero], axis=-1)
 
 
-def l7_from_andoyer(  # noqa: PLR0917 - the six Andoyer variables, in order
-    l: Any, g: Any, h: Any, L: Any, G: Any, H: Any  # noqa: E741 - Andoyer angle l
-) -> tuple[np.ndarray, np.ndarray]:
+def l7_from_andoyer(l: Any, g: Any, h: Any, L: Any, G: Any, H: Any) -> tuple[np.ndarray, np.ndarray]:
     """``(m, λ)`` on the l(7) leaf ``|λ| = 1`` from Andoyer–Deprit coordinates.
 
     Parameters

@@ -97,11 +97,17 @@ def pavlov_table(algebra: Literal["e3", "l7"]) -> tuple[TableEntry, ...]:
     if algebra == "e3":
         g1, g2, g3 = get_algebra("e3").symbols()[3:]
         rows = [
-            ("1.3", "l", "L", sp.Integer(1)), ("1.3", "G", "L", 0), ("1.3", "G", "l", 0),
-            ("1.3", "gamma1", "gamma2", 0), ("1.3", "gamma1", "gamma3", 0),
+            ("1.3", "l", "L", sp.Integer(1)),
+            ("1.3", "G", "L", 0),
+            ("1.3", "G", "l", 0),
+            ("1.3", "gamma1", "gamma2", 0),
+            ("1.3", "gamma1", "gamma3", 0),
             ("1.3", "gamma2", "gamma3", 0),
-            ("1.4", "L", "gamma1", -g2), ("1.4", "L", "gamma2", g1), ("1.4", "L", "gamma3", 0),
-            ("1.5", "l", "gamma1", -sl * g3 / rho), ("1.5", "l", "gamma2", -cl * g3 / rho),
+            ("1.4", "L", "gamma1", -g2),
+            ("1.4", "L", "gamma2", g1),
+            ("1.4", "L", "gamma3", 0),
+            ("1.5", "l", "gamma1", -sl * g3 / rho),
+            ("1.5", "l", "gamma2", -cl * g3 / rho),
             ("1.5", "l", "gamma3", (H - L * g3) / (G**2 - L**2)),
             ("1.6", "G", "gamma1", (rho * cl * g3 - L * g2) / G),
             ("1.6", "G", "gamma2", (L * g1 - rho * sl * g3) / G),
@@ -116,10 +122,14 @@ def pavlov_table(algebra: Literal["e3", "l7"]) -> tuple[TableEntry, ...]:
     half = sp.Rational(1, 2)
     a, b = rho / (2 * G), L / (2 * G)
     rows = [
-        ("2.10", "L", "lambda0", half * q3), ("2.10", "L", "lambda1", -half * q2),
-        ("2.10", "L", "lambda2", half * q1), ("2.10", "L", "lambda3", -half * q0),
-        ("2.11", "H", "lambda0", half * q3), ("2.11", "H", "lambda1", half * q2),
-        ("2.11", "H", "lambda2", -half * q1), ("2.11", "H", "lambda3", -half * q0),
+        ("2.10", "L", "lambda0", half * q3),
+        ("2.10", "L", "lambda1", -half * q2),
+        ("2.10", "L", "lambda2", half * q1),
+        ("2.10", "L", "lambda3", -half * q0),
+        ("2.11", "H", "lambda0", half * q3),
+        ("2.11", "H", "lambda1", half * q2),
+        ("2.11", "H", "lambda2", -half * q1),
+        ("2.11", "H", "lambda3", -half * q0),
         ("2.12", "l", "lambda0", (q1 * cl - q2 * sl) / (2 * rho)),
         ("2.12", "l", "lambda1", -(q0 * cl + q3 * sl) / (2 * rho)),
         ("2.12", "l", "lambda2", (q0 * sl - q3 * cl) / (2 * rho)),
@@ -130,9 +140,7 @@ def pavlov_table(algebra: Literal["e3", "l7"]) -> tuple[TableEntry, ...]:
         ("2.13", "G", "lambda3", a * (q2 * sl - q1 * cl) - b * q0),
     ]
     printed = {("2.12", "lambda1"): -(q3 * cl + q0 * sl) / (2 * rho)}
-    return tuple(
-        TableEntry(e, x, y, sp.sympify(r), printed.get((e, y))) for e, x, y, r in rows
-    )
+    return tuple(TableEntry(e, x, y, sp.sympify(r), printed.get((e, y))) for e, x, y, r in rows)
 
 
 def check_pavlov_table(
@@ -177,20 +185,30 @@ def check_pavlov_table(
     table = pavlov_table(algebra)
     rhs = [e.printed if printed and e.printed is not None else e.rhs for e in table]
     check = _via_lie_poisson if via == "lie-poisson" else _via_canonical
-    proven, errors = check(alg, coords, table, rhs, n_points=n_points, seed=seed,
-                           symbolic=symbolic)
+    proven, errors = check(alg, coords, table, rhs, n_points=n_points, seed=seed, symbolic=symbolic)
     return [
         BracketRecord(
-            e.left, e.right, _shorten(r) if ok else "<not proven>", _shorten(r), ok,
-            bool(err <= tol), float(err),
+            e.left,
+            e.right,
+            _shorten(r) if ok else "<not proven>",
+            _shorten(r),
+            ok,
+            bool(err <= tol),
+            float(err),
         )
         for e, r, ok, err in zip(table, rhs, proven, errors, strict=True)
     ]
 
 
 def _via_lie_poisson(
-    alg: LiePoissonAlgebra, coords: CanonicalCoordinates, table: tuple[TableEntry, ...],
-    rhs: list[Any], *, n_points: int, seed: int, symbolic: bool,
+    alg: LiePoissonAlgebra,
+    coords: CanonicalCoordinates,
+    table: tuple[TableEntry, ...],
+    rhs: list[Any],
+    *,
+    n_points: int,
+    seed: int,
+    symbolic: bool,
 ) -> tuple[list[bool], np.ndarray]:
     xs = alg.symbols()
     names = {str(z): z for z in coords.symbols}
@@ -209,8 +227,7 @@ def _via_lie_poisson(
     pts = alg.sample(np.random.default_rng(seed), n_points)
     used = sorted({e.left for e in table} | {e.right for e in table})
     grads = _evaluate_many([sp.diff(functions[n], x) for n in used for x in xs], xs, pts)
-    grads = dict(zip(used, grads.reshape(len(used), len(xs), -1).transpose(0, 2, 1),
-                     strict=True))
+    grads = dict(zip(used, grads.reshape(len(used), len(xs), -1).transpose(0, 2, 1), strict=True))
     z_values = _evaluate_many([coords.inverse[z] for z in coords.symbols], xs, pts)
     expected = _evaluate_many(rhs, (*xs, *coords.symbols), np.column_stack([pts, z_values.T]))
     P = alg.poisson_tensor(pts)
@@ -224,8 +241,14 @@ def _via_lie_poisson(
 
 
 def _via_canonical(
-    alg: LiePoissonAlgebra, coords: CanonicalCoordinates, table: tuple[TableEntry, ...],
-    rhs: list[Any], *, n_points: int, seed: int, symbolic: bool,
+    alg: LiePoissonAlgebra,
+    coords: CanonicalCoordinates,
+    table: tuple[TableEntry, ...],
+    rhs: list[Any],
+    *,
+    n_points: int,
+    seed: int,
+    symbolic: bool,
 ) -> tuple[list[bool], np.ndarray]:
     zs = coords.symbols
     names = {str(z): z for z in zs}
@@ -248,6 +271,6 @@ def _via_canonical(
         proven.append(bool(symbolic) and vanishes(bracket - rhs_z[-1]))
     pts = coords.sampler(np.random.default_rng(seed), n_points)
     values = _evaluate_many(brackets + rhs_z, zs, pts)
-    value, want = values[: len(table)], values[len(table):]
+    value, want = values[: len(table)], values[len(table) :]
     errors = np.max(np.abs(value - want) / np.maximum(1.0, np.abs(want)), axis=-1)
     return proven, errors

@@ -101,9 +101,7 @@ def gamma_from_quaternion(lam: Any) -> np.ndarray:
     """
     q = unit_vectors("lam", as_components("lam", lam, 4))
     w, x, y, z = np.moveaxis(q, -1, 0)
-    return np.stack(
-        [2 * (x * z - w * y), 2 * (w * x + y * z), w * w - x * x - y * y + z * z], axis=-1
-    )
+    return np.stack([2 * (x * z - w * y), 2 * (w * x + y * z), w * w - x * x - y * y + z * z], axis=-1)
 
 
 def quaternion_product(a: np.ndarray, b: np.ndarray) -> np.ndarray:
