@@ -13,7 +13,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.integrate import solve_ivp
 
-from andoyer._validation import as_finite
+from andoyer.integrate.output import gather_states, output_times
 from andoyer.perturbations.equations import _perturbed_rates
 from andoyer.perturbations.model import Model
 from andoyer.state import State
@@ -64,12 +64,7 @@ def integrate_reference(
     if not isinstance(state, State):
         msg = f"expected an andoyer State, got {type(state).__name__}"
         raise ValueError(msg)
-    times = as_finite(t, "t")
-    try:
-        shape = np.broadcast_shapes(state.shape, times.shape)
-    except ValueError as exc:
-        msg = f"expected times broadcastable with the state's shape {state.shape}, got shape {times.shape}"
-        raise ValueError(msg) from exc
+    times, unique, shape = output_times(state, t)
     q0 = state.quaternion.reshape(-1, 4)
     m0 = state.m_body.reshape(-1, 3)
     n = q0.shape[0]
@@ -85,8 +80,7 @@ def integrate_reference(
         return np.concatenate([dq.ravel(), dm.ravel()])
 
     y0 = np.concatenate([q0.ravel(), m0.ravel()])
-    unique = np.unique(times)
-    values: dict[float, Array] = {}
+    values: dict[float, tuple[Array, Array]] = {}
     for direction in (1.0, -1.0):
         targets = unique[(unique - t0) * direction > 0]
         if targets.size == 0:
@@ -97,13 +91,9 @@ def integrate_reference(
             msg = f"expected the reference integration to succeed, got: {sol.message}"
             raise ValueError(msg)
         for time in targets:
-            values[float(time)] = sol.sol(time) if time != end else sol.y[:, -1]
-    values.update({float(time): y0 for time in unique if time == t0})
-    # Evaluate each (state, time) pair of the broadcast shape.
-    state_index = np.broadcast_to(np.arange(n).reshape(state.shape or ()), shape)
-    time_of = np.broadcast_to(times, shape)
-    table = np.stack([values[float(x)] for x in unique])  # (U, 7n)
-    which = np.searchsorted(unique, time_of)[..., None]
-    q = table[which, 4 * state_index[..., None] + np.arange(4)]
-    m = table[which, 4 * n + 3 * state_index[..., None] + np.arange(3)]
-    return State.from_quaternion(q / np.linalg.norm(q, axis=-1, keepdims=True), m)
+            y = sol.sol(time) if time != end else sol.y[:, -1]
+            values[float(time)] = (y[: 4 * n].reshape(n, 4), y[4 * n :].reshape(n, 3))
+    for time in unique:
+        if time == t0:
+            values[float(time)] = (q0, m0)
+    return gather_states(state, times, unique, shape, values)

@@ -23,14 +23,16 @@ from __future__ import annotations
 from collections.abc import Callable
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 from andoyer import _quaternion as quat
+from andoyer.integrate.output import gather_states, output_times
 from andoyer.perturbations.base import Perturbation, SumOfPerturbations
 from andoyer.perturbations.frame import PrecessingFrame
 from andoyer.perturbations.model import Model
+from andoyer.state import State
 
-__all__ = ["COMPOSITIONS", "split_step", "splitting_coefficients"]
+__all__ = ["COMPOSITIONS", "integrate_splitting", "split_step", "splitting_coefficients"]
 
 Array = NDArray[np.float64]
 
@@ -122,3 +124,67 @@ def split_step(
         for kick in kicks:
             m = m + kick._torque(np.asarray(time), q, m) * (0.5 * sub)
     return q, m
+
+
+def exact_free_flow(moments: Array, q: Array, m: Array, h: float) -> tuple[Array, Array]:
+    """The closed-form torque-free flow over ``h`` of attitudes (N, 4) and momenta (N, 3)."""
+    from andoyer.free import FreeMotion
+
+    m_new, q_new = FreeMotion(moments, m, q).propagate(h)
+    return q_new, m_new
+
+
+def integrate_splitting(
+    model: Model,
+    state: State,
+    t: ArrayLike,
+    step: float,
+    order: int = 4,
+    t0: float = 0.0,
+) -> State:
+    """Propagate ``state`` (at ``t0``) under ``model`` to times ``t`` by symmetric splitting.
+
+    Fixed steps of length ``step`` (the last step to each output time is
+    shortened to land on it), each a composition of :func:`split_step` of
+    order 2, 4 or 6. The output broadcasts the state's shape with ``t``'s.
+
+    Parameters
+    ----------
+    model : Model
+        Body plus attitude-only Hamiltonian models and/or precessing frames.
+    state : State, shape (S...)
+    t : array_like, shape (T...)
+    step : float
+        Step length (> 0).
+    order : {2, 4, 6}
+    t0 : float
+
+    Returns
+    -------
+    State, shape broadcast(S..., T...)
+    """
+    if not isinstance(model, Model):
+        msg = f"expected an andoyer Model, got {type(model).__name__}"
+        raise ValueError(msg)
+    if not (np.isfinite(step) and step > 0):
+        msg = f"expected a positive finite step, got {step!r}"
+        raise ValueError(msg)
+    splitting_coefficients(order)
+    _parts(model.perturbation)
+    times, unique, shape = output_times(state, t)
+    q0 = state.quaternion.reshape(-1, 4)
+    m0 = state.m_body.reshape(-1, 3)
+    values: dict[float, tuple[Array, Array]] = {}
+    for direction in (1.0, -1.0):
+        targets = np.sort(unique[(unique - t0) * direction > 0])[:: int(direction)]
+        q, m, now = q0, m0, t0
+        for target in targets:
+            while (target - now) * direction > 0:
+                h = direction * min(step, abs(target - now))
+                q, m = split_step(model, exact_free_flow, now, q, m, h, order)
+                now = target if abs(target - (now + h)) <= 1e-12 * max(1.0, abs(target)) else now + h
+            values[float(target)] = (q, m)
+    for time in unique:
+        if time == t0:
+            values[float(time)] = (q0, m0)
+    return gather_states(state, times, unique, shape, values)

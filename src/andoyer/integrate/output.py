@@ -1,0 +1,46 @@
+"""Output times shared by the integrators: each (state, time) pair of a broadcast shape."""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from andoyer._validation import as_finite
+from andoyer.state import State
+
+Array = NDArray[np.float64]
+
+
+def output_times(state: State, t: ArrayLike) -> tuple[Array, Array, tuple[int, ...]]:
+    """Validated times, their sorted unique values, and the broadcast output shape."""
+    if not isinstance(state, State):
+        msg = f"expected an andoyer State, got {type(state).__name__}"
+        raise ValueError(msg)
+    times = as_finite(t, "t")
+    try:
+        shape = np.broadcast_shapes(state.shape, times.shape)
+    except ValueError as exc:
+        msg = f"expected times broadcastable with the state's shape {state.shape}, got shape {times.shape}"
+        raise ValueError(msg) from exc
+    return times, np.unique(times), shape
+
+
+def gather_states(
+    state: State,
+    times: Array,
+    unique: Array,
+    shape: tuple[int, ...],
+    values: dict[float, tuple[Array, Array]],
+) -> State:
+    """Pick, for each pair of the broadcast shape, its state at its time.
+
+    ``values[t] = (q, m)`` holds every state (flattened, (N, 4) and (N, 3)) at time ``t``.
+    """
+    n = max(state.size, 1)
+    state_index = np.broadcast_to(np.arange(n).reshape(state.shape or ()), shape)
+    which = np.searchsorted(unique, np.broadcast_to(times, shape))
+    q_table = np.stack([values[float(x)][0] for x in unique])  # (U, N, 4)
+    m_table = np.stack([values[float(x)][1] for x in unique])
+    q = q_table[which, state_index]
+    m = m_table[which, state_index]
+    return State.from_quaternion(q / np.linalg.norm(q, axis=-1, keepdims=True), m)
