@@ -75,7 +75,7 @@ def _nome(p, pc):
     return eps * (1.0 + e4 * (2.0 + e4 * (15.0 + e4 * (150.0 + e4 * (1707.0 + e4 * 20910.0)))))
 
 
-def lattice(m, mc):
+def lattice(m, mc, mc_lo=0.0):
     """Constants of the theta-quotient evaluation for parameters ``m`` with ``mc = 1 − m``.
 
     Parameters
@@ -83,6 +83,8 @@ def lattice(m, mc):
     m, mc : array_like
         Parameter ``0 ≤ m ≤ 1`` and its complement, supplied separately so that ``mc`` keeps
         full relative precision near ``m = 1``.  Broadcast together.
+    mc_lo : array_like, optional
+        Low part of ``mc`` when it is known as a double-double (sharpens ``K``).
 
     Returns
     -------
@@ -97,7 +99,7 @@ def lattice(m, mc):
     """
     m, mc = np.broadcast_arrays(np.asarray(m, dtype=np.float64), np.asarray(mc, dtype=np.float64))
     circular = m <= 0.5
-    K_hi, K_lo = ellipk_dd(mc)
+    K_hi, K_lo = ellipk_dd(mc, mc_lo)
     Kp, _ = ellipk_dd(m)
     q = np.where(circular, _nome(np.minimum(m, 0.5), np.maximum(mc, 0.5)),
                  _nome(np.minimum(mc, 0.5), np.maximum(m, 0.5)))
