@@ -34,10 +34,20 @@ from enum import IntEnum
 from typing import NamedTuple
 
 import numpy as np
+from scipy.spatial.transform import Rotation
 
+from andoyer.free.quaternion import qmul, shortest_arc
 from andoyer.special.compensated import dd_add, dd_div, dd_mul, dd_sqrt, two_prod, two_sum
 
-__all__ = ["PolhodeFrame", "Regime", "check_inputs", "classify", "polhode_frame"]
+__all__ = [
+    "PolhodeFrame",
+    "Regime",
+    "attitude_anchor",
+    "check_inputs",
+    "classify",
+    "polhode_frame",
+    "working_axes",
+]
 
 _TRIANGLE_TOL = 4.0 * np.finfo(np.float64).eps
 
@@ -253,3 +263,69 @@ def _permutation_parity(perm):
     a, b, c = perm[:, 0], perm[:, 1], perm[:, 2]
     inversions = (a > b).astype(int) + (a > c) + (b > c)
     return 1.0 - 2.0 * (inversions % 2)
+
+
+def working_axes(frame: PolhodeFrame):
+    """Body components of the working axes.
+
+    Parameters
+    ----------
+    frame : PolhodeFrame
+
+    Returns
+    -------
+    ndarray, shape (3, 3, N)
+        ``cols[j][:, i]`` is working axis ``j`` of state ``i`` in body components, so that
+        ``m_body = Σⱼ m_w[j] cols[j]`` and ``P[i] = cols[:, :, i]`` (rows) maps body to
+        working components.
+
+    Examples
+    --------
+    >>> fr = polhode_frame(np.array([[3.0, 1.0, 2.0]]), np.array([[1.0, 0.1, -0.2]]),
+    ...                    np.array([False]))
+    >>> working_axes(fr)[:, :, 0].tolist()
+    [[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]]
+    """
+    n = frame.s.size
+    cols = np.zeros((3, 3, n))
+    for j in range(3):
+        np.put_along_axis(cols[j].T, frame.perm[:, j : j + 1], frame.sign[:, j : j + 1], axis=1)
+    return cols
+
+
+def attitude_anchor(frame: PolhodeFrame, cols, q0):
+    """Constant quaternions ``U = Q₀ ⊗ P`` and ``V = Q₀ ⊗ e_z ⊗ P`` of the attitude.
+
+    The attitude is ``rot(t) = Q₀ ⊗ R_z(Δψ) ⊗ S(m_w(t)) ⊗ P`` with ``P`` the working frame
+    (body → working), ``S`` the shortest arc taking ``m_w`` to ``+z`` and
+    ``Q₀ = q₀ ⊗ P* ⊗ S(m_w(0))*``; writing ``R_z(Δψ) = cos(Δψ/2) + sin(Δψ/2) e_z`` and
+    moving ``P`` through ``S`` gives
+    ``rot(t) = (cos(Δψ/2) U + sin(Δψ/2) V) ⊗ (P* ⊗ S ⊗ P)``.
+
+    Parameters
+    ----------
+    frame : PolhodeFrame
+    cols : ndarray, shape (3, 3, N)
+        From :func:`working_axes`.
+    q0 : ndarray, shape (N, 4)
+        Initial attitudes (unit quaternions, scalar last, body → reference).
+
+    Returns
+    -------
+    U, V : ndarray, shape (4, N)
+
+    Examples
+    --------
+    >>> fr = polhode_frame(np.array([[1.0, 2.0, 3.0]]), np.array([[0.0, 0.0, 1.0]]),
+    ...                    np.array([False]))
+    >>> U, V = attitude_anchor(fr, working_axes(fr), np.array([[0.0, 0.0, 0.0, 1.0]]))
+    >>> U[:, 0].tolist(), V[:, 0].tolist()
+    ([0.0, 0.0, 0.0, 1.0], [0.0, 0.0, 1.0, 0.0])
+    """
+    pq = Rotation.from_matrix(np.moveaxis(cols, -1, 0)).as_quat()
+    q_rw = (Rotation.from_quat(q0) * Rotation.from_quat(pq).inv()).as_quat()
+    s0 = shortest_arc(frame.mw)
+    s0[:, :3] *= -1.0
+    q_0 = qmul(tuple(q_rw.T), tuple(s0.T))
+    pqt = tuple(pq.T)
+    return np.stack(qmul(q_0, pqt)), np.stack(qmul(qmul(q_0, (0.0, 0.0, 1.0, 0.0)), pqt))

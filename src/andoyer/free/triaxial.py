@@ -44,11 +44,10 @@ from typing import NamedTuple
 
 import numpy as np
 from scipy import special as sc
-from scipy.spatial.transform import Rotation
 
 from andoyer.free.phase import Frequency, cycles, frequency
-from andoyer.free.quaternion import qmul, shortest_arc
-from andoyer.free.regime import PolhodeFrame
+from andoyer.free.quaternion import qmul
+from andoyer.free.regime import PolhodeFrame, attitude_anchor, working_axes
 from andoyer.special.compensated import PI_DD, dd_add, dd_div, dd_mul, dd_sqrt, split
 from andoyer.special.theta import lattice
 
@@ -182,7 +181,7 @@ def triaxial(frame: PolhodeFrame, q0=None):
     >>> fr = polhode_frame(np.array([[1.0, 2.0, 3.0]]), np.array([[0.3, 0.2, 1.0]]),
     ...                    np.array([False]))
     >>> round(float(triaxial(fr).period[0]), 10)
-    6.4489859604
+    20.2049347381
     """
     hi = lambda p: p[0]  # noqa: E731
     e12, e13, e23, P1, P3, G = (hi(x) for x in (frame.e12, frame.e13, frame.e23, frame.P1, frame.P3, frame.G))
@@ -213,9 +212,7 @@ def triaxial(frame: PolhodeFrame, q0=None):
     nu_psi = dd_div(*rate, *_TWO_PI)
     slope = s * np.where(circ, 2.0 * np.pi, np.pi * v1 / Kp)
 
-    cols = np.zeros((3, 3, s.size))  # cols[j] = body vector of working axis j
-    for j in range(3):
-        np.put_along_axis(cols[j].T, frame.perm[:, j : j + 1], frame.sign[:, j : j + 1], axis=1)
+    cols = working_axes(frame)
     period = 1.0 / nu[0]
     const = Triaxial(
         circular=circ, nu=frequency(*nu), frac0=frac0, q=lat.q, c_sn=lat.c_sn, c_cn=lat.c_cn,
@@ -229,20 +226,26 @@ def triaxial(frame: PolhodeFrame, q0=None):
     )
     if q0 is None:
         return const
-    # e^{isΦ(τ₀)/2} from the kernel itself at t = 0, so that Δψ(0) = 0 to round-off.
-    _, w0 = _phase_factor(const, np.zeros_like(s))
-    const = const._replace(k0=(w0[0], -w0[1]))
-    pmat = np.moveaxis(cols, -1, 0)  # (N, 3, 3): row j is working axis j in body components
-    pq = Rotation.from_matrix(pmat).as_quat()
-    q_rw = (Rotation.from_quat(q0) * Rotation.from_quat(pq).inv()).as_quat()
-    s0 = shortest_arc(frame.mw)
-    s0[:, :3] *= -1.0
-    q_0 = qmul(tuple(q_rw.T), tuple(s0.T))
-    ez = (0.0, 0.0, 1.0, 0.0)
-    pqt = tuple(pq.T)
-    quat_u = np.stack(qmul(q_0, pqt))
-    quat_v = np.stack(qmul(qmul(q_0, ez), pqt))
+    # e^{−isΦ(τ₀)/2} from the kernel itself at t = 0, so that Δψ(0) = 0 to round-off.
+    k0r, k0i = np.empty_like(s), np.empty_like(s)
+    for kind in (True, False):
+        sel = circ == kind
+        if sel.any():
+            sub = type(const)(*(_select(f, sel) for f in const))
+            _, (wr, wi) = _phase_factor(sub, np.zeros(int(sel.sum())))
+            k0r[sel], k0i[sel] = wr, -wi
+    const = const._replace(k0=(k0r, k0i))
+    quat_u, quat_v = attitude_anchor(frame, cols, q0)
     return const._replace(quat_u=quat_u, quat_v=quat_v)
+
+
+def _select(field, sel):
+    """Elements ``sel`` (last axis) of a constant field (arrays, tuples, Frequency)."""
+    if isinstance(field, tuple):
+        return type(field)(*(_select(x, sel) for x in field)) if hasattr(field, "_fields") else tuple(
+            _select(x, sel) for x in field
+        )
+    return np.asarray(field)[..., sel]
 
 
 def _polhode(c: Triaxial, t, tt):
