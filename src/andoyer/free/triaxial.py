@@ -48,6 +48,7 @@ from scipy import special as sc
 from andoyer.free.phase import Frequency, cycles, frequency
 from andoyer.free.quaternion import qmul
 from andoyer.free.regime import PolhodeFrame, attitude_anchor, working_axes
+from andoyer.special.agm import ellippi_dd
 from andoyer.special.compensated import PI_DD, dd_add, dd_div, dd_mul, dd_sqrt, split
 from andoyer.special.theta import lattice
 
@@ -131,7 +132,11 @@ def _initial_tau(mw, a1, a2, a3, s, K):
 
 
 def _theta_circular(q, v1, K):
-    """``ϑ₁(·|q²)`` series coefficients and ``⟨f⟩ − 1/(1+c)`` per ``ρ`` (circular case)."""
+    """Coefficients of ``ϑ₁(x + iy₀ | q²)`` scaled by ``e^{−y₀} q^{−1/2}/2`` (circular case).
+
+    ``e^{2y₀} = η/q²`` with ``η = e^{−πv₁/K}``; the ``n``-th terms are
+    ``(−1)ⁿ(q^{2n²}ηⁿ ± q^{2(n+1)²}η^{−n−1})``, three of them reach ``q^{18} < 10⁻²⁴``.
+    """
     qt = q * q
     eta = np.exp(-np.pi * v1 / K)
     wa = np.zeros((6, q.size))
@@ -142,13 +147,14 @@ def _theta_circular(q, v1, K):
         sgn = (-1.0) ** n
         wa[n] = sgn * (head + tail)
         wb[n] = sgn * (head - tail)
-    x = np.pi * v1 / K
-    r_minus_1 = (4.0 * qt * np.sinh(x) - 8.0 * qt**4 * np.sinh(2 * x) + 12.0 * qt**9 * np.sinh(3 * x)) / wb.sum(0)
-    return wa, wb, (np.pi / K) * r_minus_1
+    return wa, wb
 
 
-def _theta_hyperbolic(q, v1, K, Kp):
-    """``ϑ₁(·|√q')`` series coefficients and ``⟨f⟩ − 1/(1+c)`` per ``ρ`` (hyperbolic case)."""
+def _theta_hyperbolic(q, v1, Kp):
+    """Coefficients of ``ϑ₁(a + ib | q*)``, ``q* = √q'``, ``a = −πv₀/(4K')`` (hyperbolic case).
+
+    Six terms reach ``q*^{25} < 10⁻¹⁷`` at the worst nome ``q* = e^{−π/2}`` (``m = 1/2``).
+    """
     qs = np.sqrt(q)
     a = -0.5 * np.pi + 0.25 * np.pi * v1 / Kp
     wa = np.zeros((6, q.size))
@@ -157,8 +163,26 @@ def _theta_hyperbolic(q, v1, K, Kp):
         amp = (-1.0) ** n * qs ** (n * n + n)
         wa[n] = amp * np.sin((2 * n + 1) * a)
         wb[n] = amp * np.cos((2 * n + 1) * a)
-    dlog = (np.arange(1, 12, 2)[:, None] * wb).sum(0) / wa.sum(0)
-    return wa, wb, -np.pi * v1 / (2.0 * K * Kp) - (np.pi / (2.0 * Kp)) * dlog
+    return wa, wb
+
+
+def _secular_rate(frame: PolhodeFrame, m_dd, mc_dd, K_dd):
+    """``Ω_ψ = G w₃ + s G e₁₃ [Π(−κ²|m) − cπ/(2√(1+κ²))]/K`` in double-double.
+
+    This is ``G w₃ + (sP₁/G)⟨1/(1 + c dn)⟩`` with ``⟨·⟩`` written through the complete
+    integral of the third kind (``(sP₁/G)/(K(1 − c²)) = sGe₁₃/K``).  Both terms can be
+    large and of opposite signs (a LAM body turns about its polhode axis far more
+    slowly than ``G/I₃``), so the mean is needed beyond double precision: at 100 periods
+    ``Ω_ψ t`` may be 10⁶ rad.  Π comes from the AGM (DLMF 19.8.6) in double-double.
+    """
+    kap2 = dd_div(*frame.e12, *frame.e23)
+    pi3 = ellippi_dd(-kap2[0], -kap2[1], *mc_dd)
+    c = dd_div(*dd_sqrt(*dd_div(*frame.P3, *frame.e13)), *frame.G)
+    root = dd_sqrt(*dd_div(*frame.e23, *frame.e13))  # 1/√(1 + κ²)
+    t = dd_mul(*dd_mul(*c, *root), 0.5 * PI_DD[0], 0.5 * PI_DD[1])
+    bracket = dd_add(*pi3, -t[0], -t[1])
+    corr = dd_div(*dd_mul(*dd_mul(*frame.G, *frame.e13), *bracket), *K_dd)
+    return dd_add(*dd_mul(*frame.G, *frame.w3), frame.s * corr[0], frame.s * corr[1])
 
 
 def triaxial(frame: PolhodeFrame, q0=None):
@@ -190,7 +214,8 @@ def triaxial(frame: PolhodeFrame, q0=None):
     a2 = np.sqrt(P1 / e23)
     a3 = np.sqrt(P3 / e13)
     den = dd_mul(*frame.e23, *frame.P3)
-    m = dd_div(*dd_mul(*frame.e12, *frame.P1), *den)[0]
+    m_dd = dd_div(*dd_mul(*frame.e12, *frame.P1), *den)
+    m = m_dd[0]
     mc_hi, mc_lo = dd_div(*dd_mul(*frame.e13, *frame.P2), *den)
     lat = lattice(m, mc_hi, mc_lo)
     K, Kp = lat.K_hi, lat.Kp
@@ -200,15 +225,12 @@ def triaxial(frame: PolhodeFrame, q0=None):
 
     kappa2 = e12 / e23
     v1 = sc.elliprf(kappa2, kappa2 + m, 1.0 + kappa2)
-    c = a3 / G
-    rho = G * a3 / (a1 * a1 * np.sqrt(1.0 + kappa2))
     circ = lat.circular
-    wa, wb, mean_c = _theta_circular(lat.q, v1, K)
-    wa_h, wb_h, mean_h = _theta_hyperbolic(lat.q, v1, K, Kp)
+    wa, wb = _theta_circular(lat.q, v1, K)
+    wa_h, wb_h = _theta_hyperbolic(lat.q, v1, Kp)
     wa = np.where(circ, wa, wa_h)
     wb = np.where(circ, wb, wb_h) * s
-    mean_f = 1.0 / (1.0 + c) + rho * np.where(circ, mean_c, mean_h)
-    rate = dd_add(*dd_mul(*frame.G, *frame.w3), *dd_mul(*dd_div(*frame.P1, *frame.G), s * mean_f, 0.0))
+    rate = _secular_rate(frame, m_dd, (mc_hi, mc_lo), (lat.K_hi, lat.K_lo))
     nu_psi = dd_div(*rate, *_TWO_PI)
     slope = s * np.where(circ, 2.0 * np.pi, np.pi * v1 / Kp)
 
