@@ -1,10 +1,13 @@
 """Independent high-precision reference for torque-free motion: Taylor integration.
 
 The Euler equations ``dm_i/dt = c_i m_j m_k`` and the attitude kinematics
-``dq/dt = ½ q ⊗ (m/I, 0)`` are integrated by the Taylor-series method with about 38
-significant digits: fixed-point arithmetic on Python integers (2⁻¹³⁰ resolution) after
-scaling ``|m| = 1`` and the time by ``G max(1/I)``, series of order 36, Jorba–Zou step
-size.  To keep the fast spin of near-axisymmetric bodies (the Earth makes 30 000 turns
+``dq/dt = ½ q ⊗ (m/I, 0)`` are integrated by the Taylor-series method: fixed-point
+arithmetic on Python integers (2⁻¹⁹², 57 digits) after scaling ``|m| = 1`` and the time
+by ``G max(1/I)``; series of order 36 scaled by the step, whose size is set from the
+radius of convergence estimated on the series (truncation ~1e-41 per step; a step whose
+last two terms exceed 1e-37 is halved and redone).  The local error is below 1e-36, so
+after 10⁵ steps the solution keeps more than 30 digits (fewer only where the motion
+itself amplifies errors, e.g. 10 digits lost at 1 − k² = 1e-10).  To keep the fast spin of near-axisymmetric bodies (the Earth makes 30 000 turns
 in 100 wobble periods) out of the step size, the attitude is integrated in a frame
 turning uniformly about the fixed inertial angular momentum ``n̂`` at the rate
 ``Ω₀ = 2T/G``: ``q = exp(Ω₀ t n̂/2) ⊗ x`` with

@@ -83,7 +83,7 @@ class FreeMotion:
 
     Parameters
     ----------
-    I : array_like, shape (..., 3)
+    moments : array_like, shape (..., 3)
         Principal moments along body axes b1, b2, b3 (any order, positive, triangle
         inequality).
     m0 : array_like, shape (..., 3)
@@ -111,24 +111,24 @@ class FreeMotion:
     (2, 4)
     """
 
-    def __init__(self, I, m0, q0=None):
-        I, m0 = check_inputs(I, m0)
-        shape = I.shape[:-1]
+    def __init__(self, moments, m0, q0=None):
+        moments, m0 = check_inputs(moments, m0)
+        shape = moments.shape[:-1]
         if q0 is not None:
             q0 = np.asarray(q0, dtype=np.float64)
             if q0.ndim == 0 or q0.shape[-1] != 4:
                 raise ValueError(f"expected q0 with shape (..., 4), got shape {q0.shape}")
             norm = np.sqrt(np.sum(q0 * q0, axis=-1, keepdims=True))
             if not np.all(np.isfinite(q0)) or np.any(norm == 0):
-                raise ValueError("expected finite, non-zero quaternions q0, got zero or non-finite ones")
+                raise ValueError("expected finite, non-zero quaternions q0, got zero or non-finite")
             q0 = q0 / norm
             shape = np.broadcast_shapes(shape, q0.shape[:-1])
             q0 = np.broadcast_to(q0, (*shape, 4)).reshape(-1, 4)
         self.shape = shape
-        I = np.broadcast_to(I, (*shape, 3)).reshape(-1, 3)
+        moments = np.broadcast_to(moments, (*shape, 3)).reshape(-1, 3)
         m0 = np.broadcast_to(m0, (*shape, 3)).reshape(-1, 3)
-        n = I.shape[0]
-        regime = classify(I, m0)
+        n = moments.shape[0]
+        regime = classify(moments, m0)
         self.regime = regime.reshape(shape)
         self._has_attitude = q0 is not None
         self._n = n
@@ -145,7 +145,7 @@ class FreeMotion:
 
         if np.any(tri):
             idx = np.nonzero(tri)[0]
-            frame = polhode_frame(I[idx], m0[idx], regime[idx] == Regime.LAM)
+            frame = polhode_frame(moments[idx], m0[idx], regime[idx] == Regime.LAM)
             const = _tri.triaxial(frame, None if q0 is None else q0[idx])
             period[idx] = const.period
             rate[idx] = const.precession_rate
@@ -155,21 +155,21 @@ class FreeMotion:
                     self._groups.append((_tri.evaluate, idx[sel], _subset(const, sel)))
         if np.any(sep):
             idx = np.nonzero(sep)[0]
-            frame = polhode_frame(I[idx], m0[idx], np.zeros(idx.size, dtype=bool))
+            frame = polhode_frame(moments[idx], m0[idx], np.zeros(idx.size, dtype=bool))
             const = _sep.separatrix(frame, None if q0 is None else q0[idx])
             period[idx] = np.inf
             rate[idx] = 2.0 * np.pi * const.spin.hi
             self._groups.append((_sep.evaluate, idx, const))
         if np.any(uni):
             idx = np.nonzero(uni)[0]
-            axis, I_s, I_t = _uniform_axes(I[idx], m0[idx], regime[idx])
+            axis, I_s, I_t = _uniform_axes(moments[idx], m0[idx], regime[idx])
             const = _uni.uniform(m0[idx], axis, I_s, I_t, None if q0 is None else q0[idx])
             period[idx] = const.period
             rate[idx] = const.precession_rate
             lim = spin[idx] & (regime[idx] != Regime.SEPARATRIX)
             if np.any(lim):  # steady spin about the polhode axis: the limit of nearby polhodes
                 j = idx[lim]
-                frame = polhode_frame(I[j], m0[j], regime[j] == Regime.LAM)
+                frame = polhode_frame(moments[j], m0[j], regime[j] == Regime.LAM)
                 e13, e23, G, w3 = frame.e13[0], frame.e23[0], frame.G[0], frame.w3[0]
                 om = G * np.sqrt(e13 * e23)
                 period[j] = 2.0 * np.pi / om
@@ -255,7 +255,7 @@ class FreeMotion:
         bs = (1,) * (nd - len(self.shape)) + self.shape
         ts = (1,) * (nd - t.ndim) + t.shape
         split_at = next(
-            (k for k in range(nd + 1) if all(x == 1 for x in bs[k:]) and all(x == 1 for x in ts[:k])),
+            (k for k in range(nd + 1) if set(bs[k:]) <= {1} and set(ts[:k]) <= {1}),
             None,
         )
         if split_at is not None:  # states along rows, times along columns
@@ -276,54 +276,55 @@ class FreeMotion:
                 where[members] = np.arange(members.size)
                 rows = np.nonzero(where[body_rows] >= 0)[0]
                 pos = where[body_rows[rows]]
-            self._run(kernel, const, rows, pos, t2, m_out, q_out, attitude)
+            _run((kernel, const), rows, pos, t2, (m_out, q_out))
         m_out = m_out.reshape(*out_shape, 3)
         return m_out, (None if q_out is None else q_out.reshape(*out_shape, 4))
 
-    @staticmethod
-    def _run(kernel, const, rows, pos, t2, m_out, q_out, attitude):
-        ncols = t2.shape[1]
-        cstep = min(ncols, _CHUNK)
-        rstep = max(1, _CHUNK // cstep)
-        per_row_t = t2.shape[0] > 1
-        for r0 in range(0, rows.size, rstep):
-            r_idx = rows[r0 : r0 + rstep]
-            c_rows = _take(const, pos[r0 : r0 + rstep])
-            for c0 in range(0, ncols, cstep):
-                tc = t2[r_idx, c0 : c0 + cstep] if per_row_t else t2[:, c0 : c0 + cstep]
-                m, q = kernel(c_rows, tc, attitude)
-                block = m_out[r_idx, c0 : c0 + cstep]
-                for k in range(3):
-                    block[..., k] = m[k]
-                m_out[r_idx, c0 : c0 + cstep] = block
-                if attitude:
-                    qblock = q_out[r_idx, c0 : c0 + cstep]
-                    for k in range(4):
-                        qblock[..., k] = q[k]
-                    q_out[r_idx, c0 : c0 + cstep] = qblock
+
+def _run(group, rows, pos, t2, outs):
+    """Evaluate one kernel on output rows ``rows`` (constants at ``pos``), block by block."""
+    kernel, const = group
+    m_out, q_out = outs
+    ncols = t2.shape[1]
+    cstep = min(ncols, _CHUNK)
+    rstep = max(1, _CHUNK // cstep)
+    per_row_t = t2.shape[0] > 1
+    contiguous = rows.size > 0 and rows[-1] - rows[0] == rows.size - 1
+    for r0 in range(0, rows.size, rstep):
+        r_idx = rows[r0 : r0 + rstep]
+        # a slice keeps the writes below in place; fancy indices would copy
+        r_sel = slice(r_idx[0], r_idx[-1] + 1) if contiguous else r_idx
+        c_rows = _take(const, pos[r0 : r0 + rstep])
+        for c0 in range(0, ncols, cstep):
+            cols = slice(c0, c0 + cstep)
+            tc = t2[r_sel, cols] if per_row_t else t2[:, cols]
+            m, q = kernel(c_rows, tc, q_out is not None)
+            m_out[r_sel, cols] = np.stack(m, axis=-1)
+            if q_out is not None:
+                q_out[r_sel, cols] = np.stack(q, axis=-1)
 
 
-def _uniform_axes(I, m0, regime):
+def _uniform_axes(moments, m0, regime):
     """Axis, axial and transverse moments of the states that move without elliptic functions."""
-    order = np.argsort(I, axis=-1, kind="stable")
-    rows = np.arange(I.shape[0])
-    s = I[rows[:, None], order]
+    order = np.argsort(moments, axis=-1, kind="stable")
+    rows = np.arange(moments.shape[0])
+    s = moments[rows[:, None], order]
     # axisymmetric: the distinct moment; steady spin: the spin axis; sphere/rest: any axis
     distinct = np.where(s[:, 0] == s[:, 1], order[:, 2], order[:, 0])
     spin_axis = np.argmax(np.abs(m0), axis=-1)
     axis = np.where(regime == Regime.AXISYMMETRIC, distinct, spin_axis)
-    I_s = I[rows, axis]
+    I_s = moments[rows, axis]
     transverse = np.where(s[:, 0] == s[:, 1], s[:, 0], s[:, 2])
     I_t = np.where(regime == Regime.AXISYMMETRIC, transverse, I_s)
     return axis, I_s, I_t
 
 
-def periods(I, m0):
+def periods(moments, m0):
     """Period of the body angular momentum and precession of the attitude per period.
 
     Parameters
     ----------
-    I : array_like, shape (..., 3)
+    moments : array_like, shape (..., 3)
         Principal moments.
     m0 : array_like, shape (..., 3)
         Body angular momentum.
@@ -338,15 +339,15 @@ def periods(I, m0):
     >>> round(float(p.period), 10)
     20.2049347381
     """
-    return FreeMotion(I, m0).periods
+    return FreeMotion(moments, m0).periods
 
 
-def momentum(I, m0, t):
+def momentum(moments, m0, t):
     """Body angular momentum of torque-free motion at times ``t`` (see :class:`FreeMotion`).
 
     Parameters
     ----------
-    I, m0 : array_like, shape (..., 3)
+    moments, m0 : array_like, shape (..., 3)
         Principal moments and initial body angular momentum.
     t : array_like
         Times since the initial state, broadcast against the states.
@@ -360,15 +361,15 @@ def momentum(I, m0, t):
     >>> momentum([1.0, 2.0, 3.0], [0.3, 0.2, 1.0], 0.0).tolist()
     [0.3, 0.2, 1.0]
     """
-    return FreeMotion(I, m0).momentum(t)
+    return FreeMotion(moments, m0).momentum(t)
 
 
-def attitude(I, m0, q0, t):
+def attitude(moments, m0, q0, t):
     """Attitude quaternions of torque-free motion at times ``t`` (see :class:`FreeMotion`).
 
     Parameters
     ----------
-    I, m0 : array_like, shape (..., 3)
+    moments, m0 : array_like, shape (..., 3)
         Principal moments and initial body angular momentum.
     q0 : array_like, shape (..., 4)
         Initial attitude (scalar last, body → reference).
@@ -384,15 +385,15 @@ def attitude(I, m0, q0, t):
     >>> attitude([1.0, 2.0, 3.0], [0.3, 0.2, 1.0], [0.0, 0.0, 0.0, 1.0], 0.0).round(15).tolist()
     [0.0, 0.0, 0.0, 1.0]
     """
-    return FreeMotion(I, m0, q0).attitude(t)
+    return FreeMotion(moments, m0, q0).attitude(t)
 
 
-def propagate(I, m0, q0, t):
+def propagate(moments, m0, q0, t):
     """Body angular momentum and attitude of torque-free motion at times ``t``.
 
     Parameters
     ----------
-    I, m0 : array_like, shape (..., 3)
+    moments, m0 : array_like, shape (..., 3)
         Principal moments and initial body angular momentum.
     q0 : array_like, shape (..., 4)
         Initial attitude (scalar last, body → reference).
@@ -410,4 +411,4 @@ def propagate(I, m0, q0, t):
     >>> m.shape, q.shape
     ((2, 3), (2, 4))
     """
-    return FreeMotion(I, m0, q0).propagate(t)
+    return FreeMotion(moments, m0, q0).propagate(t)

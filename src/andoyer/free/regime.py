@@ -69,12 +69,12 @@ class Regime(IntEnum):
     """Zero angular momentum: the body does not move."""
 
 
-def check_inputs(I, m0):
+def check_inputs(moments, m0):
     """Validate moments and body angular momenta and broadcast them to a common shape.
 
     Parameters
     ----------
-    I : array_like, shape (..., 3)
+    moments : array_like, shape (..., 3)
         Principal moments along body axes b1, b2, b3: positive, finite, any order,
         satisfying the triangle inequality ``Iᵢ ≤ Iⱼ + Iₖ`` (to 4 eps).
     m0 : array_like, shape (..., 3)
@@ -82,7 +82,7 @@ def check_inputs(I, m0):
 
     Returns
     -------
-    I, m0 : ndarray, shape (..., 3)
+    moments, m0 : ndarray, shape (..., 3)
         Float64 arrays broadcast against each other.
 
     Raises
@@ -93,40 +93,41 @@ def check_inputs(I, m0):
 
     Examples
     --------
-    >>> I, m = check_inputs([1.0, 2.0, 2.5], [[0.1, 0.2, 1.0], [1.0, 0.0, 0.0]])
-    >>> I.shape, m.shape
+    >>> moments, m = check_inputs([1.0, 2.0, 2.5], [[0.1, 0.2, 1.0], [1.0, 0.0, 0.0]])
+    >>> moments.shape, m.shape
     ((2, 3), (2, 3))
     """
-    I = np.asarray(I, dtype=np.float64)
+    moments = np.asarray(moments, dtype=np.float64)
     m0 = np.asarray(m0, dtype=np.float64)
-    for name, a in (("I", I), ("m0", m0)):
+    for name, a in (("moments", moments), ("m0", m0)):
         if a.ndim == 0 or a.shape[-1] != 3:
             raise ValueError(f"expected {name} with shape (..., 3), got shape {a.shape}")
         if not np.all(np.isfinite(a)):
             raise ValueError(f"expected finite {name}, got {a[~np.isfinite(a)].ravel()[:3]}")
-    if np.any(I <= 0):
-        raise ValueError(f"expected positive moments of inertia, got {I[I <= 0].ravel()[:3]}")
-    s = np.sort(I, axis=-1)
+    if np.any(moments <= 0):
+        bad = moments[moments <= 0].ravel()[:3]
+        raise ValueError(f"expected positive moments of inertia, got {bad}")
+    s = np.sort(moments, axis=-1)
     bad = s[..., 2] > (s[..., 0] + s[..., 1]) * (1.0 + _TRIANGLE_TOL)
     if np.any(bad):
         raise ValueError(
             f"expected moments satisfying the triangle inequality A + B >= C, got {s[bad][:3]}"
         )
-    shape = np.broadcast_shapes(I.shape, m0.shape)
-    return np.broadcast_to(I, shape), np.broadcast_to(m0, shape)
+    shape = np.broadcast_shapes(moments.shape, m0.shape)
+    return np.broadcast_to(moments, shape), np.broadcast_to(m0, shape)
 
 
-def _sorted_axes(I):
+def _sorted_axes(moments):
     """Indices of the axes of minimum, middle and maximum moment (stable for ties)."""
-    order = np.argsort(I, axis=-1, kind="stable")
+    order = np.argsort(moments, axis=-1, kind="stable")
     return order[..., 0], order[..., 1], order[..., 2]
 
 
-def _separatrix_sign(I, m0):
+def _separatrix_sign(moments, m0):
     """Sign of ``P₂ = G²/B − D`` in double-double (``+1`` SAM, ``−1`` LAM, ``0`` separatrix)."""
-    ia, ib, ic = _sorted_axes(I)
+    ia, ib, ic = _sorted_axes(moments)
     take = lambda a, i: np.take_along_axis(a, i[..., None], axis=-1)[..., 0]  # noqa: E731
-    A, B, C = take(I, ia), take(I, ib), take(I, ic)
+    A, B, C = take(moments, ia), take(moments, ib), take(moments, ic)
     ma, mc = take(m0, ia), take(m0, ic)
     # m_C² (C − B)/(B C) − m_A² (B − A)/(A B), times A B C > 0: same sign.
     t1 = dd_mul(*two_prod(mc, mc), *dd_mul(*two_sum(C, -B), A, 0.0))
@@ -135,12 +136,12 @@ def _separatrix_sign(I, m0):
     return np.sign(hi)
 
 
-def classify(I, m0):
+def classify(moments, m0):
     """Regime of the torque-free motion of each body and state.
 
     Parameters
     ----------
-    I : array_like, shape (..., 3)
+    moments : array_like, shape (..., 3)
         Principal moments (any order, positive, triangle inequality).
     m0 : array_like, shape (..., 3)
         Body-frame angular momentum.
@@ -154,18 +155,19 @@ def classify(I, m0):
 
     Examples
     --------
-    >>> I = [1.0, 2.0, 3.0]
-    >>> [Regime(int(r)).name for r in classify(I, [[0.1, 0.2, 1.0], [1.0, 0.2, 0.1],
+    >>> moments = [1.0, 2.0, 3.0]
+    >>> [Regime(int(r)).name for r in classify(moments, [[0.1, 0.2, 1.0], [1.0, 0.2, 0.1],
     ...                                              [0.0, 1.0, 0.0]])]
     ['SAM', 'LAM', 'SEPARATRIX']
     >>> Regime(int(classify([2.0, 2.0, 3.0], [0.3, 0.0, 1.0]))).name
     'AXISYMMETRIC'
     """
-    I, m0 = check_inputs(I, m0)
-    s = np.sort(I, axis=-1)
-    sign = _separatrix_sign(I, m0)
+    moments, m0 = check_inputs(moments, m0)
+    s = np.sort(moments, axis=-1)
+    sign = _separatrix_sign(moments, m0)
     regime = np.where(sign > 0, Regime.SAM, np.where(sign < 0, Regime.LAM, Regime.SEPARATRIX))
-    regime = np.where((s[..., 0] == s[..., 1]) | (s[..., 1] == s[..., 2]), Regime.AXISYMMETRIC, regime)
+    axisymmetric = (s[..., 0] == s[..., 1]) | (s[..., 1] == s[..., 2])
+    regime = np.where(axisymmetric, Regime.AXISYMMETRIC, regime)
     regime = np.where(s[..., 0] == s[..., 2], Regime.SPHERE, regime)
     regime = np.where(np.all(m0 == 0, axis=-1), Regime.REST, regime)
     return regime.astype(np.int8)
@@ -211,12 +213,12 @@ def _inv_diff(s, Ii, Ij):
     return dd_div(s * dh, s * dl, ph, pl)
 
 
-def polhode_frame(I, m0, lam):
+def polhode_frame(moments, m0, lam):
     """Working frame and double-double invariants of triaxial states.
 
     Parameters
     ----------
-    I, m0 : ndarray, shape (N, 3)
+    moments, m0 : ndarray, shape (N, 3)
         Moments (strictly triaxial) and body angular momenta.
     lam : ndarray of bool, shape (N,)
         True for LAM states (polhode around ``A``), False for SAM and separatrix (``C``).
@@ -232,7 +234,7 @@ def polhode_frame(I, m0, lam):
     >>> fr.perm.tolist(), fr.mw.tolist()
     ([[1, 2, 0]], [[0.1, -0.2, 1.0]])
     """
-    ia, ib, ic = _sorted_axes(I)
+    ia, ib, ic = _sorted_axes(moments)
     p3 = np.where(lam, ia, ic)
     p1 = np.where(lam, ic, ia)
     perm = np.stack([p1, ib, p3], axis=-1)
@@ -240,7 +242,7 @@ def polhode_frame(I, m0, lam):
     m3 = np.take_along_axis(m0, p3[:, None], axis=-1)[:, 0]
     s3 = np.where(m3 < 0, -1.0, 1.0)
     sign = np.stack([np.ones_like(s3), parity * s3, s3], axis=-1)
-    Iw = np.take_along_axis(I, perm, axis=-1)
+    Iw = np.take_along_axis(moments, perm, axis=-1)
     mw = np.take_along_axis(m0, perm, axis=-1) * sign
     s = np.where(lam, -1.0, 1.0)
     I1, I2, I3 = Iw[:, 0], Iw[:, 1], Iw[:, 2]

@@ -157,5 +157,5 @@ def evaluate(c: Separatrix, t, attitude=True):
     au = tuple(cz * c.quat_u[k] + sz * c.quat_v[k] for k in range(4))
     w = c.G + c.a3 * se
     inv = 1.0 / np.sqrt(2.0 * c.G * w)
-    arc = tuple((c.v_tanh[k] * th + c.v_sech[k] * se) * inv for k in range(3)) + (w * inv,)
+    arc = (*((c.v_tanh[k] * th + c.v_sech[k] * se) * inv for k in range(3)), w * inv)
     return m, qmul(au, arc)

@@ -24,7 +24,8 @@ With ``c = a₃/G`` and ``f(τ) = 1/(1 + c dn τ)``, ``Δψ = G w₃ Δt + (sP�
 
 .. math::
    \Delta\psi = \Omega_\psi \Delta t + s\,[\Phi(\tau) - \Phi(\tau_0)],\qquad
-   \Phi(\tau) = \frac{\pi\tau}{K} + 2\arg\vartheta_1\!\Big(\frac{\pi(\tau + i v_0)}{2K}\Big|q^2\Big),
+   \Phi(\tau) = \frac{\pi\tau}{K}
+      + 2\arg\vartheta_1\Big(\frac{\pi(\tau + i v_0)}{2K}\Big|q^2\Big),
    \qquad \Omega_\psi = G w_3 + \frac{s P_1}{G}\langle f\rangle .
 
 ``Φ`` is ``2K``-periodic modulo ``2π`` and only ``e^{iΦ/2}`` (up to sign) is needed, so
@@ -122,8 +123,9 @@ class Triaxial(NamedTuple):
     precession_rate: np.ndarray
 
 
-def _initial_tau(mw, a1, a2, a3, s, K):
+def _initial_tau(mw, amplitudes, s, K):
     """``τ₀ = F(am τ₀ | m)`` from the measured ``cn, sn, dn`` (Carlson, no cancellation)."""
+    a1, a2, a3 = amplitudes
     cn0 = mw[:, 0] / a1
     sn0 = mw[:, 1] / (s * a2)
     dn0 = mw[:, 2] / a3
@@ -166,7 +168,7 @@ def _theta_hyperbolic(q, v1, Kp):
     return wa, wb
 
 
-def _secular_rate(frame: PolhodeFrame, m_dd, mc_dd, K_dd):
+def _secular_rate(frame: PolhodeFrame, mc_dd, K_dd):
     """``Ω_ψ = G w₃ + s G e₁₃ [Π(−κ²|m) − cπ/(2√(1+κ²))]/K`` in double-double.
 
     This is ``G w₃ + (sP₁/G)⟨1/(1 + c dn)⟩`` with ``⟨·⟩`` written through the complete
@@ -208,20 +210,21 @@ def triaxial(frame: PolhodeFrame, q0=None):
     20.2049347381
     """
     hi = lambda p: p[0]  # noqa: E731
-    e12, e13, e23, P1, P3, G = (hi(x) for x in (frame.e12, frame.e13, frame.e23, frame.P1, frame.P3, frame.G))
+    e12, e13, e23, P1, P3, G = (
+        hi(x) for x in (frame.e12, frame.e13, frame.e23, frame.P1, frame.P3, frame.G)
+    )
     s = frame.s
     a1 = np.sqrt(P1 / e13)
     a2 = np.sqrt(P1 / e23)
     a3 = np.sqrt(P3 / e13)
     den = dd_mul(*frame.e23, *frame.P3)
-    m_dd = dd_div(*dd_mul(*frame.e12, *frame.P1), *den)
-    m = m_dd[0]
+    m = dd_div(*dd_mul(*frame.e12, *frame.P1), *den)[0]
     mc_hi, mc_lo = dd_div(*dd_mul(*frame.e13, *frame.P2), *den)
     lat = lattice(m, mc_hi, mc_lo)
     K, Kp = lat.K_hi, lat.Kp
     om = dd_sqrt(*den)
     nu = dd_div(*om, 4.0 * lat.K_hi, 4.0 * lat.K_lo)
-    frac0 = _initial_tau(frame.mw, a1, a2, a3, s, K) / (4.0 * K)
+    frac0 = _initial_tau(frame.mw, (a1, a2, a3), s, K) / (4.0 * K)
 
     kappa2 = e12 / e23
     v1 = sc.elliprf(kappa2, kappa2 + m, 1.0 + kappa2)
@@ -230,7 +233,7 @@ def triaxial(frame: PolhodeFrame, q0=None):
     wa_h, wb_h = _theta_hyperbolic(lat.q, v1, Kp)
     wa = np.where(circ, wa, wa_h)
     wb = np.where(circ, wb, wb_h) * s
-    rate = _secular_rate(frame, m_dd, (mc_hi, mc_lo), (lat.K_hi, lat.K_lo))
+    rate = _secular_rate(frame, (mc_hi, mc_lo), (lat.K_hi, lat.K_lo))
     nu_psi = dd_div(*rate, *_TWO_PI)
     slope = s * np.where(circ, 2.0 * np.pi, np.pi * v1 / Kp)
 
@@ -249,25 +252,10 @@ def triaxial(frame: PolhodeFrame, q0=None):
     if q0 is None:
         return const
     # e^{−isΦ(τ₀)/2} from the kernel itself at t = 0, so that Δψ(0) = 0 to round-off.
-    k0r, k0i = np.empty_like(s), np.empty_like(s)
-    for kind in (True, False):
-        sel = circ == kind
-        if sel.any():
-            sub = type(const)(*(_select(f, sel) for f in const))
-            _, (wr, wi) = _phase_factor(sub, np.zeros(int(sel.sum())))
-            k0r[sel], k0i[sel] = wr, -wi
-    const = const._replace(k0=(k0r, k0i))
+    _, (wr, wi) = _phase_factor(const, np.zeros_like(s))
+    const = const._replace(k0=(wr, -wi))
     quat_u, quat_v = attitude_anchor(frame, cols, q0)
     return const._replace(quat_u=quat_u, quat_v=quat_v)
-
-
-def _select(field, sel):
-    """Elements ``sel`` (last axis) of a constant field (arrays, tuples, Frequency)."""
-    if isinstance(field, tuple):
-        return type(field)(*(_select(x, sel) for x in field)) if hasattr(field, "_fields") else tuple(
-            _select(x, sel) for x in field
-        )
-    return np.asarray(field)[..., sel]
 
 
 def _polhode(c: Triaxial, t, tt):
@@ -302,8 +290,9 @@ def _sncndn_circular(c: Triaxial, fw):
     sn = c.c_sn * inv * (s1 - q2 * s3 + q6 * s5 - q12 * s7)
     cn = c.c_cn * inv * (c1 + q2 * c3 + q6 * c5 + q12 * c7)
     dn = c.c_dn * inv * (1.0 + 2.0 * (even + odd))
-    series = (c.wa[0] * s1 + c.wa[1] * s3 + c.wa[2] * s5, c.wb[0] * c1 + c.wb[1] * c3 + c.wb[2] * c5)
-    return sn, cn, dn, series
+    x = c.wa[0] * s1 + c.wa[1] * s3 + c.wa[2] * s5
+    y = c.wb[0] * c1 + c.wb[1] * c3 + c.wb[2] * c5
+    return sn, cn, dn, (x, y)
 
 
 def _sncndn_hyperbolic(c: Triaxial, fw):
@@ -341,11 +330,22 @@ def _sncndn_hyperbolic(c: Triaxial, fw):
     return sn, cn, dn, (re, np.where(fw < 0, -im, im))
 
 
+def _sncndn(c: Triaxial, fw):
+    """The series kind of the constants, or both merged when they are mixed (set-up only)."""
+    if np.all(c.circular):
+        return _sncndn_circular(c, fw)
+    if not np.any(c.circular):
+        return _sncndn_hyperbolic(c, fw)
+    a, b = _sncndn_circular(c, fw), _sncndn_hyperbolic(c, fw)
+    pick = lambda u, v: np.where(c.circular, u, v)  # noqa: E731
+    return (*(pick(u, v) for u, v in zip(a[:3], b[:3], strict=True)),
+            (pick(a[3][0], b[3][0]), pick(a[3][1], b[3][1])))
+
+
 def _phase_factor(c: Triaxial, t, tt=None):
     """Polhode quantities and ``e^{i(Δψ/2 − 2π f_ψ... )}`` before the initial correction."""
     fw, sgn = _polhode(c, t, tt)
-    circ = bool(np.all(c.circular))
-    sn, cn, dn, (x, y) = (_sncndn_circular if circ else _sncndn_hyperbolic)(c, fw)
+    sn, cn, dn, (x, y) = _sncndn(c, fw)
     beta = np.pi * cycles(c.nu_psi, t, tt) + c.slope * fw
     cb, sb = np.cos(beta), np.sin(beta)
     inv = 1.0 / np.sqrt(x * x + y * y)
@@ -385,8 +385,7 @@ def evaluate(c: Triaxial, t, attitude=True):
     tt = split(t)
     if not attitude:
         fw, sgn = _polhode(c, t, tt)
-        circ = bool(np.all(c.circular))
-        sn, cn, dn, _ = (_sncndn_circular if circ else _sncndn_hyperbolic)(c, fw)
+        sn, cn, dn, _ = _sncndn(c, fw)
         sn, cn = sgn * sn, sgn * cn
         return tuple(c.u_cn[k] * cn + c.u_sn[k] * sn + c.u_dn[k] * dn for k in range(3)), None
     (sn, cn, dn), (wr, wi) = _phase_factor(c, t, tt)
@@ -396,5 +395,5 @@ def evaluate(c: Triaxial, t, attitude=True):
     au = tuple(cz * c.quat_u[k] + sz * c.quat_v[k] for k in range(4))
     w = c.G + c.a3 * dn
     inv = 1.0 / np.sqrt(2.0 * c.G * w)
-    arc = tuple((c.v_sn[k] * sn + c.v_cn[k] * cn) * inv for k in range(3)) + (w * inv,)
+    arc = (*((c.v_sn[k] * sn + c.v_cn[k] * cn) * inv for k in range(3)), w * inv)
     return m, qmul(au, arc)

@@ -23,7 +23,16 @@ from scipy.spatial.transform import Rotation
 
 from andoyer.free.phase import Frequency, cycles, frequency
 from andoyer.free.quaternion import qmul
-from andoyer.special.compensated import PI_DD, dd_add, dd_div, dd_mul, dd_sqrt, split, two_prod, two_sum
+from andoyer.special.compensated import (
+    PI_DD,
+    dd_add,
+    dd_div,
+    dd_mul,
+    dd_sqrt,
+    split,
+    two_prod,
+    two_sum,
+)
 
 __all__ = ["Uniform", "evaluate", "uniform"]
 

@@ -1,4 +1,4 @@
-"""Elliptic integrals and Jacobi elliptic functions, accurate near ``m = 1`` and for large arguments.
+"""Elliptic integrals and Jacobi elliptic functions, accurate near ``m = 1`` and for large ``u``.
 
 Conventions: parameter ``m = k²`` throughout (never the modulus), with the complement
 ``1 − m`` accepted separately as ``mc``; the characteristic ``n`` of the third kind enters

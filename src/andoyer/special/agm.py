@@ -38,7 +38,9 @@ def agm_dd(ah, al, bh, bl):
     >>> float(hi)
     1.4567910310469068
     """
-    ah, al, bh, bl = np.broadcast_arrays(*(np.asarray(x, dtype=np.float64) for x in (ah, al, bh, bl)))
+    ah, al, bh, bl = np.broadcast_arrays(
+        *(np.asarray(x, dtype=np.float64) for x in (ah, al, bh, bl))
+    )
     zero = (ah == 0) | (bh == 0)
     ah, al = np.where(zero, 1.0, ah), np.where(zero, 0.0, al)
     bh, bl = np.where(zero, 1.0, bh), np.where(zero, 0.0, bl)
@@ -87,7 +89,7 @@ def ellipk_dd(mc_hi, mc_lo=0.0):
 
 
 def ellippi_dd(n_hi, n_lo, mc_hi, mc_lo=0.0):
-    """Complete elliptic integral of the third kind ``Π(n|m)`` in double-double, ``n < 1``.
+    r"""Complete elliptic integral of the third kind ``Π(n|m)`` in double-double, ``n < 1``.
 
     ``Π(n|m) = ∫₀^{π/2} dθ / ((1 − n sin²θ) √(1 − m sin²θ))`` by the quadratically
     convergent AGM scheme of DLMF 19.8.6–8: with the AGM sequence ``aₖ, gₖ`` of
@@ -95,8 +97,8 @@ def ellippi_dd(n_hi, n_lo, mc_hi, mc_lo=0.0):
     ``p_{k+1} = (pₖ² + aₖgₖ)/(2pₖ)``, ``εₖ = (pₖ² − aₖgₖ)/(pₖ² + aₖgₖ)``,
     ``Q_{k+1} = Q_k εₖ/2``,
 
-    .. math:: \\Pi(n|m) = \\frac{\\pi}{4 M(1, \\sqrt{m'})}
-              \\Big(2 + \\frac{n}{1 - n} \\sum_k Q_k\\Big).
+    .. math:: \Pi(n|m) = \frac{\pi}{4 M(1, \sqrt{m'})}
+              \Big(2 + \frac{n}{1 - n} \sum_k Q_k\Big).
 
     Parameters
     ----------

@@ -40,7 +40,8 @@ def _reduce_angle(phi):
     """``φ = jπ + r`` with integer ``j`` and ``|r| ≤ π/2``, subtracting ``jπ`` in double-double."""
     phi = np.asarray(phi, dtype=np.float64)
     if not np.all(np.isfinite(phi)):
-        raise ValueError(f"expected a finite amplitude phi, got {phi[~np.isfinite(phi)].ravel()[:3]}")
+        bad = phi[~np.isfinite(phi)].ravel()[:3]
+        raise ValueError(f"expected a finite amplitude phi, got {bad}")
     j = np.round(phi / PI_DD[0])
     p, e = two_prod(j, PI_DD[0])
     r = ((phi - p) - e) - j * PI_DD[1]

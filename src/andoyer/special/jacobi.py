@@ -37,7 +37,7 @@ def _reduced(v, lat, mask):
     sn, cn, dn = (np.empty(v.shape) for _ in range(3))
     for sel, fn in ((circ, sncndn_circular), (~circ, sncndn_hyperbolic)):
         if sel.any():
-            vals = fn(v[sel], *(c[sel] for c in consts))
+            vals = fn(v[sel], tuple(c[sel] for c in consts))
             sn[sel], cn[sel], dn[sel] = vals
     return sn, cn, dn
 

@@ -48,7 +48,8 @@ def parameter_pair(m, mc=None, *, lower=-np.inf, upper=1.0):
     """
     m = np.asarray(m, dtype=np.float64)
     if not np.all(np.isfinite(m)):
-        raise ValueError(f"expected a finite parameter m, got {m[~np.isfinite(m)].ravel()[:3]}")
+        bad = m[~np.isfinite(m)].ravel()[:3]
+        raise ValueError(f"expected a finite parameter m, got {bad}")
     if np.any((m < lower) | (m > upper)):
         bad = m[(m < lower) | (m > upper)].ravel()[:3]
         raise ValueError(f"expected the parameter m in [{lower}, {upper}], got {bad}")
@@ -59,6 +60,7 @@ def parameter_pair(m, mc=None, *, lower=-np.inf, upper=1.0):
     off = np.abs((m - 1.0) + mc) > _TOL * np.maximum(1.0, np.abs(m))
     if np.any(off | (mc < 1.0 - upper)):
         raise ValueError(
-            f"expected mc = 1 - m (to 8 eps), got m = {m[off].ravel()[:3]}, mc = {mc[off].ravel()[:3]}"
+            f"expected mc = 1 - m (to 8 eps), got m = {m[off].ravel()[:3]}, "
+            f"mc = {mc[off].ravel()[:3]}"
         )
     return m, mc

@@ -7,9 +7,9 @@ precision.  Two series cover all ``0 ≤ m ≤ 1``:
 * *circular* (``m ≤ 1/2``): the nome ``q = exp(−πK'/K)`` and ``x = πu/(2K)``,
 
   .. math::
-     \operatorname{sn} u = \frac{\vartheta_3(0)\,\vartheta_1(x)}{\vartheta_2(0)\,\vartheta_4(x)},\quad
-     \operatorname{cn} u = \frac{\vartheta_4(0)\,\vartheta_2(x)}{\vartheta_2(0)\,\vartheta_4(x)},\quad
-     \operatorname{dn} u = \frac{\vartheta_4(0)\,\vartheta_3(x)}{\vartheta_3(0)\,\vartheta_4(x)}
+     \operatorname{sn} u = \frac{\vartheta_3(0)\vartheta_1(x)}{\vartheta_2(0)\vartheta_4(x)},\
+     \operatorname{cn} u = \frac{\vartheta_4(0)\vartheta_2(x)}{\vartheta_2(0)\vartheta_4(x)},\
+     \operatorname{dn} u = \frac{\vartheta_4(0)\vartheta_3(x)}{\vartheta_3(0)\vartheta_4(x)}
      \quad\text{(DLMF 22.2.4–6)};
 
 * *hyperbolic* (``m > 1/2``): Jacobi's imaginary transformation (DLMF 22.6.12)
@@ -19,7 +19,7 @@ precision.  Two series cover all ``0 ≤ m ≤ 1``:
   ``e^{−y}`` so that no term overflows even for ``1 − m`` down to 1e-300.
 
 The nomes come from Jacobi's series ``q = ε + 2ε⁵ + 15ε⁹ + 150ε¹³ + 1707ε¹⁷ + 20910ε²¹``
-with ``ε = (1 − √k')/(2(1 + √k'))`` (DLMF 20.9.? / A&S 17.3.21), written as
+with ``ε = (1 − √k')/(2(1 + √k'))`` (A&S 17.3.21), written as
 ``ε = m / (2(1 + k')(1 + √k')²)`` so that it keeps full relative precision for small ``m``.
 """
 
@@ -31,7 +31,7 @@ import numpy as np
 
 from andoyer.special.agm import ellipk_dd
 
-__all__ = ["ThetaLattice", "lattice", "sncndn_circular", "sncndn_hyperbolic", "sncndn_half"]
+__all__ = ["ThetaLattice", "lattice", "sncndn_circular", "sncndn_half", "sncndn_hyperbolic"]
 
 
 class ThetaLattice(NamedTuple):
@@ -117,15 +117,16 @@ def lattice(m, mc, mc_lo=0.0):
     return ThetaLattice(circular, K_hi, K_lo, Kp, q, scale, c_sn, c_cn, c_dn, np.sqrt(mc))
 
 
-def sncndn_circular(u, q, scale, c_sn, c_cn, c_dn):
+def sncndn_circular(u, consts):
     """``sn, cn, dn`` by the circular theta series (``m ≤ 1/2``, ``|u| ≤ K``).
 
     Parameters
     ----------
     u : array_like
         Argument, ``|u| ≤ K`` (larger ``|u|`` converges too but loses the error bound).
-    q, scale, c_sn, c_cn, c_dn : array_like
-        Fields of :class:`ThetaLattice`, broadcast against ``u``.
+    consts : tuple of array_like
+        ``(q, scale, c_sn, c_cn, c_dn)`` from :class:`ThetaLattice` (``lat[4:9]``),
+        broadcast against ``u``.
 
     Returns
     -------
@@ -134,9 +135,10 @@ def sncndn_circular(u, q, scale, c_sn, c_cn, c_dn):
     Examples
     --------
     >>> lat = lattice(0.3, 0.7)
-    >>> [round(float(f), 12) for f in sncndn_circular(0.8, *lat[4:9])]
+    >>> [round(float(f), 12) for f in sncndn_circular(0.8, lat[4:9])]
     [0.701566896038, 0.712603599754, 0.923223248795]
     """
+    q, scale, c_sn, c_cn, c_dn = consts
     x = np.multiply(u, scale)
     s1 = np.sin(x)
     c1 = np.cos(x)
@@ -165,15 +167,16 @@ def sncndn_circular(u, q, scale, c_sn, c_cn, c_dn):
     return c_sn * num1 * inv, c_cn * num2 * inv, c_dn * th3 * inv
 
 
-def sncndn_hyperbolic(u, q, scale, c_sn, c_cn, c_dn, *, relative=True):
+def sncndn_hyperbolic(u, consts, *, relative=True):
     """``sn, cn, dn`` by the hyperbolic theta series (``m > 1/2``, ``|u| ≤ K``).
 
     Parameters
     ----------
     u : array_like
         Argument, ``|u| ≤ K``.
-    q, scale, c_sn, c_cn, c_dn : array_like
-        Fields of :class:`ThetaLattice` (``q`` is the complementary nome ``q'``).
+    consts : tuple of array_like
+        ``(q, scale, c_sn, c_cn, c_dn)`` from :class:`ThetaLattice` (``q`` is the
+        complementary nome ``q'``).
     relative : bool, optional
         Keep relative precision of ``sn`` for small ``u`` (one extra ``expm1``); without it
         the error is bounded in absolute terms only, which is what a unit vector needs.
@@ -185,9 +188,10 @@ def sncndn_hyperbolic(u, q, scale, c_sn, c_cn, c_dn, *, relative=True):
     Examples
     --------
     >>> lat = lattice(0.9, 0.1)
-    >>> [round(float(f), 12) for f in sncndn_hyperbolic(0.8, *lat[4:9])]
+    >>> [round(float(f), 12) for f in sncndn_hyperbolic(0.8, lat[4:9])]
     [0.669449139226, 0.742857893537, 0.772433858004]
     """
+    q, scale, c_sn, c_cn, c_dn = consts
     u = np.asarray(u, dtype=np.float64)
     y = np.abs(u) * scale
     rho = np.exp(-2.0 * y)  # e^{−2y} ∈ [q', 1] on |u| ≤ K
@@ -251,7 +255,7 @@ def sncndn_half(u, lat: ThetaLattice):
     out = [np.empty(shape) for _ in range(3)]
     for mask, fn in ((circ, sncndn_circular), (~circ, sncndn_hyperbolic)):
         if mask.any():
-            vals = fn(u[mask], *(c[mask] for c in consts))
+            vals = fn(u[mask], tuple(c[mask] for c in consts))
             for o, v in zip(out, vals, strict=True):
                 o[mask] = v
     return tuple(out)
