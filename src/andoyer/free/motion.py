@@ -22,6 +22,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from andoyer.free import constants as _const
 from andoyer.free import separatrix as _sep
 from andoyer.free import triaxial as _tri
 from andoyer.free import uniform as _uni
@@ -57,25 +58,6 @@ class FreePeriods(NamedTuple):
     period: np.ndarray
     precession: np.ndarray
     precession_rate: np.ndarray
-
-
-def _take(tree, idx):
-    """Rows ``idx`` of every array in a (nested) NamedTuple, shaped ``(r, 1)`` / ``(k, r, 1)``."""
-    if isinstance(tree, tuple):
-        return type(tree)(*(_take(x, idx) for x in tree)) if hasattr(tree, "_fields") else tuple(
-            _take(x, idx) for x in tree
-        )
-    a = np.asarray(tree)
-    return a[idx][:, None] if a.ndim == 1 else a[:, idx][:, :, None]
-
-
-def _subset(tree, idx):
-    """Elements ``idx`` (last axis) of every array of a nested NamedTuple, keeping layout."""
-    if isinstance(tree, tuple):
-        return type(tree)(*(_subset(x, idx) for x in tree)) if hasattr(tree, "_fields") else tuple(
-            _subset(x, idx) for x in tree
-        )
-    return np.asarray(tree)[..., idx]
 
 
 class FreeMotion:
@@ -152,7 +134,7 @@ class FreeMotion:
             for kind in (True, False):
                 sel = np.nonzero(const.circular == kind)[0]
                 if sel.size:
-                    self._groups.append((_tri.evaluate, idx[sel], _subset(const, sel)))
+                    self._groups.append((_tri.evaluate, idx[sel], _const.subset(const, sel)))
         if np.any(sep):
             idx = np.nonzero(sep)[0]
             frame = polhode_frame(moments[idx], m0[idx], np.zeros(idx.size, dtype=bool))
@@ -254,13 +236,18 @@ class FreeMotion:
         nd = len(out_shape)
         bs = (1,) * (nd - len(self.shape)) + self.shape
         ts = (1,) * (nd - t.ndim) + t.shape
-        split_at = next(
-            (k for k in range(nd + 1) if set(bs[k:]) <= {1} and set(ts[:k]) <= {1}),
-            None,
-        )
-        if split_at is not None:  # states along rows, times along columns
+        # states along rows, times along columns: the leading (state) axes of t are 1 or
+        # those of the states, its trailing axes are the epochs
+        def outer(k):
+            lead = zip(ts[:k], bs[:k], strict=True)
+            return set(bs[k:]) <= {1} and all(a in (1, b) for a, b in lead)
+
+        split_at = next((k for k in range(nd + 1) if outer(k)), None)
+        if split_at is not None:
             body_rows = None
-            t2 = t.reshape(1, -1)
+            lead = ts[:split_at] if set(ts[:split_at]) <= {1} else bs[:split_at]
+            t2 = np.broadcast_to(t.reshape(ts), (*lead, *ts[split_at:]))
+            t2 = t2.reshape(int(np.prod(lead)), -1)
         else:  # general broadcast: one row per output element
             body_rows = np.broadcast_to(np.arange(self._n).reshape(bs), out_shape).ravel()
             t2 = np.broadcast_to(t, out_shape).reshape(-1, 1)
@@ -294,7 +281,7 @@ def _run(group, rows, pos, t2, outs):
         r_idx = rows[r0 : r0 + rstep]
         # a slice keeps the writes below in place; fancy indices would copy
         r_sel = slice(r_idx[0], r_idx[-1] + 1) if contiguous else r_idx
-        c_rows = _take(const, pos[r0 : r0 + rstep])
+        c_rows = _const.rows(const, pos[r0 : r0 + rstep])
         for c0 in range(0, ncols, cstep):
             cols = slice(c0, c0 + cstep)
             tc = t2[r_sel, cols] if per_row_t else t2[:, cols]

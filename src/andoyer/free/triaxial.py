@@ -46,7 +46,8 @@ from typing import NamedTuple
 import numpy as np
 from scipy import special as sc
 
-from andoyer.free.phase import Frequency, cycles, frequency
+from andoyer.free.constants import rows
+from andoyer.free.phase import Frequency, cycles, frequency, sincos_cycles
 from andoyer.free.quaternion import qmul
 from andoyer.free.regime import PolhodeFrame, attitude_anchor, working_axes
 from andoyer.special.agm import ellippi_dd
@@ -75,6 +76,8 @@ class Triaxial(NamedTuple):
         ``2πK/K'``: hyperbolic variable per cycle.
     u_cn, u_sn, u_dn : ndarray, shape (3, N)
         Body-frame vectors with ``m = u_cn cn τ + u_sn sn τ + u_dn dn τ``.
+    mu_cn, mu_sn, mu_dn : ndarray, shape (3, N)
+        The same times the theta-quotient constants ``c_cn, c_sn, c_dn``.
     s : ndarray
         ``+1`` SAM, ``−1`` LAM.
     nu_psi : Frequency
@@ -82,10 +85,11 @@ class Triaxial(NamedTuple):
     wa, wb : ndarray, shape (6, N)
         Coefficients of the ``ϑ₁`` series of ``Φ`` (``wb`` carries the factor ``s``).
     slope : ndarray
-        ``s π v₁/K'`` (hyperbolic) or ``2πs`` (circular): the angle ``Φ/2`` per cycle that
-        is not in the series.
-    k0 : tuple of ndarray
-        ``e^{−isΦ(τ₀)/2}`` as ``(cos, sin)``.
+        The part of ``sΦ/2`` linear in the polhode phase that is not in the series, in
+        cycles per polhode cycle: ``s`` (circular, per unreduced cycle) or ``s v₁/(2K')``
+        (hyperbolic, per reduced cycle).
+    psi0 : ndarray
+        Offset of the ``ψ`` phase (cycles) that makes ``Δψ(0) = 0``.
     quat_u, quat_v : ndarray, shape (4, N)
         ``Q₀ ⊗ P`` and ``Q₀ ⊗ e_z ⊗ P`` (zero when no attitude was given).
     v_sn, v_cn : ndarray, shape (3, N)
@@ -107,12 +111,15 @@ class Triaxial(NamedTuple):
     u_cn: np.ndarray
     u_sn: np.ndarray
     u_dn: np.ndarray
+    mu_cn: np.ndarray
+    mu_sn: np.ndarray
+    mu_dn: np.ndarray
     s: np.ndarray
     nu_psi: Frequency
     wa: np.ndarray
     wb: np.ndarray
     slope: np.ndarray
-    k0: tuple
+    psi0: np.ndarray
     quat_u: np.ndarray
     quat_v: np.ndarray
     v_sn: np.ndarray
@@ -235,7 +242,7 @@ def triaxial(frame: PolhodeFrame, q0=None):
     wb = np.where(circ, wb, wb_h) * s
     rate = _secular_rate(frame, (mc_hi, mc_lo), (lat.K_hi, lat.K_lo))
     nu_psi = dd_div(*rate, *_TWO_PI)
-    slope = s * np.where(circ, 2.0 * np.pi, np.pi * v1 / Kp)
+    slope = s * np.where(circ, 1.0, 0.5 * v1 / Kp)
 
     cols = working_axes(frame)
     period = 1.0 / nu[0]
@@ -243,114 +250,147 @@ def triaxial(frame: PolhodeFrame, q0=None):
         circular=circ, nu=frequency(*nu), frac0=frac0, q=lat.q, c_sn=lat.c_sn, c_cn=lat.c_cn,
         c_dn=lat.c_dn, kk=2.0 * np.pi * K / Kp,
         u_cn=a1 * cols[0], u_sn=s * a2 * cols[1], u_dn=a3 * cols[2],
-        s=s, nu_psi=frequency(*nu_psi), wa=wa, wb=wb, slope=slope,
-        k0=(np.ones_like(s), np.zeros_like(s)),
+        mu_cn=a1 * lat.c_cn * cols[0], mu_sn=s * a2 * lat.c_sn * cols[1],
+        mu_dn=a3 * lat.c_dn * cols[2],
+        s=s, nu_psi=frequency(*nu_psi), wa=wa, wb=wb, slope=slope, psi0=np.zeros_like(s),
         quat_u=np.zeros((4, s.size)), quat_v=np.zeros((4, s.size)),
         v_sn=s * a2 * cols[0], v_cn=-a1 * cols[1], G=G, a3=a3,
         period=period, precession_rate=rate[0] + 2.0 * np.pi * s / period,
     )
     if q0 is None:
         return const
-    # e^{−isΦ(τ₀)/2} from the kernel itself at t = 0, so that Δψ(0) = 0 to round-off.
-    _, (wr, wi) = _phase_factor(const, np.zeros_like(s))
-    const = const._replace(k0=(wr, -wi))
+    # the ψ phase that makes Δψ(0) = 0, from the kernels themselves (to round-off)
+    psi0 = np.empty_like(s)
+    zero = np.zeros(1)
+    for kind, kernel in ((True, _circular), (False, _hyperbolic)):
+        sel = np.nonzero(circ == kind)[0]
+        if sel.size:
+            sub = rows(const, sel)
+            _, phase = kernel(sub, zero, split(zero), True)
+            cz, sz = _half_angle(sub, zero, split(zero), phase)
+            psi0[sel] = -np.arctan2(sz, cz)[:, 0] / np.pi
+    const = const._replace(psi0=psi0)
     quat_u, quat_v = attitude_anchor(frame, cols, q0)
     return const._replace(quat_u=quat_u, quat_v=quat_v)
 
 
-def _polhode(c: Triaxial, t, tt):
-    """Reduced polhode phase ``f_w ∈ [−1/4, 1/4]`` and the sign ``(−1)^j`` of ``sn, cn``."""
+_NEGLIGIBLE = 1e-18  # series terms below this (relative to O(1)) are dropped per block
+
+
+def _terms(powers, qmax):
+    """Number of leading terms ``q^{p}`` of a series that exceed ``_NEGLIGIBLE``."""
+    return sum(1 for p in powers if p == 0 or qmax**p > _NEGLIGIBLE)
+
+
+def _multiples(s1, c1, n_odd, n_even):
+    """``sin, cos((2k+1)x)`` for ``k < n_odd`` and ``cos(2kx)`` for ``1 ≤ k ≤ n_even``."""
+    c2 = 1.0 - 2.0 * (s1 * s1)
+    tc2 = c2 + c2
+    so, co = [s1, s1 * (tc2 + 1.0)], [c1, c1 * (tc2 - 1.0)]
+    while len(so) < n_odd:
+        so.append(tc2 * so[-1] - so[-2])
+        co.append(tc2 * co[-1] - co[-2])
+    ce = [1.0, c2]
+    while len(ce) <= n_even:
+        ce.append(tc2 * ce[-1] - ce[-2])
+    return so[:n_odd], co[:n_odd], ce[1 : n_even + 1]
+
+
+def _circular(c: Triaxial, t, tt, attitude):
+    """Theta quotients in ``x = 2πf`` over the whole period (no reduction needed)."""
+    f = cycles(c.nu, t, tt, c.frac0)
+    s1, c1 = sincos_cycles(f)
+    q = c.q
+    qmax = float(np.max(q))
+    n_odd = _terms((0, 2, 6, 12), qmax)  # q^{n(n+1)}
+    n_even = _terms((1, 4, 9, 16), qmax) if qmax > 0 else 0  # q^{n²}
+    n_w = _terms((0, 2, 8), qmax) if attitude else 0  # coefficients of ϑ₁(·|q²)
+    so, co, ce = _multiples(s1, c1, max(n_odd, n_w, 1), n_even)
+    num_s, num_c = so[0], co[0]
+    even = odd = 0.0
+    for n in range(1, n_odd):
+        qn = q ** (n * (n + 1))
+        num_s = num_s + (-qn if n % 2 else qn) * so[n]
+        num_c = num_c + qn * co[n]
+    for n in range(1, n_even + 1):
+        term = q ** (n * n) * ce[n - 1]
+        if n % 2:
+            odd = odd + term
+        else:
+            even = even + term
+    inv = 1.0 / (1.0 + 2.0 * (even - odd))
+    th3 = 1.0 + 2.0 * (even + odd)
+    if not attitude:
+        return tuple(inv * (c.mu_cn[k] * num_c + c.mu_sn[k] * num_s + c.mu_dn[k] * th3)
+                     for k in range(3)), None
+    sn, cn, dn = c.c_sn * inv * num_s, c.c_cn * inv * num_c, c.c_dn * inv * th3
+    x = sum(c.wa[n] * so[n] for n in range(n_w))
+    y = sum(c.wb[n] * co[n] for n in range(n_w))
+    return (sn, cn, dn), (f, x, y)
+
+
+def _hyperbolic(c: Triaxial, t, tt, attitude):
+    """Theta quotients of the imaginary transformation on the half period ``|τ| ≤ K``."""
     f = cycles(c.nu, t, tt, c.frac0)
     j = np.round(2.0 * f)
-    return f - 0.5 * j, 1.0 - 2.0 * np.abs(j)
-
-
-def _sncndn_circular(c: Triaxial, fw):
-    x = (2.0 * np.pi) * fw
-    s1 = np.sin(x)
-    c1 = np.cos(x)
-    c2 = 1.0 - 2.0 * s1 * s1
-    tc2 = 2.0 * c2
-    s3 = s1 * (tc2 + 1.0)
-    c3 = c1 * (tc2 - 1.0)
-    s5 = tc2 * s3 - s1
-    c5 = tc2 * c3 - c1
-    s7 = tc2 * s5 - s3
-    c7 = tc2 * c5 - c3
-    c4 = tc2 * c2 - 1.0
-    c6 = tc2 * c4 - c2
-    q = c.q
-    q2 = q * q
-    q4 = q2 * q2
-    q6 = q4 * q2
-    q12 = q6 * q6
-    even = q4 * c4
-    odd = q * c2 + (q6 * q2 * q) * c6
-    inv = 1.0 / (1.0 + 2.0 * (even - odd))
-    sn = c.c_sn * inv * (s1 - q2 * s3 + q6 * s5 - q12 * s7)
-    cn = c.c_cn * inv * (c1 + q2 * c3 + q6 * c5 + q12 * c7)
-    dn = c.c_dn * inv * (1.0 + 2.0 * (even + odd))
-    x = c.wa[0] * s1 + c.wa[1] * s3 + c.wa[2] * s5
-    y = c.wb[0] * c1 + c.wb[1] * c3 + c.wb[2] * c5
-    return sn, cn, dn, (x, y)
-
-
-def _sncndn_hyperbolic(c: Triaxial, fw):
-    y = c.kk * np.abs(fw)
-    zi = np.exp(-y)
+    fw = f - 0.5 * j  # τ = 4K fw, |fw| ≤ 1/4
+    zi = np.exp(-c.kk * np.abs(fw))  # e^{−y}, y = π|τ|/(2K')
     rho = zi * zi
     q = c.q
-    z = q / rho
-    q2 = q * q
-    q4 = q2 * q2
-    q6 = q4 * q2
-    q9 = q6 * q2 * q
-    rho2 = rho * rho
-    z2 = z * z
-    a1, b1 = q * z, q2 * rho2
-    a2, b2 = q4 * z2, q6 * rho2 * rho
-    a3, b3 = q9 * z2 * z, (q6 * q6) * rho2 * rho2
-    inv = 1.0 / ((1.0 + rho) + (a1 + b1) + (a2 + b2) + (a3 + b3))
-    t1 = z + q * rho
-    t2 = q2 * z2 + q4 * rho2
-    t3 = q6 * z2 * z + q9 * rho2 * rho
-    sn = np.copysign(c.c_sn * inv * ((1.0 - rho) - (a1 - b1) + (a2 - b2) - (a3 - b3)), fw)
-    cn = c.c_cn * inv * zi * ((1.0 - t1) + (t2 - t3))
-    dn = c.c_dn * inv * zi * (1.0 + t1 + t2 + t3)
-    # ϑ₁(a + ib | q*) scaled by e^{−|b|}, with ζ = e^{2|b|} = 1/zi.
+    qmax = float(np.max(q))
+    z = q / rho  # q' e^{2y} ≤ 1
+    n_sh = _terms((0, 1, 4, 9, 16), qmax)  # q^{n²} zⁿ
+    n_th = _terms((0, 0, 2, 6, 12), qmax)  # q^{n² − n} zⁿ
+    sh, ch = 1.0 - rho, 1.0 + rho
+    zn, rn = 1.0, rho
+    for n in range(1, max(n_sh, n_th)):
+        zn = zn * z
+        rn = rn * rho
+        if n < n_sh:
+            a = q ** (n * n) * zn
+            b = q ** (n * n + n) * rn
+            sh = sh + (a - b if n % 2 == 0 else b - a)
+            ch = ch + (a + b)
+    t4 = t3 = 1.0
+    zn, rn = 1.0, 1.0
+    for n in range(1, n_th):
+        zn = zn * z
+        rn = rn * rho
+        term = q ** (n * n - n) * zn + q ** (n * n) * rn
+        t4 = t4 - term if n % 2 else t4 + term
+        t3 = t3 + term
+    inv = 1.0 / ch
+    sgn = 1.0 - 2.0 * np.abs(j)  # (−1)^j for sn and cn
+    sh = np.copysign(sh, fw) * (sgn * inv)
+    t4 = t4 * (sgn * inv * zi)
+    t3 = t3 * (inv * zi)
+    if not attitude:
+        return tuple(c.mu_cn[k] * t4 + c.mu_sn[k] * sh + c.mu_dn[k] * t3 for k in range(3)), None
+    sn, cn, dn = c.c_sn * sh, c.c_cn * t4, c.c_dn * t3
+    # ϑ₁(a + ib | q*) scaled by e^{−|b|}: Σ wₙ (ζⁿ ± ζ^{−n−1}), ζ = e^{2|b|} = 1/zi
+    n_w = _terms((0, 2, 6, 12, 20, 30), float(np.max(np.sqrt(q))))
     zeta = 1.0 / zi
-    up, down = np.ones_like(zi), zi
-    re = c.wa[0] * (up + down)
-    im = c.wb[0] * (up - down)
-    for n in range(1, 6):
+    up, down = 1.0, zi
+    x = c.wa[0] * (1.0 + zi)
+    y = c.wb[0] * (1.0 - zi)
+    for n in range(1, n_w):
         up = up * zeta
         down = down * zi
-        re = re + c.wa[n] * (up + down)
-        im = im + c.wb[n] * (up - down)
-    return sn, cn, dn, (re, np.where(fw < 0, -im, im))
+        x = x + c.wa[n] * (up + down)
+        y = y + c.wb[n] * (up - down)
+    return (sn, cn, dn), (fw, x, np.where(fw < 0, -y, y))
 
 
-def _sncndn(c: Triaxial, fw):
-    """The series kind of the constants, or both merged when they are mixed (set-up only)."""
-    if np.all(c.circular):
-        return _sncndn_circular(c, fw)
-    if not np.any(c.circular):
-        return _sncndn_hyperbolic(c, fw)
-    a, b = _sncndn_circular(c, fw), _sncndn_hyperbolic(c, fw)
-    pick = lambda u, v: np.where(c.circular, u, v)  # noqa: E731
-    return (*(pick(u, v) for u, v in zip(a[:3], b[:3], strict=True)),
-            (pick(a[3][0], b[3][0]), pick(a[3][1], b[3][1])))
-
-
-def _phase_factor(c: Triaxial, t, tt=None):
-    """Polhode quantities and ``e^{i(Δψ/2 − 2π f_ψ... )}`` before the initial correction."""
-    fw, sgn = _polhode(c, t, tt)
-    sn, cn, dn, (x, y) = _sncndn(c, fw)
-    beta = np.pi * cycles(c.nu_psi, t, tt) + c.slope * fw
-    cb, sb = np.cos(beta), np.sin(beta)
+def _half_angle(c: Triaxial, t, tt, phase):
+    """``e^{iΔψ/2}`` up to sign from the ``ϑ₁`` series ``(x, y)`` and the polhode phase."""
+    f_lin, x, y = phase
+    g = 0.5 * cycles(c.nu_psi, t, tt, c.psi0) + c.slope * f_lin
+    g -= np.round(g)
+    sb, cb = sincos_cycles(g)
     inv = 1.0 / np.sqrt(x * x + y * y)
-    x, y = x * inv, y * inv
-    return (sgn * sn, sgn * cn, dn), (cb * x - sb * y, cb * y + sb * x)
+    x *= inv
+    y *= inv
+    return cb * x - sb * y, cb * y + sb * x
 
 
 def evaluate(c: Triaxial, t, attitude=True):
@@ -383,17 +423,16 @@ def evaluate(c: Triaxial, t, attitude=True):
     [0.3, 0.2, 1.0]
     """
     tt = split(t)
+    kernel = _circular if np.all(c.circular) else _hyperbolic
     if not attitude:
-        fw, sgn = _polhode(c, t, tt)
-        sn, cn, dn, _ = _sncndn(c, fw)
-        sn, cn = sgn * sn, sgn * cn
-        return tuple(c.u_cn[k] * cn + c.u_sn[k] * sn + c.u_dn[k] * dn for k in range(3)), None
-    (sn, cn, dn), (wr, wi) = _phase_factor(c, t, tt)
+        return kernel(c, t, tt, False)
+    (sn, cn, dn), phase = kernel(c, t, tt, True)
     m = tuple(c.u_cn[k] * cn + c.u_sn[k] * sn + c.u_dn[k] * dn for k in range(3))
-    cz = wr * c.k0[0] - wi * c.k0[1]
-    sz = wr * c.k0[1] + wi * c.k0[0]
+    cz, sz = _half_angle(c, t, tt, phase)
     au = tuple(cz * c.quat_u[k] + sz * c.quat_v[k] for k in range(4))
     w = c.G + c.a3 * dn
-    inv = 1.0 / np.sqrt(2.0 * c.G * w)
-    arc = (*((c.v_sn[k] * sn + c.v_cn[k] * cn) * inv for k in range(3)), w * inv)
+    inv = 1.0 / np.sqrt((2.0 * c.G) * w)
+    sn *= inv
+    cn *= inv
+    arc = (*(c.v_sn[k] * sn + c.v_cn[k] * cn for k in range(3)), w * inv)
     return m, qmul(au, arc)
