@@ -163,7 +163,7 @@ def main():
                np.max(angle(q_hy, q_cf)))
 
     # accuracy at 100 periods against the Taylor-series reference
-    from reference import TaylorReference, angle_between, relative_error
+    from free_reference import TaylorReference, angle_between, relative_error
 
     fm = FreeMotion(moments[:n_ref], m0[:n_ref], q0[:n_ref])
     err_m = err_q = ivp_m = ivp_q = 0.0

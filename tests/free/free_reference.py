@@ -7,8 +7,10 @@ by ``G max(1/I)``; series of order 36 scaled by the step, whose size is set from
 radius of convergence estimated on the series (truncation ~1e-41 per step; a step whose
 last two terms exceed 1e-37 is halved and redone).  The local error is below 1e-36, so
 after 10⁵ steps the solution keeps more than 30 digits (fewer only where the motion
-itself amplifies errors, e.g. 10 digits lost at 1 − k² = 1e-10).  To keep the fast spin of near-axisymmetric bodies (the Earth makes 30 000 turns
-in 100 wobble periods) out of the step size, the attitude is integrated in a frame
+itself amplifies errors, e.g. 10 digits lost at 1 − k² = 1e-10).
+
+To keep the fast spin of near-axisymmetric bodies (the Earth makes 30 000 turns in 100
+wobble periods) out of the step size, the attitude is integrated in a frame
 turning uniformly about the fixed inertial angular momentum ``n̂`` at the rate
 ``Ω₀ = 2T/G``: ``q = exp(Ω₀ t n̂/2) ⊗ x`` with
 ``dx/dt = ½ x ⊗ (ω, 0) − ½ Ω₀ (n̂, 0) ⊗ x`` (exact; only the step size profits).
@@ -50,15 +52,15 @@ def _conv(a, b, k):
 class TaylorReference:
     """High-precision solution of one rigid body's torque-free motion."""
 
-    def __init__(self, I, m0, q0):
+    def __init__(self, moments, m0, q0):
         with mp.workdps(DPS):
-            I = [mp.mpf(float(v)) for v in I]
+            moments = [mp.mpf(float(v)) for v in moments]
             m0 = [mp.mpf(float(v)) for v in m0]
             q0 = [mp.mpf(float(v)) for v in q0]
             qn = mp.sqrt(sum(v * v for v in q0))
             q0 = [v / qn for v in q0]
             self.G = mp.sqrt(sum(v * v for v in m0))
-            w = [1 / v for v in I]
+            w = [1 / v for v in moments]
             self.wref = max(w)
             self.tscale = self.G * self.wref  # scaled time = t * tscale
             wt = [v / self.wref for v in w]
@@ -87,7 +89,7 @@ class TaylorReference:
         half_om = om >> 1
         nx, ny, nz = n
         for k in range(N):
-            w_ser = [[(w[i] * m[i][l]) >> PREC for l in range(k + 1)] for i in range(3)]
+            w_ser = [[(w[i] * mj) >> PREC for mj in m[i][: k + 1]] for i in range(3)]
             dm = [
                 (c[0] * (_conv(m[1], m[2], k) >> PREC)) >> PREC,
                 (c[1] * (_conv(m[2], m[0], k) >> PREC)) >> PREC,
@@ -95,13 +97,13 @@ class TaylorReference:
             ]
             x, yy, z, s = (qq[k] for qq in q)
             # ½ q ⊗ (ω, 0): products at 2·PREC, shifted once
-            qw = [_conv(q[a], w_ser[b], k) for a in range(4) for b in range(3)]
-            X = lambda a, b: qw[a * 3 + b]  # noqa: E731
+            # qw[a][b] = [q_a ω_b]_k, a in (x, y, z, w), b in (x, y, z)
+            qw = [[_conv(q[a], w_ser[b], k) for b in range(3)] for a in range(4)]
             dq = [
-                X(3, 0) + X(1, 2) - X(2, 1),
-                X(3, 1) + X(2, 0) - X(0, 2),
-                X(3, 2) + X(0, 1) - X(1, 0),
-                -(X(0, 0) + X(1, 1) + X(2, 2)),
+                qw[3][0] + qw[1][2] - qw[2][1],
+                qw[3][1] + qw[2][0] - qw[0][2],
+                qw[3][2] + qw[0][1] - qw[1][0],
+                -(qw[0][0] + qw[1][1] + qw[2][2]),
             ]
             dq = [v >> (PREC + 1) for v in dq]
             # − ½ Ω₀ (n̂, 0) ⊗ q: vector q_w n + n × q_v, scalar −n·q_v
@@ -154,7 +156,8 @@ class TaylorReference:
                 self.t = target if last else self.t + mp.mpf(hf.numerator) / hf.denominator
                 self.steps += 1
                 rho = self._radius(coeffs, float(hf))
-                self.h = min(4.0 * float(hf), rho * _SAFETY) if not last else max(self.h, rho * _SAFETY)
+                grown = min(4.0 * float(hf), rho * _SAFETY)
+                self.h = max(self.h, rho * _SAFETY) if last else grown
             return self._physical(target)
 
     def _physical(self, ts):
