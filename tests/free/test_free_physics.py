@@ -168,7 +168,7 @@ def test_scale_covariance_with_exact_scalings(a, b):
     st.floats(min_value=-500.0, max_value=500.0),
     st.floats(min_value=-500.0, max_value=500.0),
 )
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=30, deadline=None)
 def test_flow_composes_and_reverses(seed, t1, t2):
     # φ(t1 + t2) = φ(t2) ∘ φ(t1) and φ(−t1) ∘ φ(t1) = id, on a random state
     moments, m0, q0 = _random_states(1, seed % 1000)

@@ -100,7 +100,7 @@ def test_ellippi_complete_matches_mpmath(n, mc):
         assert _rel(ellippi(n, 1 - mc, mc=mc), mp.ellippi(n, _m(mc))) <= 8 * EPS
 
 
-@pytest.mark.parametrize(("n", "phi", "m"), [(2.0, 1.2, 0.5), (3.0, 0.3, 0.2), (1.5, 5.0, 0.7)])
+@pytest.mark.parametrize(("n", "phi", "m"), [(2.0, 1.2, 0.5), (3.0, 0.3, 0.2), (1.5, 0.9, 0.7)])
 def test_ellippi_above_one_is_the_principal_value(n, phi, m):
     # mpmath continues analytically; its real part is the Cauchy principal value
     # (checked here independently: PV of the complete integral, DLMF 19.6.5,

@@ -74,10 +74,10 @@ class Triaxial(NamedTuple):
         Theta-quotient constants (:class:`andoyer.special.theta.ThetaLattice`).
     kk : ndarray
         ``2πK/K'``: hyperbolic variable per cycle.
-    u_cn, u_sn, u_dn : ndarray, shape (3, N)
-        Body-frame vectors with ``m = u_cn cn τ + u_sn sn τ + u_dn dn τ``.
     mu_cn, mu_sn, mu_dn : ndarray, shape (3, N)
-        The same times the theta-quotient constants ``c_cn, c_sn, c_dn``.
+        Body-frame vectors with ``m = (mu_cn ϑ_cn + mu_sn ϑ_sn + mu_dn ϑ_dn)/ϑ₄``: the
+        amplitudes ``a₁, s a₂, a₃`` along the working axes times the theta-quotient
+        constants ``c_cn, c_sn, c_dn``, so that ``m`` needs no separate ``sn, cn, dn``.
     s : ndarray
         ``+1`` SAM, ``−1`` LAM.
     nu_psi : Frequency
@@ -108,9 +108,6 @@ class Triaxial(NamedTuple):
     c_cn: np.ndarray
     c_dn: np.ndarray
     kk: np.ndarray
-    u_cn: np.ndarray
-    u_sn: np.ndarray
-    u_dn: np.ndarray
     mu_cn: np.ndarray
     mu_sn: np.ndarray
     mu_dn: np.ndarray
@@ -249,7 +246,6 @@ def triaxial(frame: PolhodeFrame, q0=None):
     const = Triaxial(
         circular=circ, nu=frequency(*nu), frac0=frac0, q=lat.q, c_sn=lat.c_sn, c_cn=lat.c_cn,
         c_dn=lat.c_dn, kk=2.0 * np.pi * K / Kp,
-        u_cn=a1 * cols[0], u_sn=s * a2 * cols[1], u_dn=a3 * cols[2],
         mu_cn=a1 * lat.c_cn * cols[0], mu_sn=s * a2 * lat.c_sn * cols[1],
         mu_dn=a3 * lat.c_dn * cols[2],
         s=s, nu_psi=frequency(*nu_psi), wa=wa, wb=wb, slope=slope, psi0=np.zeros_like(s),
@@ -266,7 +262,7 @@ def triaxial(frame: PolhodeFrame, q0=None):
         sel = np.nonzero(circ == kind)[0]
         if sel.size:
             sub = rows(const, sel)
-            _, phase = kernel(sub, zero, split(zero), True)
+            _, _, phase = kernel(sub, zero, split(zero), True)
             cz, sz = _half_angle(sub, zero, split(zero), phase)
             psi0[sel] = -np.arctan2(sz, cz)[:, 0] / np.pi
     const = const._replace(psi0=psi0)
@@ -320,13 +316,14 @@ def _circular(c: Triaxial, t, tt, attitude):
             even = even + term
     inv = 1.0 / (1.0 + 2.0 * (even - odd))
     th3 = 1.0 + 2.0 * (even + odd)
+    m = tuple(inv * (c.mu_cn[k] * num_c + c.mu_sn[k] * num_s + c.mu_dn[k] * th3)
+              for k in range(3))
     if not attitude:
-        return tuple(inv * (c.mu_cn[k] * num_c + c.mu_sn[k] * num_s + c.mu_dn[k] * th3)
-                     for k in range(3)), None
+        return m, None, None
     sn, cn, dn = c.c_sn * inv * num_s, c.c_cn * inv * num_c, c.c_dn * inv * th3
     x = sum(c.wa[n] * so[n] for n in range(n_w))
     y = sum(c.wb[n] * co[n] for n in range(n_w))
-    return (sn, cn, dn), (f, x, y)
+    return m, (sn, cn, dn), (f, x, y)
 
 
 def _hyperbolic(c: Triaxial, t, tt, attitude):
@@ -364,8 +361,9 @@ def _hyperbolic(c: Triaxial, t, tt, attitude):
     sh = np.copysign(sh, fw) * (sgn * inv)
     t4 = t4 * (sgn * inv * zi)
     t3 = t3 * (inv * zi)
+    m = tuple(c.mu_cn[k] * t4 + c.mu_sn[k] * sh + c.mu_dn[k] * t3 for k in range(3))
     if not attitude:
-        return tuple(c.mu_cn[k] * t4 + c.mu_sn[k] * sh + c.mu_dn[k] * t3 for k in range(3)), None
+        return m, None, None
     sn, cn, dn = c.c_sn * sh, c.c_cn * t4, c.c_dn * t3
     # ϑ₁(a + ib | q*) scaled by e^{−|b|}: Σ wₙ (ζⁿ ± ζ^{−n−1}), ζ = e^{2|b|} = 1/zi
     n_w = _terms((0, 2, 6, 12, 20, 30), float(np.max(np.sqrt(q))))
@@ -378,7 +376,7 @@ def _hyperbolic(c: Triaxial, t, tt, attitude):
         down = down * zi
         x = x + c.wa[n] * (up + down)
         y = y + c.wb[n] * (up - down)
-    return (sn, cn, dn), (fw, x, np.where(fw < 0, -y, y))
+    return m, (sn, cn, dn), (fw, x, np.where(fw < 0, -y, y))
 
 
 def _half_angle(c: Triaxial, t, tt, phase):
@@ -424,10 +422,10 @@ def evaluate(c: Triaxial, t, attitude=True):
     """
     tt = split(t)
     kernel = _circular if np.all(c.circular) else _hyperbolic
+    m, sncndn, phase = kernel(c, t, tt, attitude)
     if not attitude:
-        return kernel(c, t, tt, False)
-    (sn, cn, dn), phase = kernel(c, t, tt, True)
-    m = tuple(c.u_cn[k] * cn + c.u_sn[k] * sn + c.u_dn[k] * dn for k in range(3))
+        return m, None
+    sn, cn, dn = sncndn
     cz, sz = _half_angle(c, t, tt, phase)
     au = tuple(cz * c.quat_u[k] + sz * c.quat_v[k] for k in range(4))
     w = c.G + c.a3 * dn

@@ -25,21 +25,9 @@ import numpy as np
 
 from andoyer.special.compensated import two_prod
 from andoyer.special.parameter import parameter_pair
-from andoyer.special.theta import lattice, sncndn_circular, sncndn_hyperbolic
+from andoyer.special.theta import ThetaLattice, lattice, sncndn_half
 
 __all__ = ["am", "ellipj"]
-
-
-def _reduced(v, lat, mask):
-    """sn, cn, dn on ``0 ≤ v ≤ K/2`` for the elements in ``mask`` of the lattice."""
-    consts = [f[mask] for f in lat[4:9]]
-    circ = lat.circular[mask]
-    sn, cn, dn = (np.empty(v.shape) for _ in range(3))
-    for sel, fn in ((circ, sncndn_circular), (~circ, sncndn_hyperbolic)):
-        if sel.any():
-            vals = fn(v[sel], tuple(c[sel] for c in consts))
-            sn[sel], cn[sel], dn[sel] = vals
-    return sn, cn, dn
 
 
 def ellipj(u, m, mc=None):
@@ -100,7 +88,7 @@ def ellipj(u, m, mc=None):
         a = np.abs(r)
         far = a > 0.5 * kh
         v = np.where(far, (kh - a) + kl, a)
-        s, c, d = _reduced(v, lat, per)
+        s, c, d = sncndn_half(v, ThetaLattice(*(np.asarray(f)[per] for f in lat)))
         kc = lat.kc[per]
         s, c, d = (np.where(far, c / d, s), np.where(far, kc * s / d, c), np.where(far, kc / d, d))
         s = np.copysign(s, r)
