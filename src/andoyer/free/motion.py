@@ -30,7 +30,7 @@ from andoyer.free.regime import Regime, check_inputs, classify, polhode_frame
 
 __all__ = ["FreeMotion", "FreePeriods", "attitude", "momentum", "periods", "propagate"]
 
-_CHUNK = 8192  # elements per evaluation block: keeps the temporaries in cache
+_CHUNK = 16384  # elements per block: amortises numpy call overhead, temporaries stay in cache
 
 
 class FreePeriods(NamedTuple):
