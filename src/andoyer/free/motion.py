@@ -286,9 +286,15 @@ def _run(group, rows, pos, t2, outs):
             cols = slice(c0, c0 + cstep)
             tc = t2[r_sel, cols] if per_row_t else t2[:, cols]
             m, q = kernel(c_rows, tc, q_out is not None)
-            m_out[r_sel, cols] = np.stack(m, axis=-1)
-            if q_out is not None:
-                q_out[r_sel, cols] = np.stack(q, axis=-1)
+            for out, comps in ((m_out, m), (q_out, q)):
+                if out is None:
+                    continue
+                if contiguous:  # a view: write the components in place, strided
+                    block = out[r_sel, cols]
+                    for k, comp in enumerate(comps):
+                        block[..., k] = comp
+                else:
+                    out[r_sel, cols] = np.stack(comps, axis=-1)
 
 
 def _uniform_axes(moments, m0, regime):
