@@ -163,6 +163,18 @@ def test_scale_covariance_with_exact_scalings(a, b):
     assert np.max(_angle(Rotation.from_quat(q1), Rotation.from_quat(q2))) < 1e-14
 
 
+@pytest.mark.parametrize(("mu_i", "mu_m"), [(1e-150, 1e150), (1e150, 1e-150), (1e-300, 1e-300)])
+def test_extreme_units_neither_overflow_nor_underflow(mu_i, mu_m):
+    # m(t; μ_I I, μ_m m₀) = μ_m m(μ_m t/μ_I; I, m₀): squares like m²/I would overflow here
+    moments, m0, q0 = _random_states(20, 11)
+    t = np.random.default_rng(12).uniform(0, 50, 20)
+    m1, q1 = FreeMotion(moments, m0, q0).propagate(t)
+    m2, q2 = FreeMotion(moments * mu_i, m0 * mu_m, q0).propagate(t * (mu_i / mu_m))
+    assert np.all(np.isfinite(m2))
+    assert np.max(np.abs(m2 / mu_m - m1)) < 1e-13 * np.max(np.abs(m0))
+    assert np.max(_angle(Rotation.from_quat(q1), Rotation.from_quat(q2))) < 1e-12
+
+
 @given(
     st.integers(min_value=0, max_value=2**32 - 1),
     st.floats(min_value=-500.0, max_value=500.0),

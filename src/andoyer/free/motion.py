@@ -26,7 +26,7 @@ from andoyer.free import constants as _const
 from andoyer.free import separatrix as _sep
 from andoyer.free import triaxial as _tri
 from andoyer.free import uniform as _uni
-from andoyer.free.regime import Regime, check_inputs, classify, polhode_frame
+from andoyer.free.regime import Regime, check_inputs, classify, normalise, polhode_frame
 
 __all__ = ["FreeMotion", "FreePeriods", "attitude", "momentum", "periods", "propagate"]
 
@@ -111,6 +111,9 @@ class FreeMotion:
         m0 = np.broadcast_to(m0, (*shape, 3)).reshape(-1, 3)
         n = moments.shape[0]
         regime = classify(moments, m0)
+        # solve the scaled problem (powers of two, exact): internal time 2^(b−a) t
+        moments, m0, a, b = normalise(moments, m0)
+        self._tshift, self._mshift = b - a, b
         self.regime = regime.reshape(shape)
         self._has_attitude = q0 is not None
         self._n = n
@@ -121,9 +124,16 @@ class FreeMotion:
         zeros = np.sum(m0 == 0, axis=-1)
         triax = regime <= Regime.SEPARATRIX
         spin = triax & (zeros >= 2)
-        uni = ~triax | spin
         sep = (regime == Regime.SEPARATRIX) & ~spin
         tri = triax & ~sep & ~spin
+        if np.any(tri):
+            # a wobble whose square underflows (|m⊥| < 1e-154 |m|) is a steady spin
+            idx = np.nonzero(tri)[0]
+            frame = polhode_frame(moments[idx], m0[idx], regime[idx] == Regime.LAM)
+            flat = frame.P1[0] == 0
+            spin[idx[flat]] = True
+            tri[idx[flat]] = False
+        uni = ~triax | spin
 
         if np.any(tri):
             idx = np.nonzero(tri)[0]
@@ -157,6 +167,8 @@ class FreeMotion:
                 period[j] = 2.0 * np.pi / om
                 rate[j] = G * w3 + frame.s * om
             self._groups.append((_uni.evaluate, idx, const))
+        period = np.ldexp(period, -self._tshift)
+        rate = np.ldexp(rate, self._tshift)
         with np.errstate(invalid="ignore"):
             prec = np.where(rate == 0, 0.0, rate * period)
         self.periods = FreePeriods(period.reshape(shape), prec.reshape(shape), rate.reshape(shape))
@@ -263,14 +275,15 @@ class FreeMotion:
                 where[members] = np.arange(members.size)
                 rows = np.nonzero(where[body_rows] >= 0)[0]
                 pos = where[body_rows[rows]]
-            _run((kernel, const), rows, pos, t2, (m_out, q_out))
+            shifts = (self._tshift[members], self._mshift[members])
+            _run((kernel, const, shifts), rows, pos, t2, (m_out, q_out))
         m_out = m_out.reshape(*out_shape, 3)
         return m_out, (None if q_out is None else q_out.reshape(*out_shape, 4))
 
 
 def _run(group, rows, pos, t2, outs):
     """Evaluate one kernel on output rows ``rows`` (constants at ``pos``), block by block."""
-    kernel, const = group
+    kernel, const, (tshift, mshift) = group
     m_out, q_out = outs
     ncols = t2.shape[1]
     cstep = min(ncols, _CHUNK)
@@ -281,11 +294,14 @@ def _run(group, rows, pos, t2, outs):
         r_idx = rows[r0 : r0 + rstep]
         # a slice keeps the writes below in place; fancy indices would copy
         r_sel = slice(r_idx[0], r_idx[-1] + 1) if contiguous else r_idx
-        c_rows = _const.rows(const, pos[r0 : r0 + rstep])
+        p_rows = pos[r0 : r0 + rstep]
+        c_rows = _const.rows(const, p_rows)
+        tsh, msh = tshift[p_rows][:, None], mshift[p_rows][:, None]
         for c0 in range(0, ncols, cstep):
             cols = slice(c0, c0 + cstep)
-            tc = t2[r_sel, cols] if per_row_t else t2[:, cols]
+            tc = np.ldexp(t2[r_sel, cols] if per_row_t else t2[:, cols], tsh)
             m, q = kernel(c_rows, tc, q_out is not None)
+            m = [np.ldexp(comp, msh) for comp in m]
             for out, comps in ((m_out, m), (q_out, q)):
                 if out is None:
                     continue
@@ -304,7 +320,7 @@ def _uniform_axes(moments, m0, regime):
     s = moments[rows[:, None], order]
     # axisymmetric: the distinct moment; steady spin: the spin axis; sphere/rest: any axis
     distinct = np.where(s[:, 0] == s[:, 1], order[:, 2], order[:, 0])
-    spin_axis = np.argmax(np.abs(m0), axis=-1)
+    spin_axis = np.argmax(np.abs(m0), axis=-1)  # a steady spin (up to an underflowing wobble)
     axis = np.where(regime == Regime.AXISYMMETRIC, distinct, spin_axis)
     I_s = moments[rows, axis]
     transverse = np.where(s[:, 0] == s[:, 1], s[:, 0], s[:, 2])

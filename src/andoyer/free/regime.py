@@ -45,6 +45,7 @@ __all__ = [
     "attitude_anchor",
     "check_inputs",
     "classify",
+    "normalise",
     "polhode_frame",
     "working_axes",
 ]
@@ -117,6 +118,37 @@ def check_inputs(moments, m0):
     return np.broadcast_to(moments, shape), np.broadcast_to(m0, shape)
 
 
+def normalise(moments, m0):
+    """Scale moments and momenta by powers of two into ``[1/2, 1)`` (exact, per state).
+
+    The motion is covariant: with ``I = 2^a I'`` and ``m₀ = 2^b m₀'``,
+    ``m(t) = 2^b m'(2^{b−a} t)`` and the attitude is ``q'(2^{b−a} t)``.  Working on the
+    scaled state keeps every product of the solution (``m²/I`` in double-double, ``K``,
+    frequencies) far from overflow and underflow whatever the units.
+
+    Parameters
+    ----------
+    moments, m0 : ndarray, shape (..., 3)
+
+    Returns
+    -------
+    moments, m0 : ndarray
+        Scaled copies (the largest moment and the largest ``|m₀|`` component in ``[1/2, 1)``).
+    a, b : ndarray of int, shape (...)
+        The exponents.
+
+    Examples
+    --------
+    >>> i, m, a, b = normalise(np.array([3.0, 4.0, 6.0]), np.array([0.0, 48.0, 0.0]))
+    >>> i.tolist(), m.tolist(), int(a), int(b)
+    ([0.375, 0.5, 0.75], [0.0, 0.75, 0.0], 3, 6)
+    """
+    _, a = np.frexp(np.max(moments, axis=-1))
+    big = np.max(np.abs(m0), axis=-1)
+    _, b = np.frexp(np.where(big > 0, big, 1.0))
+    return np.ldexp(moments, -a[..., None]), np.ldexp(m0, -b[..., None]), a, b
+
+
 def _sorted_axes(moments):
     """Indices of the axes of minimum, middle and maximum moment (stable for ties)."""
     order = np.argsort(moments, axis=-1, kind="stable")
@@ -163,6 +195,7 @@ def classify(moments, m0):
     'AXISYMMETRIC'
     """
     moments, m0 = check_inputs(moments, m0)
+    moments, m0, _, _ = normalise(moments, m0)
     s = np.sort(moments, axis=-1)
     sign = _separatrix_sign(moments, m0)
     regime = np.where(sign > 0, Regime.SAM, np.where(sign < 0, Regime.LAM, Regime.SEPARATRIX))
