@@ -33,10 +33,17 @@ no branch of ``arg`` has to be tracked.  For ``m ≤ 1/2`` the series in ``q² �
 used directly ("circular"); for ``m > 1/2`` it is rewritten by Jacobi's imaginary
 transformation (DLMF 20.7.30) as a series in ``q* = √q' ≤ e^{−π/2}`` of hyperbolic
 functions plus a term linear in ``τ`` ("hyperbolic").  This replaces the incomplete
-integral of the third kind ``Π(−κ²; am τ | m)`` of the classical solution (same
-characteristic as Sadov's ``Π(κ², λ)`` up to the sign convention) by a few terms per
-epoch, and avoids its cancellation near pure spin.  The mean ``⟨f⟩`` is obtained from
-the same theta constants; tests compare it with ``[Π(−κ²|m) − cπ/(2√(1+κ²))]/(K(1 − c²))``.
+integral of the third kind of the classical solution,
+``∫f dτ = [Π(−κ²; am τ | m) − c A(am τ)]/(1 − c²)`` with ``A(φ) = ∫dθ/(1 + κ² sin²θ)``
+(the characteristic of Sadov's ``Π(κ², λ)``, Gurfil eq. 143, in the other sign
+convention), by a few series terms per epoch, and avoids its cancellation near pure spin.
+The secular rate needs the complete ``Π(−κ²|m)``: it is taken from the AGM in
+double-double arithmetic (:func:`_secular_rate`), because ``Ω_ψ t`` reaches 10⁶ rad at
+100 periods of a fast spinner.
+
+Numbers are carried so that the phase stays exact over long times: the polhode frequency
+``ω/4K`` and ``Ω_ψ/2π`` are double-doubles (``K`` from the AGM on ``1 − k²`` formed without
+cancellation), multiplied by the time error-free (:mod:`andoyer.free.phase`).
 """
 
 from __future__ import annotations
