@@ -24,14 +24,13 @@ import numpy as np
 
 from andoyer.free import constants as _const
 from andoyer.free import separatrix as _sep
+from andoyer.free import series
 from andoyer.free import triaxial as _tri
 from andoyer.free import uniform as _uni
+from andoyer.free.blocks import Group, evaluate_blocks
 from andoyer.free.regime import Regime, check_inputs, classify, normalise, polhode_frame
 
 __all__ = ["FreeMotion", "FreePeriods", "attitude", "momentum", "periods", "propagate"]
-
-_CHUNK = 16384  # elements per block: amortises numpy call overhead, temporaries stay in cache
-
 
 class FreePeriods(NamedTuple):
     """Periods of torque-free motion (arrays of the body shape).
@@ -113,13 +112,12 @@ class FreeMotion:
         regime = classify(moments, m0)
         # solve the scaled problem (powers of two, exact): internal time 2^(b−a) t
         moments, m0, a, b = normalise(moments, m0)
-        self._tshift, self._mshift = b - a, b
+        tshift = b - a
         self.regime = regime.reshape(shape)
         self._has_attitude = q0 is not None
-        self._n = n
         period = np.empty(n)
         rate = np.empty(n)
-        self._groups = []
+        groups = []
 
         zeros = np.sum(m0 == 0, axis=-1)
         triax = regime <= Regime.SEPARATRIX
@@ -144,17 +142,17 @@ class FreeMotion:
             for kind in (True, False):
                 sel = np.nonzero(const.circular == kind)[0]
                 if sel.size:
-                    self._groups.append((_tri.evaluate, idx[sel], _const.subset(const, sel)))
+                    groups.append((series.evaluate, idx[sel], _const.subset(const, sel)))
         if np.any(sep):
             idx = np.nonzero(sep)[0]
             frame = polhode_frame(moments[idx], m0[idx], np.zeros(idx.size, dtype=bool))
             const = _sep.separatrix(frame, None if q0 is None else q0[idx])
             period[idx] = np.inf
             rate[idx] = 2.0 * np.pi * const.spin.hi
-            self._groups.append((_sep.evaluate, idx, const))
+            groups.append((_sep.evaluate, idx, const))
         if np.any(uni):
             idx = np.nonzero(uni)[0]
-            axis, I_s, I_t = _uniform_axes(moments[idx], m0[idx], regime[idx])
+            axis, I_s, I_t = _uni.uniform_axes(moments[idx], m0[idx], regime[idx])
             const = _uni.uniform(m0[idx], axis, I_s, I_t, None if q0 is None else q0[idx])
             period[idx] = const.period
             rate[idx] = const.precession_rate
@@ -166,9 +164,10 @@ class FreeMotion:
                 om = G * np.sqrt(e13 * e23)
                 period[j] = 2.0 * np.pi / om
                 rate[j] = G * w3 + frame.s * om
-            self._groups.append((_uni.evaluate, idx, const))
-        period = np.ldexp(period, -self._tshift)
-        rate = np.ldexp(rate, self._tshift)
+            groups.append((_uni.evaluate, idx, const))
+        self._groups = [Group(k, idx, c, tshift[idx], b[idx]) for k, idx, c in groups]
+        period = np.ldexp(period, -tshift)
+        rate = np.ldexp(rate, tshift)
         with np.errstate(invalid="ignore"):
             prec = np.where(rate == 0, 0.0, rate * period)
         self.periods = FreePeriods(period.reshape(shape), prec.reshape(shape), rate.reshape(shape))
@@ -244,88 +243,7 @@ class FreeMotion:
         t = np.asarray(t, dtype=np.float64)
         if not np.all(np.isfinite(t)):
             raise ValueError(f"expected finite times t, got {t[~np.isfinite(t)].ravel()[:3]}")
-        out_shape = np.broadcast_shapes(self.shape, t.shape)
-        nd = len(out_shape)
-        bs = (1,) * (nd - len(self.shape)) + self.shape
-        ts = (1,) * (nd - t.ndim) + t.shape
-        # states along rows, times along columns: the leading (state) axes of t are 1 or
-        # those of the states, its trailing axes are the epochs
-        def outer(k):
-            lead = zip(ts[:k], bs[:k], strict=True)
-            return set(bs[k:]) <= {1} and all(a in (1, b) for a, b in lead)
-
-        split_at = next((k for k in range(nd + 1) if outer(k)), None)
-        if split_at is not None:
-            body_rows = None
-            lead = ts[:split_at] if set(ts[:split_at]) <= {1} else bs[:split_at]
-            t2 = np.broadcast_to(t.reshape(ts), (*lead, *ts[split_at:]))
-            t2 = t2.reshape(int(np.prod(lead)), -1)
-        else:  # general broadcast: one row per output element
-            body_rows = np.broadcast_to(np.arange(self._n).reshape(bs), out_shape).ravel()
-            t2 = np.broadcast_to(t, out_shape).reshape(-1, 1)
-        nrows = self._n if body_rows is None else body_rows.size
-        ncols = t2.shape[1]
-        m_out = np.empty((nrows, ncols, 3))
-        q_out = np.empty((nrows, ncols, 4)) if attitude else None
-        for kernel, members, const in self._groups:
-            if body_rows is None:
-                rows, pos = members, np.arange(members.size)
-            else:
-                where = np.full(self._n, -1)
-                where[members] = np.arange(members.size)
-                rows = np.nonzero(where[body_rows] >= 0)[0]
-                pos = where[body_rows[rows]]
-            shifts = (self._tshift[members], self._mshift[members])
-            _run((kernel, const, shifts), rows, pos, t2, (m_out, q_out))
-        m_out = m_out.reshape(*out_shape, 3)
-        return m_out, (None if q_out is None else q_out.reshape(*out_shape, 4))
-
-
-def _run(group, rows, pos, t2, outs):
-    """Evaluate one kernel on output rows ``rows`` (constants at ``pos``), block by block."""
-    kernel, const, (tshift, mshift) = group
-    m_out, q_out = outs
-    ncols = t2.shape[1]
-    cstep = min(ncols, _CHUNK)
-    rstep = max(1, _CHUNK // cstep)
-    per_row_t = t2.shape[0] > 1
-    contiguous = rows.size > 0 and rows[-1] - rows[0] == rows.size - 1
-    for r0 in range(0, rows.size, rstep):
-        r_idx = rows[r0 : r0 + rstep]
-        # a slice keeps the writes below in place; fancy indices would copy
-        r_sel = slice(r_idx[0], r_idx[-1] + 1) if contiguous else r_idx
-        p_rows = pos[r0 : r0 + rstep]
-        c_rows = _const.rows(const, p_rows)
-        tsh, msh = tshift[p_rows][:, None], mshift[p_rows][:, None]
-        for c0 in range(0, ncols, cstep):
-            cols = slice(c0, c0 + cstep)
-            tc = np.ldexp(t2[r_sel, cols] if per_row_t else t2[:, cols], tsh)
-            m, q = kernel(c_rows, tc, q_out is not None)
-            m = [np.ldexp(comp, msh) for comp in m]
-            for out, comps in ((m_out, m), (q_out, q)):
-                if out is None:
-                    continue
-                if contiguous:  # a view: write the components in place, strided
-                    block = out[r_sel, cols]
-                    for k, comp in enumerate(comps):
-                        block[..., k] = comp
-                else:
-                    out[r_sel, cols] = np.stack(comps, axis=-1)
-
-
-def _uniform_axes(moments, m0, regime):
-    """Axis, axial and transverse moments of the states that move without elliptic functions."""
-    order = np.argsort(moments, axis=-1, kind="stable")
-    rows = np.arange(moments.shape[0])
-    s = moments[rows[:, None], order]
-    # axisymmetric: the distinct moment; steady spin: the spin axis; sphere/rest: any axis
-    distinct = np.where(s[:, 0] == s[:, 1], order[:, 2], order[:, 0])
-    spin_axis = np.argmax(np.abs(m0), axis=-1)  # a steady spin (up to an underflowing wobble)
-    axis = np.where(regime == Regime.AXISYMMETRIC, distinct, spin_axis)
-    I_s = moments[rows, axis]
-    transverse = np.where(s[:, 0] == s[:, 1], s[:, 0], s[:, 2])
-    I_t = np.where(regime == Regime.AXISYMMETRIC, transverse, I_s)
-    return axis, I_s, I_t
+        return evaluate_blocks(self._groups, self.shape, t, attitude)
 
 
 def periods(moments, m0):

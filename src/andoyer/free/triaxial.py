@@ -53,15 +53,15 @@ from typing import NamedTuple
 import numpy as np
 from scipy import special as sc
 
+from andoyer.free import series
 from andoyer.free.constants import rows
-from andoyer.free.phase import Frequency, cycles, frequency, sincos_cycles
-from andoyer.free.quaternion import qmul
+from andoyer.free.phase import Frequency, frequency
 from andoyer.free.regime import PolhodeFrame, attitude_anchor, working_axes
 from andoyer.special.agm import ellippi_dd
 from andoyer.special.compensated import PI_DD, dd_add, dd_div, dd_mul, dd_sqrt, split
 from andoyer.special.theta import lattice
 
-__all__ = ["Triaxial", "evaluate", "triaxial"]
+__all__ = ["Triaxial", "triaxial"]
 
 _TWO_PI = (2.0 * PI_DD[0], 2.0 * PI_DD[1])
 
@@ -265,179 +265,13 @@ def triaxial(frame: PolhodeFrame, q0=None):
     # the ψ phase that makes Δψ(0) = 0, from the kernels themselves (to round-off)
     psi0 = np.empty_like(s)
     zero = np.zeros(1)
-    for kind, kernel in ((True, _circular), (False, _hyperbolic)):
+    for kind, kernel in ((True, series.circular), (False, series.hyperbolic)):
         sel = np.nonzero(circ == kind)[0]
         if sel.size:
             sub = rows(const, sel)
             _, _, phase = kernel(sub, zero, split(zero), True)
-            cz, sz = _half_angle(sub, zero, split(zero), phase)
+            cz, sz = series.half_angle(sub, zero, split(zero), phase)
             psi0[sel] = -np.arctan2(sz, cz)[:, 0] / np.pi
     const = const._replace(psi0=psi0)
     quat_u, quat_v = attitude_anchor(frame, cols, q0)
     return const._replace(quat_u=quat_u, quat_v=quat_v)
-
-
-_NEGLIGIBLE = 1e-18  # series terms below this (relative to O(1)) are dropped per block
-
-
-def _terms(powers, qmax):
-    """Number of leading terms ``q^{p}`` of a series that exceed ``_NEGLIGIBLE``."""
-    return sum(1 for p in powers if p == 0 or qmax**p > _NEGLIGIBLE)
-
-
-def _multiples(s1, c1, n_odd, n_even):
-    """``sin, cos((2k+1)x)`` for ``k < n_odd`` and ``cos(2kx)`` for ``1 ≤ k ≤ n_even``."""
-    c2 = 1.0 - 2.0 * (s1 * s1)
-    tc2 = c2 + c2
-    so, co = [s1, s1 * (tc2 + 1.0)], [c1, c1 * (tc2 - 1.0)]
-    while len(so) < n_odd:
-        so.append(tc2 * so[-1] - so[-2])
-        co.append(tc2 * co[-1] - co[-2])
-    ce = [1.0, c2]
-    while len(ce) <= n_even:
-        ce.append(tc2 * ce[-1] - ce[-2])
-    return so[:n_odd], co[:n_odd], ce[1 : n_even + 1]
-
-
-def _circular(c: Triaxial, t, tt, attitude):
-    """Theta quotients in ``x = 2πf`` over the whole period (no reduction needed)."""
-    f = cycles(c.nu, t, tt, c.frac0)
-    s1, c1 = sincos_cycles(f)
-    q = c.q
-    qmax = float(np.max(q))
-    n_odd = _terms((0, 2, 6, 12), qmax)  # q^{n(n+1)}
-    n_even = _terms((1, 4, 9, 16), qmax) if qmax > 0 else 0  # q^{n²}
-    n_w = _terms((0, 2, 8), qmax) if attitude else 0  # coefficients of ϑ₁(·|q²)
-    so, co, ce = _multiples(s1, c1, max(n_odd, n_w, 1), n_even)
-    num_s, num_c = so[0], co[0]
-    even = odd = 0.0
-    for n in range(1, n_odd):
-        qn = q ** (n * (n + 1))
-        num_s = num_s + (-qn if n % 2 else qn) * so[n]
-        num_c = num_c + qn * co[n]
-    for n in range(1, n_even + 1):
-        term = q ** (n * n) * ce[n - 1]
-        if n % 2:
-            odd = odd + term
-        else:
-            even = even + term
-    inv = 1.0 / (1.0 + 2.0 * (even - odd))
-    th3 = 1.0 + 2.0 * (even + odd)
-    m = tuple(inv * (c.mu_cn[k] * num_c + c.mu_sn[k] * num_s + c.mu_dn[k] * th3)
-              for k in range(3))
-    if not attitude:
-        return m, None, None
-    sn, cn, dn = c.c_sn * inv * num_s, c.c_cn * inv * num_c, c.c_dn * inv * th3
-    x = sum(c.wa[n] * so[n] for n in range(n_w))
-    y = sum(c.wb[n] * co[n] for n in range(n_w))
-    return m, (sn, cn, dn), (f, x, y)
-
-
-def _hyperbolic(c: Triaxial, t, tt, attitude):
-    """Theta quotients of the imaginary transformation on the half period ``|τ| ≤ K``."""
-    f = cycles(c.nu, t, tt, c.frac0)
-    j = np.round(2.0 * f)
-    fw = f - 0.5 * j  # τ = 4K fw, |fw| ≤ 1/4
-    zi = np.exp(-c.kk * np.abs(fw))  # e^{−y}, y = π|τ|/(2K')
-    rho = zi * zi
-    q = c.q
-    qmax = float(np.max(q))
-    z = q / rho  # q' e^{2y} ≤ 1
-    n_sh = _terms((0, 1, 4, 9, 16), qmax)  # q^{n²} zⁿ
-    n_th = _terms((0, 0, 2, 6, 12), qmax)  # q^{n² − n} zⁿ
-    sh, ch = 1.0 - rho, 1.0 + rho
-    zn, rn = 1.0, rho
-    for n in range(1, max(n_sh, n_th)):
-        zn = zn * z
-        rn = rn * rho
-        if n < n_sh:
-            a = q ** (n * n) * zn
-            b = q ** (n * n + n) * rn
-            sh = sh + (a - b if n % 2 == 0 else b - a)
-            ch = ch + (a + b)
-    t4 = t3 = 1.0
-    zn, rn = 1.0, 1.0
-    for n in range(1, n_th):
-        zn = zn * z
-        rn = rn * rho
-        term = q ** (n * n - n) * zn + q ** (n * n) * rn
-        t4 = t4 - term if n % 2 else t4 + term
-        t3 = t3 + term
-    inv = 1.0 / ch
-    sgn = 1.0 - 2.0 * np.abs(j)  # (−1)^j for sn and cn
-    sh = np.copysign(sh, fw) * (sgn * inv)
-    t4 = t4 * (sgn * inv * zi)
-    t3 = t3 * (inv * zi)
-    m = tuple(c.mu_cn[k] * t4 + c.mu_sn[k] * sh + c.mu_dn[k] * t3 for k in range(3))
-    if not attitude:
-        return m, None, None
-    sn, cn, dn = c.c_sn * sh, c.c_cn * t4, c.c_dn * t3
-    # ϑ₁(a + ib | q*) scaled by e^{−|b|}: Σ wₙ (ζⁿ ± ζ^{−n−1}), ζ = e^{2|b|} = 1/zi
-    n_w = _terms((0, 2, 6, 12, 20, 30), float(np.max(np.sqrt(q))))
-    zeta = 1.0 / zi
-    up, down = 1.0, zi
-    x = c.wa[0] * (1.0 + zi)
-    y = c.wb[0] * (1.0 - zi)
-    for n in range(1, n_w):
-        up = up * zeta
-        down = down * zi
-        x = x + c.wa[n] * (up + down)
-        y = y + c.wb[n] * (up - down)
-    return m, (sn, cn, dn), (fw, x, np.where(fw < 0, -y, y))
-
-
-def _half_angle(c: Triaxial, t, tt, phase):
-    """``e^{iΔψ/2}`` up to sign from the ``ϑ₁`` series ``(x, y)`` and the polhode phase."""
-    f_lin, x, y = phase
-    g = 0.5 * cycles(c.nu_psi, t, tt, c.psi0) + c.slope * f_lin
-    g -= np.round(g)
-    sb, cb = sincos_cycles(g)
-    inv = 1.0 / np.sqrt(x * x + y * y)
-    x *= inv
-    y *= inv
-    return cb * x - sb * y, cb * y + sb * x
-
-
-def evaluate(c: Triaxial, t, attitude=True):
-    """Body angular momentum and attitude of triaxial states at times ``t``.
-
-    Parameters
-    ----------
-    c : Triaxial
-        Constants, all of one series kind (all circular or all hyperbolic), with fields
-        shaped to broadcast against ``t`` (vectors with a leading axis of 3 or 4).
-    t : ndarray
-        Times since the initial state.
-    attitude : bool, optional
-        Also return the attitude quaternion components.
-
-    Returns
-    -------
-    m : tuple of 3 ndarray
-        Body-frame angular momentum components.
-    q : tuple of 4 ndarray or None
-        Attitude quaternion components ``(x, y, z, w)``.
-
-    Examples
-    --------
-    >>> from andoyer.free.regime import polhode_frame
-    >>> fr = polhode_frame(np.array([[1.0, 2.0, 3.0]]), np.array([[0.3, 0.2, 1.0]]),
-    ...                    np.array([False]))
-    >>> m, _ = evaluate(triaxial(fr), np.zeros(1), attitude=False)
-    >>> [round(float(v[0]), 14) for v in m]
-    [0.3, 0.2, 1.0]
-    """
-    tt = split(t)
-    kernel = _circular if np.all(c.circular) else _hyperbolic
-    m, sncndn, phase = kernel(c, t, tt, attitude)
-    if not attitude:
-        return m, None
-    sn, cn, dn = sncndn
-    cz, sz = _half_angle(c, t, tt, phase)
-    au = tuple(cz * c.quat_u[k] + sz * c.quat_v[k] for k in range(4))
-    w = c.G + c.a3 * dn
-    inv = 1.0 / np.sqrt((2.0 * c.G) * w)
-    sn *= inv
-    cn *= inv
-    arc = (*(c.v_sn[k] * sn + c.v_cn[k] * cn for k in range(3)), w * inv)
-    return m, qmul(au, arc)

@@ -23,6 +23,7 @@ from scipy.spatial.transform import Rotation
 
 from andoyer.free.phase import Frequency, cycles, frequency
 from andoyer.free.quaternion import qmul
+from andoyer.free.regime import Regime
 from andoyer.special.compensated import (
     PI_DD,
     dd_add,
@@ -34,7 +35,7 @@ from andoyer.special.compensated import (
     two_sum,
 )
 
-__all__ = ["Uniform", "evaluate", "uniform"]
+__all__ = ["Uniform", "evaluate", "uniform", "uniform_axes"]
 
 _TWO_PI = (2.0 * PI_DD[0], 2.0 * PI_DD[1])
 
@@ -126,6 +127,42 @@ def uniform(m0, axis, I_s, I_t, q0=None):
     q2 = qmul(q1, sq_)
     return const._replace(q1=np.stack(q1), q2=np.stack(q2), q3=np.stack(qmul(mq, q1)),
                           q4=np.stack(qmul(mq, q2)))
+
+
+def uniform_axes(moments, m0, regime):
+    """Axis, axial and transverse moments of states moving without elliptic functions.
+
+    Parameters
+    ----------
+    moments, m0 : ndarray, shape (N, 3)
+    regime : ndarray of int, shape (N,)
+        :class:`andoyer.free.regime.Regime` codes: axisymmetric states use the axis of the
+        distinct moment; steady spins (of any regime, including a wobble so small that
+        its square underflows), spheres and rest use the largest momentum component,
+        with ``I_t = I_s`` so that ``λ = 0``.
+
+    Returns
+    -------
+    axis : ndarray of int
+    I_s, I_t : ndarray
+
+    Examples
+    --------
+    >>> axis, I_s, I_t = uniform_axes(np.array([[2.0, 3.0, 2.0]]), np.array([[0.1, 1.0, 0.2]]),
+    ...                               np.array([Regime.AXISYMMETRIC]))
+    >>> int(axis[0]), float(I_s[0]), float(I_t[0])
+    (1, 3.0, 2.0)
+    """
+    order = np.argsort(moments, axis=-1, kind="stable")
+    rows = np.arange(moments.shape[0])
+    s = moments[rows[:, None], order]
+    distinct = np.where(s[:, 0] == s[:, 1], order[:, 2], order[:, 0])
+    spin_axis = np.argmax(np.abs(m0), axis=-1)
+    axis = np.where(regime == Regime.AXISYMMETRIC, distinct, spin_axis)
+    I_s = moments[rows, axis]
+    transverse = np.where(s[:, 0] == s[:, 1], s[:, 0], s[:, 2])
+    I_t = np.where(regime == Regime.AXISYMMETRIC, transverse, I_s)
+    return axis, I_s, I_t
 
 
 def evaluate(c: Uniform, t, attitude=True):
