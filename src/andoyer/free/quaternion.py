@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["qmul", "qmul_array", "shortest_arc"]
+__all__ = ["anchored_attitude", "qmul", "qmul_array", "shortest_arc"]
 
 
 def qmul(a, b):
@@ -90,3 +90,46 @@ def shortest_arc(m):
     w = g + m[..., 2]
     q = np.stack([m[..., 1], -m[..., 0], np.zeros_like(w), w], axis=-1)
     return q / np.sqrt(2.0 * g * w)[..., None]
+
+
+def anchored_attitude(c, half, arc, m3):
+    """Attitude ``(cos U + sin V) ⊗ (v, G + m₃)/√(2G(G + m₃))`` on component arrays.
+
+    The per-epoch end of the construction of
+    :func:`andoyer.free.regime.attitude_anchor`: ``(cos, sin)`` of ``Δψ/2`` combine the
+    constant quaternions ``U, V``, and the body-frame shortest-arc factor has the vector
+    part ``v = v_a x_a + v_b x_b`` (constant body vectors times per-epoch scalars).
+
+    Parameters
+    ----------
+    c : NamedTuple
+        Constants with fields ``quat_u``, ``quat_v`` (``(4, …)``) and ``G``.
+    half : tuple of ndarray
+        ``(cos(Δψ/2), sin(Δψ/2))``.
+    arc : tuple
+        ``((v_a, x_a), (v_b, x_b))``: vectors ``(3, …)`` and their scalar factors.
+    m3 : ndarray
+        Polhode-axis component of the momentum in the working frame.
+
+    Returns
+    -------
+    tuple of 4 ndarray
+        Quaternion components ``(x, y, z, w)``.
+
+    Examples
+    --------
+    >>> from collections import namedtuple
+    >>> C = namedtuple("C", "quat_u quat_v G")
+    >>> c = C(np.array([0.0, 0.0, 0.0, 1.0]), np.array([0.0, 0.0, 1.0, 0.0]), 1.0)
+    >>> e = np.eye(3)
+    >>> [float(x) for x in anchored_attitude(c, (1.0, 0.0), ((e[0], 0.0), (e[1], 0.0)), 1.0)]
+    [0.0, 0.0, 0.0, 1.0]
+    """
+    cz, sz = half
+    au = tuple(cz * c.quat_u[k] + sz * c.quat_v[k] for k in range(4))
+    w = c.G + m3
+    inv = 1.0 / np.sqrt((2.0 * c.G) * w)
+    (va, xa), (vb, xb) = arc
+    xa = xa * inv
+    xb = xb * inv
+    return qmul(au, (*(va[k] * xa + vb[k] * xb for k in range(3)), w * inv))

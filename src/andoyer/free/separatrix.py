@@ -28,7 +28,7 @@ from typing import NamedTuple
 import numpy as np
 
 from andoyer.free.phase import Frequency, cycles, frequency
-from andoyer.free.quaternion import qmul
+from andoyer.free.quaternion import anchored_attitude
 from andoyer.free.regime import PolhodeFrame, attitude_anchor, working_axes
 from andoyer.special.compensated import PI_DD, dd_div, dd_mul
 
@@ -153,9 +153,5 @@ def evaluate(c: Separatrix, t, attitude=True):
     if not attitude:
         return m, None
     half = np.pi * cycles(c.spin, t) + c.coef * (np.arctan(c.r * np.tanh(0.5 * tau)) - c.art0)
-    cz, sz = np.cos(half), np.sin(half)
-    au = tuple(cz * c.quat_u[k] + sz * c.quat_v[k] for k in range(4))
-    w = c.G + c.a3 * se
-    inv = 1.0 / np.sqrt(2.0 * c.G * w)
-    arc = (*((c.v_tanh[k] * th + c.v_sech[k] * se) * inv for k in range(3)), w * inv)
-    return m, qmul(au, arc)
+    arc = ((c.v_tanh, th), (c.v_sech, se))
+    return m, anchored_attitude(c, (np.cos(half), np.sin(half)), arc, c.a3 * se)

@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from andoyer.free.phase import cycles, sincos_cycles
-from andoyer.free.quaternion import qmul
+from andoyer.free.quaternion import anchored_attitude
 from andoyer.special.compensated import split
 
 __all__ = ["circular", "evaluate", "half_angle", "hyperbolic"]
@@ -270,11 +270,5 @@ def evaluate(c, t, attitude=True):
     if not attitude:
         return m, None
     sn, cn, dn = sncndn
-    cz, sz = half_angle(c, t, tt, phase)
-    au = tuple(cz * c.quat_u[k] + sz * c.quat_v[k] for k in range(4))
-    w = c.G + c.a3 * dn
-    inv = 1.0 / np.sqrt((2.0 * c.G) * w)
-    sn *= inv
-    cn *= inv
-    arc = (*(c.v_sn[k] * sn + c.v_cn[k] * cn for k in range(3)), w * inv)
-    return m, qmul(au, arc)
+    arc = ((c.v_sn, sn), (c.v_cn, cn))
+    return m, anchored_attitude(c, half_angle(c, t, tt, phase), arc, c.a3 * dn)
