@@ -1,0 +1,341 @@
+"""Exact torque-free motion of rigid bodies on arrays: the public entry point.
+
+:class:`FreeMotion` prepares the per-state constants once (regime, working frame,
+frequencies in double-double, theta-series coefficients) and then evaluates the body
+angular momentum and the attitude at any times, vectorised and in cache-sized chunks.
+Each state is routed to one kernel:
+
+* :mod:`andoyer.free.triaxial` — SAM and LAM of a triaxial body (circular theta series
+  for ``k² ≤ 1/2``, hyperbolic for ``k² > 1/2``);
+* :mod:`andoyer.free.separatrix` — the separatrix ``2T = G²/B``;
+* :mod:`andoyer.free.uniform` — axisymmetric bodies, spheres, steady spins about a
+  principal axis and bodies at rest.
+
+Times are measured from the initial state.  Conventions (as the rest of ``andoyer``):
+moments ``I`` along body axes b1, b2, b3 in any order; body angular momentum ``m``;
+attitude quaternions scalar last, rotating body vectors into the reference frame.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from andoyer.free import constants as _const
+from andoyer.free import separatrix as _sep
+from andoyer.free import series
+from andoyer.free import triaxial as _tri
+from andoyer.free import uniform as _uni
+from andoyer.free.blocks import Group, evaluate_blocks
+from andoyer.free.regime import Regime, check_inputs, classify, normalise, polhode_frame
+
+__all__ = ["FreeMotion", "FreePeriods", "attitude", "momentum", "periods", "propagate"]
+
+class FreePeriods(NamedTuple):
+    """Periods of torque-free motion (arrays of the body shape).
+
+    Attributes
+    ----------
+    period : ndarray
+        Period of the body angular momentum ``m(t)`` (``4K/ω`` for a triaxial body,
+        ``2π/|λ|`` for regular precession).  ``inf`` where ``m`` never returns (the
+        separatrix) or never moves without a polhode of finite period (sphere,
+        axisymmetric body spinning about a transverse axis, rest); for a steady spin
+        about the polhode axis of a triaxial body it is the limit ``2π/ω`` of nearby
+        polhodes.
+    precession : ndarray
+        Angle by which the attitude turns about the fixed angular momentum over one
+        period: ``rot(t + T) = R(m̂_ref, precession) rot(t)``.  Given unwrapped, as the
+        advance of Andoyer's node angle ``g`` referred to the polhode axis (only its value
+        modulo 2π is frame independent).  ``inf`` with an infinite period, ``0`` at rest.
+    precession_rate : ndarray
+        Mean rate of that angle, ``precession/period`` (its limit ``G/B`` on the
+        separatrix, ``G/I`` for a sphere).
+    """
+
+    period: np.ndarray
+    precession: np.ndarray
+    precession_rate: np.ndarray
+
+
+class FreeMotion:
+    """Exact torque-free motion of many rigid bodies from their initial states.
+
+    Parameters
+    ----------
+    moments : array_like, shape (..., 3)
+        Principal moments along body axes b1, b2, b3 (any order, positive, triangle
+        inequality).
+    m0 : array_like, shape (..., 3)
+        Initial body-frame angular momentum.
+    q0 : array_like, shape (..., 4), optional
+        Initial attitude quaternions (scalar last, body → reference); normalised here.
+        Required for :meth:`attitude`.
+
+    Attributes
+    ----------
+    shape : tuple
+        Broadcast shape of the states.
+    regime : ndarray of int8
+        :class:`Regime` codes.
+    periods : FreePeriods
+        Period of ``m(t)`` and precession of the attitude per period.
+
+    Examples
+    --------
+    >>> fm = FreeMotion([1.0, 2.0, 3.0], [0.3, 0.2, 1.0], [0.0, 0.0, 0.0, 1.0])
+    >>> T = float(fm.periods.period)
+    >>> fm.momentum(T).round(12).tolist()
+    [0.3, 0.2, 1.0]
+    >>> fm.attitude([0.0, T]).shape
+    (2, 4)
+    """
+
+    def __init__(self, moments, m0, q0=None):
+        moments, m0 = check_inputs(moments, m0)
+        shape = moments.shape[:-1]
+        if q0 is not None:
+            q0 = np.asarray(q0, dtype=np.float64)
+            if q0.ndim == 0 or q0.shape[-1] != 4:
+                raise ValueError(f"expected q0 with shape (..., 4), got shape {q0.shape}")
+            norm = np.sqrt(np.sum(q0 * q0, axis=-1, keepdims=True))
+            if not np.all(np.isfinite(q0)) or np.any(norm == 0):
+                raise ValueError("expected finite, non-zero quaternions q0, got zero or non-finite")
+            q0 = q0 / norm
+            shape = np.broadcast_shapes(shape, q0.shape[:-1])
+            q0 = np.broadcast_to(q0, (*shape, 4)).reshape(-1, 4)
+        self.shape = shape
+        moments = np.broadcast_to(moments, (*shape, 3)).reshape(-1, 3)
+        m0 = np.broadcast_to(m0, (*shape, 3)).reshape(-1, 3)
+        n = moments.shape[0]
+        regime = classify(moments, m0)
+        # solve the scaled problem (powers of two, exact): internal time 2^(b−a) t
+        moments, m0, a, b = normalise(moments, m0)
+        tshift = b - a
+        self.regime = regime.reshape(shape)
+        self._has_attitude = q0 is not None
+        period = np.empty(n)
+        rate = np.empty(n)
+        groups = []
+
+        zeros = np.sum(m0 == 0, axis=-1)
+        triax = regime <= Regime.SEPARATRIX
+        spin = triax & (zeros >= 2)
+        sep = (regime == Regime.SEPARATRIX) & ~spin
+        tri = triax & ~sep & ~spin
+        if np.any(tri):
+            # a wobble whose square underflows (|m⊥| < 1e-154 |m|) is a steady spin
+            idx = np.nonzero(tri)[0]
+            frame = polhode_frame(moments[idx], m0[idx], regime[idx] == Regime.LAM)
+            flat = frame.P1[0] == 0
+            spin[idx[flat]] = True
+            tri[idx[flat]] = False
+        uni = ~triax | spin
+
+        if np.any(tri):
+            idx = np.nonzero(tri)[0]
+            frame = polhode_frame(moments[idx], m0[idx], regime[idx] == Regime.LAM)
+            const = _tri.triaxial(frame, None if q0 is None else q0[idx])
+            period[idx] = const.period
+            rate[idx] = const.precession_rate
+            for kind in (True, False):
+                sel = np.nonzero(const.circular == kind)[0]
+                if sel.size:
+                    groups.append((series.evaluate, idx[sel], _const.subset(const, sel)))
+        if np.any(sep):
+            idx = np.nonzero(sep)[0]
+            frame = polhode_frame(moments[idx], m0[idx], np.zeros(idx.size, dtype=bool))
+            const = _sep.separatrix(frame, None if q0 is None else q0[idx])
+            period[idx] = np.inf
+            rate[idx] = 2.0 * np.pi * const.spin.hi
+            groups.append((_sep.evaluate, idx, const))
+        if np.any(uni):
+            idx = np.nonzero(uni)[0]
+            axis, I_s, I_t = _uni.uniform_axes(moments[idx], m0[idx], regime[idx])
+            const = _uni.uniform(m0[idx], axis, I_s, I_t, None if q0 is None else q0[idx])
+            period[idx] = const.period
+            rate[idx] = const.precession_rate
+            lim = spin[idx] & (regime[idx] != Regime.SEPARATRIX)
+            if np.any(lim):  # steady spin about the polhode axis: the limit of nearby polhodes
+                j = idx[lim]
+                frame = polhode_frame(moments[j], m0[j], regime[j] == Regime.LAM)
+                e13, e23, G, w3 = frame.e13[0], frame.e23[0], frame.G[0], frame.w3[0]
+                om = G * np.sqrt(e13 * e23)
+                period[j] = 2.0 * np.pi / om
+                rate[j] = G * w3 + frame.s * om
+            groups.append((_uni.evaluate, idx, const))
+        self._groups = [Group(k, idx, c, tshift[idx], b[idx]) for k, idx, c in groups]
+        period = np.ldexp(period, -tshift)
+        rate = np.ldexp(rate, tshift)
+        with np.errstate(invalid="ignore"):
+            prec = np.where(rate == 0, 0.0, rate * period)
+        self.periods = FreePeriods(period.reshape(shape), prec.reshape(shape), rate.reshape(shape))
+
+    def momentum(self, t):
+        """Body angular momentum at times ``t`` after the initial state.
+
+        Parameters
+        ----------
+        t : array_like
+            Times, broadcast against the state shape.
+
+        Returns
+        -------
+        ndarray, shape (*broadcast(shape, t.shape), 3)
+
+        Examples
+        --------
+        >>> fm = FreeMotion([2.0, 2.0, 3.0], [0.5, 0.0, 1.0])
+        >>> fm.momentum(fm.periods.period / 4).round(12).tolist()
+        [0.0, 0.5, 1.0]
+        """
+        return self._evaluate(t, attitude=False)[0]
+
+    def attitude(self, t):
+        """Attitude quaternions (scalar last, body → reference) at times ``t``.
+
+        Parameters
+        ----------
+        t : array_like
+            Times, broadcast against the state shape.
+
+        Returns
+        -------
+        ndarray, shape (*broadcast(shape, t.shape), 4)
+            Unit quaternions (sign not normalised).
+
+        Examples
+        --------
+        >>> fm = FreeMotion([1.0, 1.0, 1.0], [0.0, 0.0, 0.5], [0.0, 0.0, 0.0, 1.0])
+        >>> fm.attitude(np.pi).round(12).tolist()  # half a turn about z at rate 0.5
+        [0.0, 0.0, 0.707106781187, 0.707106781187]
+        """
+        if not self._has_attitude:
+            raise ValueError("expected an initial attitude q0 to propagate the attitude, got None")
+        return self._evaluate(t, attitude=True)[1]
+
+    def propagate(self, t):
+        """Body angular momentum and attitude at times ``t``.
+
+        Parameters
+        ----------
+        t : array_like
+            Times, broadcast against the state shape.
+
+        Returns
+        -------
+        m : ndarray, shape (..., 3)
+        q : ndarray, shape (..., 4)
+
+        Examples
+        --------
+        >>> fm = FreeMotion([1.0, 2.0, 3.0], [0.3, 0.2, 1.0], [0.0, 0.0, 0.0, 1.0])
+        >>> m, q = fm.propagate(np.zeros(5))
+        >>> m.shape, q.shape
+        ((5, 3), (5, 4))
+        """
+        if not self._has_attitude:
+            raise ValueError("expected an initial attitude q0 to propagate the attitude, got None")
+        return self._evaluate(t, attitude=True)
+
+    def _evaluate(self, t, attitude):
+        t = np.asarray(t, dtype=np.float64)
+        if not np.all(np.isfinite(t)):
+            raise ValueError(f"expected finite times t, got {t[~np.isfinite(t)].ravel()[:3]}")
+        return evaluate_blocks(self._groups, self.shape, t, attitude)
+
+
+def periods(moments, m0):
+    """Period of the body angular momentum and precession of the attitude per period.
+
+    Parameters
+    ----------
+    moments : array_like, shape (..., 3)
+        Principal moments.
+    m0 : array_like, shape (..., 3)
+        Body angular momentum.
+
+    Returns
+    -------
+    FreePeriods
+
+    Examples
+    --------
+    >>> p = periods([1.0, 2.0, 3.0], [0.3, 0.2, 1.0])
+    >>> round(float(p.period), 10)
+    20.2049347381
+    """
+    return FreeMotion(moments, m0).periods
+
+
+def momentum(moments, m0, t):
+    """Body angular momentum of torque-free motion at times ``t`` (see :class:`FreeMotion`).
+
+    Parameters
+    ----------
+    moments, m0 : array_like, shape (..., 3)
+        Principal moments and initial body angular momentum.
+    t : array_like
+        Times since the initial state, broadcast against the states.
+
+    Returns
+    -------
+    ndarray, shape (..., 3)
+
+    Examples
+    --------
+    >>> momentum([1.0, 2.0, 3.0], [0.3, 0.2, 1.0], 0.0).tolist()
+    [0.3, 0.2, 1.0]
+    """
+    return FreeMotion(moments, m0).momentum(t)
+
+
+def attitude(moments, m0, q0, t):
+    """Attitude quaternions of torque-free motion at times ``t`` (see :class:`FreeMotion`).
+
+    Parameters
+    ----------
+    moments, m0 : array_like, shape (..., 3)
+        Principal moments and initial body angular momentum.
+    q0 : array_like, shape (..., 4)
+        Initial attitude (scalar last, body → reference).
+    t : array_like
+        Times since the initial state.
+
+    Returns
+    -------
+    ndarray, shape (..., 4)
+
+    Examples
+    --------
+    >>> attitude([1.0, 2.0, 3.0], [0.3, 0.2, 1.0], [0.0, 0.0, 0.0, 1.0], 0.0).round(15).tolist()
+    [0.0, 0.0, 0.0, 1.0]
+    """
+    return FreeMotion(moments, m0, q0).attitude(t)
+
+
+def propagate(moments, m0, q0, t):
+    """Body angular momentum and attitude of torque-free motion at times ``t``.
+
+    Parameters
+    ----------
+    moments, m0 : array_like, shape (..., 3)
+        Principal moments and initial body angular momentum.
+    q0 : array_like, shape (..., 4)
+        Initial attitude (scalar last, body → reference).
+    t : array_like
+        Times since the initial state.
+
+    Returns
+    -------
+    m : ndarray, shape (..., 3)
+    q : ndarray, shape (..., 4)
+
+    Examples
+    --------
+    >>> m, q = propagate([1.0, 2.0, 3.0], [0.3, 0.2, 1.0], [0.0, 0.0, 0.0, 1.0], [0.0, 1.0])
+    >>> m.shape, q.shape
+    ((2, 3), (2, 4))
+    """
+    return FreeMotion(moments, m0, q0).propagate(t)

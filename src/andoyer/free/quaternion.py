@@ -1,0 +1,135 @@
+"""Hamilton quaternion products on component arrays (scalar last, as scipy).
+
+A rotation ``rot`` (body → reference) is the unit quaternion ``q = (x, y, z, w)`` with
+``v_ref = q ⊗ (v_body, 0) ⊗ q*``; composition ``rot_a · rot_b`` is ``q_a ⊗ q_b``.
+Components are kept as separate arrays (a tuple of four) in the hot loops, so that
+numpy broadcasts per-body constants against per-epoch arrays without stacking.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["anchored_attitude", "qmul", "qmul_array", "shortest_arc"]
+
+
+def qmul(a, b):
+    """Hamilton product of quaternions given as 4-tuples of arrays ``(x, y, z, w)``.
+
+    Parameters
+    ----------
+    a, b : tuple of array_like
+        Components, broadcast together.
+
+    Returns
+    -------
+    tuple of ndarray
+        ``a ⊗ b``.
+
+    Examples
+    --------
+    >>> [float(c) for c in qmul((1.0, 0.0, 0.0, 0.0), (0.0, 1.0, 0.0, 0.0))]
+    [0.0, 0.0, 1.0, 0.0]
+    """
+    ax, ay, az, aw = a
+    bx, by, bz, bw = b
+    return (
+        aw * bx + ax * bw + ay * bz - az * by,
+        aw * by - ax * bz + ay * bw + az * bx,
+        aw * bz + ax * by - ay * bx + az * bw,
+        aw * bw - ax * bx - ay * by - az * bz,
+    )
+
+
+def qmul_array(a, b):
+    """Hamilton product of quaternion arrays of shape ``(..., 4)`` (scalar last).
+
+    Parameters
+    ----------
+    a, b : array_like, shape (..., 4)
+        Quaternions, broadcast together.
+
+    Returns
+    -------
+    ndarray, shape (..., 4)
+
+    Examples
+    --------
+    >>> qmul_array([0.0, 0.0, 0.0, 1.0], [0.5, 0.5, 0.5, 0.5]).tolist()
+    [0.5, 0.5, 0.5, 0.5]
+    """
+    a = np.asarray(a, dtype=np.float64)
+    b = np.asarray(b, dtype=np.float64)
+    return np.stack(qmul(np.moveaxis(a, -1, 0), np.moveaxis(b, -1, 0)), axis=-1)
+
+
+def shortest_arc(m):
+    """Rotation taking the direction of ``m`` to ``+z`` by the shortest arc.
+
+    ``S(m) = (m_y, −m_x, 0, |m| + m_z) / √(2|m|(|m| + m_z))``: the rotation about
+    ``m × z`` by the angle between them; regular wherever ``m`` is not along ``−z``.
+
+    Parameters
+    ----------
+    m : array_like, shape (..., 3)
+        Vectors with ``m_z > −|m|``.
+
+    Returns
+    -------
+    ndarray, shape (..., 4)
+
+    Examples
+    --------
+    >>> from scipy.spatial.transform import Rotation
+    >>> q = shortest_arc([1.0, 2.0, 2.0])
+    >>> Rotation.from_quat(q).apply([1.0, 2.0, 2.0]).round(12).tolist()
+    [0.0, 0.0, 3.0]
+    """
+    m = np.asarray(m, dtype=np.float64)
+    g = np.sqrt(np.sum(m * m, axis=-1))
+    w = g + m[..., 2]
+    q = np.stack([m[..., 1], -m[..., 0], np.zeros_like(w), w], axis=-1)
+    return q / np.sqrt(2.0 * g * w)[..., None]
+
+
+def anchored_attitude(c, half, arc, m3):
+    """Attitude ``(cos U + sin V) ⊗ (v, G + m₃)/√(2G(G + m₃))`` on component arrays.
+
+    The per-epoch end of the construction of
+    :func:`andoyer.free.regime.attitude_anchor`: ``(cos, sin)`` of ``Δψ/2`` combine the
+    constant quaternions ``U, V``, and the body-frame shortest-arc factor has the vector
+    part ``v = v_a x_a + v_b x_b`` (constant body vectors times per-epoch scalars).
+
+    Parameters
+    ----------
+    c : NamedTuple
+        Constants with fields ``quat_u``, ``quat_v`` (``(4, …)``) and ``G``.
+    half : tuple of ndarray
+        ``(cos(Δψ/2), sin(Δψ/2))``.
+    arc : tuple
+        ``((v_a, x_a), (v_b, x_b))``: vectors ``(3, …)`` and their scalar factors.
+    m3 : ndarray
+        Polhode-axis component of the momentum in the working frame.
+
+    Returns
+    -------
+    tuple of 4 ndarray
+        Quaternion components ``(x, y, z, w)``.
+
+    Examples
+    --------
+    >>> from collections import namedtuple
+    >>> C = namedtuple("C", "quat_u quat_v G")
+    >>> c = C(np.array([0.0, 0.0, 0.0, 1.0]), np.array([0.0, 0.0, 1.0, 0.0]), 1.0)
+    >>> e = np.eye(3)
+    >>> [float(x) for x in anchored_attitude(c, (1.0, 0.0), ((e[0], 0.0), (e[1], 0.0)), 1.0)]
+    [0.0, 0.0, 0.0, 1.0]
+    """
+    cz, sz = half
+    au = tuple(cz * c.quat_u[k] + sz * c.quat_v[k] for k in range(4))
+    w = c.G + m3
+    inv = 1.0 / np.sqrt((2.0 * c.G) * w)
+    (va, xa), (vb, xb) = arc
+    xa = xa * inv
+    xb = xb * inv
+    return qmul(au, (*(va[k] * xa + vb[k] * xb for k in range(3)), w * inv))

@@ -1,0 +1,277 @@
+r"""Exact torque-free motion of a triaxial body in SAM or LAM (off the separatrix).
+
+In the working frame of :mod:`andoyer.free.regime` (axis 3 the polhode axis, ``m₃ > 0``)
+the body angular momentum is (Jacobi; Gurfil et al. A.2 for SAM, with ``s`` for LAM)
+
+.. math::
+   m_1 = a_1 \operatorname{cn}\tau,\quad m_2 = s\,a_2 \operatorname{sn}\tau,\quad
+   m_3 = a_3 \operatorname{dn}\tau,\qquad \tau = \omega t + \tau_0,\quad
+   a_1^2 = \frac{P_1}{e_{13}},\ a_2^2 = \frac{P_1}{e_{23}},\ a_3^2 = \frac{P_3}{e_{13}},\
+   k^2 = \frac{e_{12} P_1}{e_{23} P_3},\ \omega^2 = e_{23} P_3 .
+
+Attitude.  With ``S(m)`` the shortest-arc rotation taking ``m`` to ``+z``
+(:func:`andoyer.free.quaternion.shortest_arc`), ``rot_w(t) = Q₀ R_z(Δψ(t)) S(m(t))``,
+where ``Q₀`` is fixed by the initial attitude and ``ψ = g + l`` (Andoyer's node plus
+proper-rotation angles, regular at ``J = 0``) obeys
+
+.. math:: \dot\psi = G w_3 + \frac{D - G^2 w_3}{G + m_3}.
+
+With ``c = a₃/G`` and ``f(τ) = 1/(1 + c dn τ)``, ``Δψ = G w₃ Δt + (sP₁/(Gω)) ∫f dτ``.
+``f`` is elliptic with periods ``2K, 4iK'`` and simple poles at ``±i v₀``, ``v₀ = 2K' − v₁``,
+``v₁ = F(arccot κ | m') = R_F(κ², κ² + m, 1 + κ²)``, ``κ² = e₁₂/e₂₃``, residues ``±iρ``,
+``ρ = G a₃ / (a₁² √(1 + κ²))``.  The partial-fraction expansion in ``ϑ₁(·|q²)`` then gives
+(``sP₁ρ/(Gω) = s`` exactly)
+
+.. math::
+   \Delta\psi = \Omega_\psi \Delta t + s\,[\Phi(\tau) - \Phi(\tau_0)],\qquad
+   \Phi(\tau) = \frac{\pi\tau}{K}
+      + 2\arg\vartheta_1\Big(\frac{\pi(\tau + i v_0)}{2K}\Big|q^2\Big),
+   \qquad \Omega_\psi = G w_3 + \frac{s P_1}{G}\langle f\rangle .
+
+``Φ`` is ``2K``-periodic modulo ``2π`` and only ``e^{iΦ/2}`` (up to sign) is needed, so
+no branch of ``arg`` has to be tracked.  For ``m ≤ 1/2`` the series in ``q² ≤ e^{−2π}`` is
+used directly ("circular"); for ``m > 1/2`` it is rewritten by Jacobi's imaginary
+transformation (DLMF 20.7.30) as a series in ``q* = √q' ≤ e^{−π/2}`` of hyperbolic
+functions plus a term linear in ``τ`` ("hyperbolic").  This replaces the incomplete
+integral of the third kind of the classical solution,
+``∫f dτ = [Π(−κ²; am τ | m) − c A(am τ)]/(1 − c²)`` with ``A(φ) = ∫dθ/(1 + κ² sin²θ)``
+(the characteristic of Sadov's ``Π(κ², λ)``, Gurfil eq. 143, in the other sign
+convention), by a few series terms per epoch, and avoids its cancellation near pure spin.
+The secular rate needs the complete ``Π(−κ²|m)``: it is taken from the AGM in
+double-double arithmetic (:func:`_secular_rate`), because ``Ω_ψ t`` reaches 10⁶ rad at
+100 periods of a fast spinner.
+
+Numbers are carried so that the phase stays exact over long times: the polhode frequency
+``ω/4K`` and ``Ω_ψ/2π`` are double-doubles (``K`` from the AGM on ``1 − k²`` formed without
+cancellation), multiplied by the time error-free (:mod:`andoyer.free.phase`).
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+from scipy import special as sc
+
+from andoyer.free import series
+from andoyer.free.constants import rows
+from andoyer.free.phase import Frequency, frequency
+from andoyer.free.regime import PolhodeFrame, attitude_anchor, working_axes
+from andoyer.special.agm import ellippi_dd
+from andoyer.special.compensated import PI_DD, dd_add, dd_div, dd_mul, dd_sqrt, split
+from andoyer.special.theta import lattice
+
+__all__ = ["Triaxial", "triaxial"]
+
+_TWO_PI = (2.0 * PI_DD[0], 2.0 * PI_DD[1])
+
+
+class Triaxial(NamedTuple):
+    """Per-state constants of the triaxial solution (arrays; vectors are ``(3, N)``).
+
+    Attributes
+    ----------
+    circular : ndarray of bool
+        ``k² ≤ 1/2`` (circular theta series) or not (hyperbolic).
+    nu : Frequency
+        Polhode frequency ``ω/(4K)`` in cycles per unit time (double-double).
+    frac0 : ndarray
+        Initial polhode phase ``τ₀/(4K)``.
+    q, c_sn, c_cn, c_dn : ndarray
+        Theta-quotient constants (:class:`andoyer.special.theta.ThetaLattice`).
+    kk : ndarray
+        ``2πK/K'``: hyperbolic variable per cycle.
+    mu_cn, mu_sn, mu_dn : ndarray, shape (3, N)
+        Body-frame vectors with ``m = (mu_cn ϑ_cn + mu_sn ϑ_sn + mu_dn ϑ_dn)/ϑ₄``: the
+        amplitudes ``a₁, s a₂, a₃`` along the working axes times the theta-quotient
+        constants ``c_cn, c_sn, c_dn``, so that ``m`` needs no separate ``sn, cn, dn``.
+    s : ndarray
+        ``+1`` SAM, ``−1`` LAM.
+    nu_psi : Frequency
+        Secular rate of ``ψ`` in cycles per unit time.
+    wa, wb : ndarray, shape (6, N)
+        Coefficients of the ``ϑ₁`` series of ``Φ`` (``wb`` carries the factor ``s``).
+    slope : ndarray
+        The part of ``sΦ/2`` linear in the polhode phase that is not in the series, in
+        cycles per polhode cycle: ``s`` (circular, per unreduced cycle) or ``s v₁/(2K')``
+        (hyperbolic, per reduced cycle).
+    psi0 : ndarray
+        Offset of the ``ψ`` phase (cycles) that makes ``Δψ(0) = 0``.
+    quat_u, quat_v : ndarray, shape (4, N)
+        ``Q₀ ⊗ P`` and ``Q₀ ⊗ e_z ⊗ P`` (zero when no attitude was given).
+    v_sn, v_cn : ndarray, shape (3, N)
+        Body-frame vector part of the shortest-arc factor: ``v_sn sn τ + v_cn cn τ``.
+    G, a3 : ndarray
+        ``|m|`` and the amplitude of ``m₃``.
+    period, precession_rate : ndarray
+        ``4K/ω`` and the mean rate of Andoyer's ``g`` about the polhode axis.
+    """
+
+    circular: np.ndarray
+    nu: Frequency
+    frac0: np.ndarray
+    q: np.ndarray
+    c_sn: np.ndarray
+    c_cn: np.ndarray
+    c_dn: np.ndarray
+    kk: np.ndarray
+    mu_cn: np.ndarray
+    mu_sn: np.ndarray
+    mu_dn: np.ndarray
+    s: np.ndarray
+    nu_psi: Frequency
+    wa: np.ndarray
+    wb: np.ndarray
+    slope: np.ndarray
+    psi0: np.ndarray
+    quat_u: np.ndarray
+    quat_v: np.ndarray
+    v_sn: np.ndarray
+    v_cn: np.ndarray
+    G: np.ndarray
+    a3: np.ndarray
+    period: np.ndarray
+    precession_rate: np.ndarray
+
+
+def _initial_tau(mw, amplitudes, s, K):
+    """``τ₀ = F(am τ₀ | m)`` from the measured ``cn, sn, dn`` (Carlson, no cancellation)."""
+    a1, a2, a3 = amplitudes
+    cn0 = mw[:, 0] / a1
+    sn0 = mw[:, 1] / (s * a2)
+    dn0 = mw[:, 2] / a3
+    rf = sc.elliprf(cn0 * cn0, dn0 * dn0, 1.0)
+    return np.where(cn0 >= 0, sn0 * rf, np.copysign(2.0 * K, sn0) - sn0 * rf)
+
+
+def _theta_circular(q, v1, K):
+    """Coefficients of ``ϑ₁(x + iy₀ | q²)`` scaled by ``e^{−y₀} q^{−1/2}/2`` (circular case).
+
+    ``e^{2y₀} = η/q²`` with ``η = e^{−πv₁/K}``; the ``n``-th terms are
+    ``(−1)ⁿ(q^{2n²}ηⁿ ± q^{2(n+1)²}η^{−n−1})``, three of them reach ``q^{18} < 10⁻²⁴``.
+    """
+    qt = q * q
+    eta = np.exp(-np.pi * v1 / K)
+    wa = np.zeros((6, q.size))
+    wb = np.zeros((6, q.size))
+    for n in range(3):
+        head = qt ** (n * n) * eta**n
+        tail = qt ** ((n + 1) ** 2) * eta ** (-(n + 1))
+        sgn = (-1.0) ** n
+        wa[n] = sgn * (head + tail)
+        wb[n] = sgn * (head - tail)
+    return wa, wb
+
+
+def _theta_hyperbolic(q, v1, Kp):
+    """Coefficients of ``ϑ₁(a + ib | q*)``, ``q* = √q'``, ``a = −πv₀/(4K')`` (hyperbolic case).
+
+    Six terms reach ``q*^{25} < 10⁻¹⁷`` at the worst nome ``q* = e^{−π/2}`` (``m = 1/2``).
+    """
+    qs = np.sqrt(q)
+    a = -0.5 * np.pi + 0.25 * np.pi * v1 / Kp
+    wa = np.zeros((6, q.size))
+    wb = np.zeros((6, q.size))
+    for n in range(6):
+        amp = (-1.0) ** n * qs ** (n * n + n)
+        wa[n] = amp * np.sin((2 * n + 1) * a)
+        wb[n] = amp * np.cos((2 * n + 1) * a)
+    return wa, wb
+
+
+def _secular_rate(frame: PolhodeFrame, mc_dd, K_dd):
+    """``Ω_ψ = G w₃ + s G e₁₃ [Π(−κ²|m) − cπ/(2√(1+κ²))]/K`` in double-double.
+
+    This is ``G w₃ + (sP₁/G)⟨1/(1 + c dn)⟩`` with ``⟨·⟩`` written through the complete
+    integral of the third kind (``(sP₁/G)/(K(1 − c²)) = sGe₁₃/K``).  Both terms can be
+    large and of opposite signs (a LAM body turns about its polhode axis far more
+    slowly than ``G/I₃``), so the mean is needed beyond double precision: at 100 periods
+    ``Ω_ψ t`` may be 10⁶ rad.  Π comes from the AGM (DLMF 19.8.6) in double-double.
+    """
+    kap2 = dd_div(*frame.e12, *frame.e23)
+    pi3 = ellippi_dd(-kap2[0], -kap2[1], *mc_dd)
+    c = dd_div(*dd_sqrt(*dd_div(*frame.P3, *frame.e13)), *frame.G)
+    root = dd_sqrt(*dd_div(*frame.e23, *frame.e13))  # 1/√(1 + κ²)
+    t = dd_mul(*dd_mul(*c, *root), 0.5 * PI_DD[0], 0.5 * PI_DD[1])
+    bracket = dd_add(*pi3, -t[0], -t[1])
+    corr = dd_div(*dd_mul(*dd_mul(*frame.G, *frame.e13), *bracket), *K_dd)
+    return dd_add(*dd_mul(*frame.G, *frame.w3), frame.s * corr[0], frame.s * corr[1])
+
+
+def triaxial(frame: PolhodeFrame, q0=None):
+    """Constants of the triaxial solution for states off the separatrix and off pure spin.
+
+    Parameters
+    ----------
+    frame : PolhodeFrame
+        Working frame and invariants (``P₁ > 0``, ``P₂ ≠ 0``).
+    q0 : ndarray, shape (N, 4), optional
+        Initial attitude quaternions (scalar last, body → reference, unit norm).
+
+    Returns
+    -------
+    Triaxial
+
+    Examples
+    --------
+    >>> from andoyer.free.regime import polhode_frame
+    >>> fr = polhode_frame(np.array([[1.0, 2.0, 3.0]]), np.array([[0.3, 0.2, 1.0]]),
+    ...                    np.array([False]))
+    >>> round(float(triaxial(fr).period[0]), 10)
+    20.2049347381
+    """
+    hi = lambda p: p[0]  # noqa: E731
+    e12, e13, e23, P1, P3, G = (
+        hi(x) for x in (frame.e12, frame.e13, frame.e23, frame.P1, frame.P3, frame.G)
+    )
+    s = frame.s
+    a1 = np.sqrt(P1 / e13)
+    a2 = np.sqrt(P1 / e23)
+    a3 = np.sqrt(P3 / e13)
+    den = dd_mul(*frame.e23, *frame.P3)
+    m = dd_div(*dd_mul(*frame.e12, *frame.P1), *den)[0]
+    mc_hi, mc_lo = dd_div(*dd_mul(*frame.e13, *frame.P2), *den)
+    lat = lattice(m, mc_hi, mc_lo)
+    K, Kp = lat.K_hi, lat.Kp
+    om = dd_sqrt(*den)
+    nu = dd_div(*om, 4.0 * lat.K_hi, 4.0 * lat.K_lo)
+    frac0 = _initial_tau(frame.mw, (a1, a2, a3), s, K) / (4.0 * K)
+
+    kappa2 = e12 / e23
+    v1 = sc.elliprf(kappa2, kappa2 + m, 1.0 + kappa2)
+    circ = lat.circular
+    wa, wb = _theta_circular(lat.q, v1, K)
+    wa_h, wb_h = _theta_hyperbolic(lat.q, v1, Kp)
+    wa = np.where(circ, wa, wa_h)
+    wb = np.where(circ, wb, wb_h) * s
+    rate = _secular_rate(frame, (mc_hi, mc_lo), (lat.K_hi, lat.K_lo))
+    nu_psi = dd_div(*rate, *_TWO_PI)
+    slope = s * np.where(circ, 1.0, 0.5 * v1 / Kp)
+
+    cols = working_axes(frame)
+    period = 1.0 / nu[0]
+    const = Triaxial(
+        circular=circ, nu=frequency(*nu), frac0=frac0, q=lat.q, c_sn=lat.c_sn, c_cn=lat.c_cn,
+        c_dn=lat.c_dn, kk=2.0 * np.pi * K / Kp,
+        mu_cn=a1 * lat.c_cn * cols[0], mu_sn=s * a2 * lat.c_sn * cols[1],
+        mu_dn=a3 * lat.c_dn * cols[2],
+        s=s, nu_psi=frequency(*nu_psi), wa=wa, wb=wb, slope=slope, psi0=np.zeros_like(s),
+        quat_u=np.zeros((4, s.size)), quat_v=np.zeros((4, s.size)),
+        v_sn=s * a2 * cols[0], v_cn=-a1 * cols[1], G=G, a3=a3,
+        period=period, precession_rate=rate[0] + 2.0 * np.pi * s / period,
+    )
+    if q0 is None:
+        return const
+    # the ψ phase that makes Δψ(0) = 0, from the kernels themselves (to round-off)
+    psi0 = np.empty_like(s)
+    zero = np.zeros(1)
+    for kind, kernel in ((True, series.circular), (False, series.hyperbolic)):
+        sel = np.nonzero(circ == kind)[0]
+        if sel.size:
+            sub = rows(const, sel)
+            _, _, phase = kernel(sub, zero, split(zero), True)
+            cz, sz = series.half_angle(sub, zero, split(zero), phase)
+            psi0[sel] = -np.arctan2(sz, cz)[:, 0] / np.pi
+    const = const._replace(psi0=psi0)
+    quat_u, quat_v = attitude_anchor(frame, cols, q0)
+    return const._replace(quat_u=quat_u, quat_v=quat_v)
