@@ -14,12 +14,14 @@ Examples
 0.500032721584
 """
 
-from andoyer import bodies, charts, liepoisson, perturbations, series, theories
+from andoyer import bodies, charts, free, integrate, liepoisson, perturbations, series, special, theories
 from andoyer.body import RigidBody, RotationMode, Symmetry
 from andoyer.charts import SingularChartWarning
+from andoyer.free import FreeRotation
 from andoyer.state import State
 
 __all__ = [
+    "FreeRotation",
     "RigidBody",
     "RotationMode",
     "SingularChartWarning",
@@ -27,9 +29,12 @@ __all__ = [
     "Symmetry",
     "bodies",
     "charts",
+    "free",
+    "integrate",
     "liepoisson",
     "perturbations",
     "series",
+    "special",
     "theories",
 ]
 

@@ -36,8 +36,7 @@ def _check(case, multiples):
 
 def test_cases_cover_every_regime():
     regimes = {int(FreeMotion(c[1], c[2]).regime) for c in CASES}
-    assert regimes >= {Regime.SAM, Regime.LAM, Regime.SEPARATRIX, Regime.AXISYMMETRIC,
-                       Regime.SPHERE}
+    assert regimes >= {Regime.SAM, Regime.LAM, Regime.SEPARATRIX, Regime.AXISYMMETRIC, Regime.SPHERE}
     assert len(CASES) >= 20
 
 
@@ -59,8 +58,7 @@ def test_reference_conserves_the_invariants():
     m, q = ref.advance_to(3.1 * t_unit)
     with mp.workdps(50):
         g0 = mp.fsum(mp.mpf(float(x)) ** 2 for x in m0)
-        e0 = mp.fsum(mp.mpf(float(x)) ** 2 / mp.mpf(float(i))
-                     for x, i in zip(m0, moments, strict=True))
+        e0 = mp.fsum(mp.mpf(float(x)) ** 2 / mp.mpf(float(i)) for x, i in zip(m0, moments, strict=True))
         g1 = mp.fsum(x**2 for x in m)
         e1 = mp.fsum(x**2 / mp.mpf(float(i)) for x, i in zip(m, moments, strict=True))
         assert abs(g1 / g0 - 1) < mp.mpf(10) ** -30

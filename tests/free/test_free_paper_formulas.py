@@ -71,8 +71,11 @@ def test_a2_solution_matches_the_exact_motion():
         u0 = mp.ellipf(mp.atan2(M0[1] / G / b, M0[0] / G / a), k2)
         for t in (0.7, 5.0, 40.0):
             u = u0 + n * t
-            paper = [G * a * mp.ellipfun("cn", u, m=k2), G * b * mp.ellipfun("sn", u, m=k2),
-                     G * mp.sqrt(1 - a**2) * mp.ellipfun("dn", u, m=k2)]
+            paper = [
+                G * a * mp.ellipfun("cn", u, m=k2),
+                G * b * mp.ellipfun("sn", u, m=k2),
+                G * mp.sqrt(1 - a**2) * mp.ellipfun("dn", u, m=k2),
+            ]
             got = fm.momentum(t)
             assert max(abs(float(p) - g) for p, g in zip(paper, got, strict=True)) < 4e-15
 
@@ -82,8 +85,12 @@ def test_a2_solution_matches_the_exact_motion():
 
 @pytest.mark.parametrize("ell", [0.3, 1.1, 2.5])
 def test_s5_eq140_L_squared(ell):
-    printed = G**2 * KAP2 / (KAP2 + LAM2) * (1 - LAM2 + (KAP2 + LAM2) * np.sin(ell) ** 2) / (
-        1 + KAP2 * np.sin(ell) ** 2
+    printed = (
+        G**2
+        * KAP2
+        / (KAP2 + LAM2)
+        * (1 - LAM2 + (KAP2 + LAM2) * np.sin(ell) ** 2)
+        / (1 + KAP2 * np.sin(ell) ** 2)
     )
     assert abs(float(_L(ell)) ** 2 - printed) < 1e-15
 
@@ -142,8 +149,14 @@ def test_s5_eq145_derivative_of_the_action():
 
     with mp.workdps(30):
         lam = mp.sqrt(LAM2)
-        eq145 = -G * 2 * mp.sqrt(KAP2) * lam * mp.sqrt(1 + KAP2) * mp.ellipk(LAM2) / (
-            mp.pi * (KAP2 + LAM2) ** 1.5
+        eq145 = (
+            -G
+            * 2
+            * mp.sqrt(KAP2)
+            * lam
+            * mp.sqrt(1 + KAP2)
+            * mp.ellipk(LAM2)
+            / (mp.pi * (KAP2 + LAM2) ** 1.5)
         )
         assert abs(mp.diff(action, lam) - eq145) < 1e-14
 
@@ -167,8 +180,12 @@ def test_s5_eq147_angles_are_linear_in_time_along_the_exact_motion():
         pc = _pi_gurfil(KAP2, LAM2)
         F = [mp.ellipf(x, LAM2) for x in z]
         phi_l = np.array([float(mp.pi / 2 * f / K) for f in F])
-        phi_g = np.array([float(gi + pre * (_pi_gurfil(KAP2, LAM2, x) - pc * f / K))
-                          for gi, x, f in zip(g, z, F, strict=True)])
+        phi_g = np.array(
+            [
+                float(gi + pre * (_pi_gurfil(KAP2, LAM2, x) - pc * f / K))
+                for gi, x, f in zip(g, z, F, strict=True)
+            ]
+        )
     for phi, rate in ((phi_l, -2 * np.pi / T), (phi_g, float(fm.periods.precession_rate))):
         fit = np.polyfit(t, phi, 1)
         assert np.max(np.abs(phi - np.polyval(fit, t))) < 1e-12

@@ -67,8 +67,7 @@ def test_invariants_are_conserved_to_round_off():
 # -- periods and precession --------------------------------------------------------------
 
 
-@pytest.mark.parametrize("case", [c for c in CASES if c[4] is not None][:12],
-                         ids=lambda c: c[0])
+@pytest.mark.parametrize("case", [c for c in CASES if c[4] is not None][:12], ids=lambda c: c[0])
 def test_period_matches_the_classical_formula(case):
     name, moments, m0, _, _ = case
     ref = polhode_period(moments, m0)
@@ -87,8 +86,9 @@ def test_momentum_is_periodic_and_attitude_precesses_per_period():
     m2, q2 = fm.propagate(t + T)
     assert np.max(np.linalg.norm(m2 - m1, axis=-1) / np.linalg.norm(m0, axis=-1)) < 1e-13
     axis = Rotation.from_quat(q0).apply(m0)
-    turn = Rotation.from_rotvec(axis / np.linalg.norm(axis, axis=-1)[:, None]
-                                * fm.periods.precession[:, None])
+    turn = Rotation.from_rotvec(
+        axis / np.linalg.norm(axis, axis=-1)[:, None] * fm.periods.precession[:, None]
+    )
     assert np.max(_angle(turn * Rotation.from_quat(q1), Rotation.from_quat(q2))) < 1e-12
 
 

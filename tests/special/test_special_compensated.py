@@ -79,8 +79,16 @@ def test_pi_double_double_matches_mpmath():
 
 
 @pytest.mark.parametrize(
-    ("mc", "digits"), [(0.5, 30), (1e-3, 30), (1e-10, 30), (1e-40, 30), (2.0, 30), (1.0, 30),
-                       (1e-300, 25)]  # the low parts underflow below 1e-290
+    ("mc", "digits"),
+    [
+        (0.5, 30),
+        (1e-3, 30),
+        (1e-10, 30),
+        (1e-40, 30),
+        (2.0, 30),
+        (1.0, 30),
+        (1e-300, 25),
+    ],  # the low parts underflow below 1e-290
 )
 def test_ellipk_dd_has_double_double_accuracy(mc, digits):
     hi, lo = ellipk_dd(mc)

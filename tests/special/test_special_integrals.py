@@ -80,9 +80,7 @@ def test_ellipeinc_matches_mpmath(seed):
             assert _rel(g, mp.ellipe(float(p), _m(c))) <= 6 * EPS
 
 
-@pytest.mark.parametrize(
-    ("n_range", "bound"), [((-10.0, 0.9), 8 * EPS), ((-1e3, -10.0), 30 * EPS)]
-)
+@pytest.mark.parametrize(("n_range", "bound"), [((-10.0, 0.9), 8 * EPS), ((-1e3, -10.0), 30 * EPS)])
 def test_ellippiinc_matches_mpmath(n_range, bound):
     # Large negative characteristics cancel between the R_F and R_J terms (DLMF 19.25.14):
     # the error grows like √|n| ulps (documented in the module).

@@ -9,10 +9,12 @@ spheres, steady spins and rest.  See :mod:`andoyer.free.motion`.
 
 from andoyer.free.motion import FreeMotion, FreePeriods, attitude, momentum, periods, propagate
 from andoyer.free.regime import Regime, classify
+from andoyer.free.rotation import FreeRotation
 
 __all__ = [
     "FreeMotion",
     "FreePeriods",
+    "FreeRotation",
     "Regime",
     "attitude",
     "classify",

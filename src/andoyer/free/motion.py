@@ -32,6 +32,7 @@ from andoyer.free.regime import Regime, check_inputs, classify, normalise, polho
 
 __all__ = ["FreeMotion", "FreePeriods", "attitude", "momentum", "periods", "propagate"]
 
+
 class FreePeriods(NamedTuple):
     """Periods of torque-free motion (arrays of the body shape).
 

@@ -111,9 +111,7 @@ def check_inputs(moments, m0):
     s = np.sort(moments, axis=-1)
     bad = s[..., 2] > (s[..., 0] + s[..., 1]) * (1.0 + _TRIANGLE_TOL)
     if np.any(bad):
-        raise ValueError(
-            f"expected moments satisfying the triangle inequality A + B >= C, got {s[bad][:3]}"
-        )
+        raise ValueError(f"expected moments satisfying the triangle inequality A + B >= C, got {s[bad][:3]}")
     shape = np.broadcast_shapes(moments.shape, m0.shape)
     return np.broadcast_to(moments, shape), np.broadcast_to(m0, shape)
 

@@ -112,11 +112,20 @@ def separatrix(frame: PolhodeFrame, q0=None):
     if q0 is not None:
         quat_u, quat_v = attitude_anchor(frame, cols, q0)
     return Separatrix(
-        omega=omega, tau0=tau0,
-        u_sech=sigma * (a1 * cols[0]) + a3 * cols[2], u_tanh=sigma * a2 * cols[1],
-        spin=frequency(*spin), r=r, coef=coef, art0=np.arctan(r * np.tanh(0.5 * tau0)),
-        quat_u=quat_u, quat_v=quat_v,
-        v_tanh=sigma * a2 * cols[0], v_sech=-sigma * a1 * cols[1], G=G, a3=a3,
+        omega=omega,
+        tau0=tau0,
+        u_sech=sigma * (a1 * cols[0]) + a3 * cols[2],
+        u_tanh=sigma * a2 * cols[1],
+        spin=frequency(*spin),
+        r=r,
+        coef=coef,
+        art0=np.arctan(r * np.tanh(0.5 * tau0)),
+        quat_u=quat_u,
+        quat_v=quat_v,
+        v_tanh=sigma * a2 * cols[0],
+        v_sech=-sigma * a1 * cols[1],
+        G=G,
+        a3=a3,
     )
 
 

@@ -95,8 +95,7 @@ def circular(c, t, tt, attitude):
             even = even + term
     inv = 1.0 / (1.0 + 2.0 * (even - odd))
     th3 = 1.0 + 2.0 * (even + odd)
-    m = tuple(inv * (c.mu_cn[k] * num_c + c.mu_sn[k] * num_s + c.mu_dn[k] * th3)
-              for k in range(3))
+    m = tuple(inv * (c.mu_cn[k] * num_c + c.mu_sn[k] * num_s + c.mu_dn[k] * th3) for k in range(3))
     if not attitude:
         return m, None, None
     sn, cn, dn = c.c_sn * inv * num_s, c.c_cn * inv * num_c, c.c_dn * inv * th3

@@ -221,9 +221,7 @@ def triaxial(frame: PolhodeFrame, q0=None):
     20.2049347381
     """
     hi = lambda p: p[0]  # noqa: E731
-    e12, e13, e23, P1, P3, G = (
-        hi(x) for x in (frame.e12, frame.e13, frame.e23, frame.P1, frame.P3, frame.G)
-    )
+    e12, e13, e23, P1, P3, G = (hi(x) for x in (frame.e12, frame.e13, frame.e23, frame.P1, frame.P3, frame.G))
     s = frame.s
     a1 = np.sqrt(P1 / e13)
     a2 = np.sqrt(P1 / e23)
@@ -251,14 +249,31 @@ def triaxial(frame: PolhodeFrame, q0=None):
     cols = working_axes(frame)
     period = 1.0 / nu[0]
     const = Triaxial(
-        circular=circ, nu=frequency(*nu), frac0=frac0, q=lat.q, c_sn=lat.c_sn, c_cn=lat.c_cn,
-        c_dn=lat.c_dn, kk=2.0 * np.pi * K / Kp,
-        mu_cn=a1 * lat.c_cn * cols[0], mu_sn=s * a2 * lat.c_sn * cols[1],
+        circular=circ,
+        nu=frequency(*nu),
+        frac0=frac0,
+        q=lat.q,
+        c_sn=lat.c_sn,
+        c_cn=lat.c_cn,
+        c_dn=lat.c_dn,
+        kk=2.0 * np.pi * K / Kp,
+        mu_cn=a1 * lat.c_cn * cols[0],
+        mu_sn=s * a2 * lat.c_sn * cols[1],
         mu_dn=a3 * lat.c_dn * cols[2],
-        s=s, nu_psi=frequency(*nu_psi), wa=wa, wb=wb, slope=slope, psi0=np.zeros_like(s),
-        quat_u=np.zeros((4, s.size)), quat_v=np.zeros((4, s.size)),
-        v_sn=s * a2 * cols[0], v_cn=-a1 * cols[1], G=G, a3=a3,
-        period=period, precession_rate=rate[0] + 2.0 * np.pi * s / period,
+        s=s,
+        nu_psi=frequency(*nu_psi),
+        wa=wa,
+        wb=wb,
+        slope=slope,
+        psi0=np.zeros_like(s),
+        quat_u=np.zeros((4, s.size)),
+        quat_v=np.zeros((4, s.size)),
+        v_sn=s * a2 * cols[0],
+        v_cn=-a1 * cols[1],
+        G=G,
+        a3=a3,
+        period=period,
+        precession_rate=rate[0] + 2.0 * np.pi * s / period,
     )
     if q0 is None:
         return const

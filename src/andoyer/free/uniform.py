@@ -111,10 +111,17 @@ def uniform(m0, axis, I_s, I_t, q0=None):
     with np.errstate(divide="ignore"):
         period = np.abs(1.0 / lam[0])
     const = Uniform(
-        spin=frequency(*spin), body=frequency(*lam),
-        m_par=m_par.T, m_perp=m_perp.T, m_cross=m_cross.T,
-        q1=np.zeros((4, n)), q2=np.zeros((4, n)), q3=np.zeros((4, n)), q4=np.zeros((4, n)),
-        period=period, precession_rate=2.0 * np.pi * spin[0],
+        spin=frequency(*spin),
+        body=frequency(*lam),
+        m_par=m_par.T,
+        m_perp=m_perp.T,
+        m_cross=m_cross.T,
+        q1=np.zeros((4, n)),
+        q2=np.zeros((4, n)),
+        q3=np.zeros((4, n)),
+        q4=np.zeros((4, n)),
+        period=period,
+        precession_rate=2.0 * np.pi * spin[0],
     )
     if q0 is None:
         return const
@@ -125,8 +132,9 @@ def uniform(m0, axis, I_s, I_t, q0=None):
     mq = (*m_hat.T, np.zeros(n))
     q1 = tuple(q0.T)
     q2 = qmul(q1, sq_)
-    return const._replace(q1=np.stack(q1), q2=np.stack(q2), q3=np.stack(qmul(mq, q1)),
-                          q4=np.stack(qmul(mq, q2)))
+    return const._replace(
+        q1=np.stack(q1), q2=np.stack(q2), q3=np.stack(qmul(mq, q1)), q4=np.stack(qmul(mq, q2))
+    )
 
 
 def uniform_axes(moments, m0, regime):

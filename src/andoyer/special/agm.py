@@ -38,9 +38,7 @@ def agm_dd(ah, al, bh, bl):
     >>> float(hi)
     1.4567910310469068
     """
-    ah, al, bh, bl = np.broadcast_arrays(
-        *(np.asarray(x, dtype=np.float64) for x in (ah, al, bh, bl))
-    )
+    ah, al, bh, bl = np.broadcast_arrays(*(np.asarray(x, dtype=np.float64) for x in (ah, al, bh, bl)))
     zero = (ah == 0) | (bh == 0)
     ah, al = np.where(zero, 1.0, ah), np.where(zero, 0.0, al)
     bh, bl = np.where(zero, 1.0, bh), np.where(zero, 0.0, bl)

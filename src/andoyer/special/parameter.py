@@ -60,7 +60,6 @@ def parameter_pair(m, mc=None, *, lower=-np.inf, upper=1.0):
     off = np.abs((m - 1.0) + mc) > _TOL * np.maximum(1.0, np.abs(m))
     if np.any(off | (mc < 1.0 - upper)):
         raise ValueError(
-            f"expected mc = 1 - m (to 8 eps), got m = {m[off].ravel()[:3]}, "
-            f"mc = {mc[off].ravel()[:3]}"
+            f"expected mc = 1 - m (to 8 eps), got m = {m[off].ravel()[:3]}, mc = {mc[off].ravel()[:3]}"
         )
     return m, mc

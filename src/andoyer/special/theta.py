@@ -101,8 +101,11 @@ def lattice(m, mc, mc_lo=0.0):
     circular = m <= 0.5
     K_hi, K_lo = ellipk_dd(mc, mc_lo)
     Kp, _ = ellipk_dd(m)
-    q = np.where(circular, _nome(np.minimum(m, 0.5), np.maximum(mc, 0.5)),
-                 _nome(np.minimum(mc, 0.5), np.maximum(m, 0.5)))
+    q = np.where(
+        circular,
+        _nome(np.minimum(m, 0.5), np.maximum(mc, 0.5)),
+        _nome(np.minimum(mc, 0.5), np.maximum(m, 0.5)),
+    )
     q2 = q * q
     q4 = q2 * q2
     q9 = q4 * q4 * q
