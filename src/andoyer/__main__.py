@@ -1,0 +1,7 @@
+"""``python -m andoyer`` runs the command line."""
+
+import sys
+
+from andoyer.cli import main
+
+sys.exit(main())

@@ -1,0 +1,96 @@
+"""Vectorised unit-quaternion arithmetic, scalar-last ``(x, y, z, w)`` as in scipy.
+
+The hub state keeps its attitude as quaternions so that chart conversions on
+millions of states are a handful of numpy expressions, with no per-state
+Python work and no round trip through rotation matrices.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+
+from andoyer._fastmath import wrap_2pi
+
+Array = NDArray[np.float64]
+
+
+def multiply(p: Array, q: Array) -> Array:
+    """Hamilton product ``p ⊗ q`` (active rotations compose as ``R(p) R(q)``)."""
+    px, py, pz, pw = np.moveaxis(p, -1, 0)
+    qx, qy, qz, qw = np.moveaxis(q, -1, 0)
+    return np.stack(
+        [
+            pw * qx + px * qw + py * qz - pz * qy,
+            pw * qy - px * qz + py * qw + pz * qx,
+            pw * qz + px * qy - py * qx + pz * qw,
+            pw * qw - px * qx - py * qy - pz * qz,
+        ],
+        axis=-1,
+    )
+
+
+def conjugate(q: Array) -> Array:
+    """Inverse of a unit quaternion."""
+    return q * np.array([-1.0, -1.0, -1.0, 1.0])
+
+
+def rotate(q: Array, v: Array) -> Array:
+    """Apply the rotation of unit quaternions ``q`` (..., 4) to vectors ``v`` (..., 3)."""
+    u = q[..., :3]
+    w = q[..., 3:]
+    t = 2.0 * np.cross(u, v)
+    return v + w * t + np.cross(u, t)
+
+
+def from_zxz(a: Array, b: Array, c: Array) -> Array:
+    """Quaternion of ``Rz(a) Rx(b) Rz(c)`` (intrinsic 3-1-3 sequence), shape (..., 4).
+
+    ``w = cos(b/2) cos((a+c)/2)``, ``z = cos(b/2) sin((a+c)/2)``,
+    ``x = sin(b/2) cos((a-c)/2)``, ``y = sin(b/2) sin((a-c)/2)``.
+    """
+    half_sum = 0.5 * (a + c)
+    half_diff = 0.5 * (a - c)
+    cb, sb = np.cos(0.5 * b), np.sin(0.5 * b)
+    return np.stack(
+        [sb * np.cos(half_diff), sb * np.sin(half_diff), cb * np.sin(half_sum), cb * np.cos(half_sum)],
+        axis=-1,
+    )
+
+
+def from_xz(b: Array, c: Array) -> Array:
+    """Quaternion of ``Rx(b) Rz(c)``, shape (..., 4)."""
+    cb, sb = np.cos(0.5 * b), np.sin(0.5 * b)
+    cc, sc = np.cos(0.5 * c), np.sin(0.5 * c)
+    return np.stack([sb * cc, -sb * sc, cb * sc, cb * cc], axis=-1)
+
+
+def to_zxz(q: Array, tol: float = 0.0) -> tuple[Array, Array, Array, Array]:
+    """Angles ``(a, b, c)`` with ``Rz(a) Rx(b) Rz(c) = R(q)``, and the singular mask.
+
+    ``b`` is in ``[0, π]``, ``a`` and ``c`` in ``[0, 2π)``. Where ``sin b = 0``
+    only ``a ± c`` is defined; the convention is ``c = 0``. Entries with
+    ``sin(b/2) <= tol`` or ``cos(b/2) <= tol`` are snapped onto the singularity
+    (``b = 0`` or ``π``); the mask marks them. Half-angle sums and differences
+    come from ``atan2`` of quaternion pairs, which is well conditioned
+    everywhere (Bernardes & Viollet 2022).
+    """
+    x, y, z, w = np.moveaxis(q, -1, 0)
+    rho_xy = np.hypot(x, y)
+    rho_zw = np.hypot(z, w)
+    at_zero = rho_xy <= tol
+    at_pi = (rho_zw <= tol) & ~at_zero
+    b = np.where(at_zero, 0.0, np.where(at_pi, np.pi, 2.0 * np.arctan2(rho_xy, rho_zw)))
+    half_sum = np.arctan2(z, w)
+    half_diff = np.arctan2(y, x)
+    half_diff = np.where(at_zero, half_sum, half_diff)
+    half_sum = np.where(at_pi, half_diff, half_sum)
+    a = wrap_2pi(half_sum + half_diff)
+    c = wrap_2pi(half_sum - half_diff)
+    c = np.where(at_zero | at_pi, 0.0, c)
+    return a, b, c, at_zero | at_pi
+
+
+def normalise(q: Array) -> Array:
+    """Scale quaternions to unit norm."""
+    return q / np.linalg.norm(q, axis=-1, keepdims=True)

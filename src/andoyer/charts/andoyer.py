@@ -1,0 +1,324 @@
+r"""Andoyer variables ``(l, g, h, L, G, H)`` (Gurfil et al. §3.2; Deprit & Elipe 1993).
+
+Convention: the attitude taking body vectors to the reference frame is the
+3-1-3-1-3 sequence (Gurfil eq. 70, here as active rotations)
+
+.. math:: \mathcal{R} = R_z(h)\, R_x(I)\, R_z(g)\, R_x(J)\, R_z(l),
+   \qquad \cos I = H/G, \quad \cos J = L/G,
+
+with ``0 <= I, J <= π``. ``G = |m|``; ``H`` is the projection of the angular
+momentum on the reference axis ``s3``; ``L`` its projection on the body axis
+``b3``. The body and reference components of the angular momentum are
+
+.. math::
+   \mathbf{m} = (\sqrt{G^2-L^2}\sin l,\ \sqrt{G^2-L^2}\cos l,\ L), \qquad
+   \mathbf{M} = G\,(\sin I \sin h,\ -\sin I \cos h,\ \cos I).
+
+The chart is singular where ``sin J = 0`` (conventions: ``l = 0``) and where
+``sin I = 0`` (``h = 0``); there a :class:`SingularChartWarning` is issued.
+States within ``4ε G`` of a pole are snapped onto it (``L`` or ``H = ±G``).
+Near those points the momenta ``L`` or ``H`` determine ``J`` or ``I`` only to
+``ε / sin J`` or ``ε / sin I``: this is the chart's conditioning, not round-off.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from andoyer import _quaternion as quat
+from andoyer._fastmath import atan2_2pi, chunked, wrap_2pi
+from andoyer._validation import as_finite, broadcast, broadcast_finite, check_momenta
+from andoyer.charts.euler import Euler, transverse_momentum
+from andoyer.charts.singular import warn_if_singular
+
+__all__ = [
+    "Andoyer",
+    "andoyer_from_euler",
+    "andoyer_matrix",
+    "andoyer_to_hub",
+    "euler_from_andoyer",
+    "hub_to_andoyer",
+    "inclinations",
+]
+
+Array = NDArray[np.float64]
+
+
+class Andoyer(NamedTuple):
+    """Andoyer angles and momenta; each field has the state's shape."""
+
+    l: Array
+    g: Array
+    h: Array
+    L: Array
+    G: Array
+    H: Array
+
+
+def _momenta(L: ArrayLike, G: ArrayLike, H: ArrayLike) -> tuple[Array, Array, Array]:
+    L, G, H = broadcast(("L", as_finite(L, "L")), ("G", as_finite(G, "G")), ("H", as_finite(H, "H")))
+    check_momenta(L, G, H)
+    return np.clip(L, -G, G), G, np.clip(H, -G, G)
+
+
+def _sin_cos(P: Array, G: Array) -> tuple[Array, Array]:
+    """``G sin X`` and ``G cos X`` for ``cos X = P/G``, ``sin X >= 0``, without cancellation."""
+    return np.sqrt((G - P) * (G + P)), P
+
+
+def inclinations(L: ArrayLike, G: ArrayLike, H: ArrayLike) -> tuple[Array, Array]:
+    """The auxiliary angles ``I = arccos(H/G)`` and ``J = arccos(L/G)``.
+
+    Computed as ``atan2(sqrt((G-H)(G+H)), H)``, accurate at both ends of ``[0, π]``.
+
+    Parameters
+    ----------
+    L, G, H : array_like, shape (...)
+        Andoyer momenta with ``G > 0``, ``|L| <= G``, ``|H| <= G``; they broadcast.
+
+    Returns
+    -------
+    I, J : numpy.ndarray, shape (...)
+        Inclination of the angular momentum on the reference axis, and on the body axis ``b3``.
+
+    Examples
+    --------
+    >>> I, J = inclinations(0.5, 1.0, 0.0)
+    >>> round(float(I), 12), round(float(J), 12)
+    (1.570796326795, 1.047197551197)
+    """
+    L, G, H = _momenta(L, G, H)
+    return np.arctan2(*_sin_cos(H, G)), np.arctan2(*_sin_cos(L, G))
+
+
+def andoyer_matrix(h: ArrayLike, I: ArrayLike, g: ArrayLike, J: ArrayLike, l: ArrayLike) -> Array:
+    """Gurfil's matrix ``R(h, I, g, J, l)`` (eqs. 70–74, corrected), reference → body.
+
+    ``R = R3(l) R1(J) R3(g) R1(I) R3(h)`` with passive elementary rotations;
+    the printed eqs. 72–74 lack brackets and factors (see ``docs/errata.md``).
+
+    Parameters
+    ----------
+    h, I, g, J, l : array_like, shape (...)
+        Angles in radians; they broadcast together.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3, 3)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from scipy.spatial.transform import Rotation
+    >>> R = andoyer_matrix(0.1, 0.2, 0.3, 0.4, 0.5)
+    >>> rot = Rotation.from_euler("ZXZ", [0.1, 0.2, 0.3]) * Rotation.from_euler("XZ", [0.4, 0.5])
+    >>> np.allclose(R, rot.as_matrix().T, atol=1e-15)
+    True
+    """
+    arrays = broadcast_finite("hIgJl", (h, I, g, J, l))
+    ch, sh = np.cos(arrays[0]), np.sin(arrays[0])
+    cI, sI = np.cos(arrays[1]), np.sin(arrays[1])
+    cg, sg = np.cos(arrays[2]), np.sin(arrays[2])
+    cJ, sJ = np.cos(arrays[3]), np.sin(arrays[3])
+    cl, sl = np.cos(arrays[4]), np.sin(arrays[4])
+    a1 = cl * cg - sl * cJ * sg
+    b1 = (cl * sg + sl * cJ * cg) * cI - sl * sJ * sI
+    a2 = -sl * cg - cl * cJ * sg
+    b2 = (-sl * sg + cl * cJ * cg) * cI - cl * sJ * sI
+    a3 = sJ * sg
+    b3 = sJ * cg * cI + cJ * sI
+    rows = [
+        [a1 * ch - b1 * sh, a1 * sh + b1 * ch, (cl * sg + sl * cJ * cg) * sI + sl * sJ * cI],
+        [a2 * ch - b2 * sh, a2 * sh + b2 * ch, (-sl * sg + cl * cJ * cg) * sI + cl * sJ * cI],
+        [a3 * ch + b3 * sh, a3 * sh - b3 * ch, -sJ * cg * sI + cJ * cI],
+    ]
+    return np.stack([np.stack(row, axis=-1) for row in rows], axis=-2)
+
+
+def andoyer_to_hub(
+    l: ArrayLike,
+    g: ArrayLike,
+    h: ArrayLike,
+    L: ArrayLike,
+    G: ArrayLike,
+    H: ArrayLike,
+) -> tuple[Array, Array]:
+    """Attitude quaternions (..., 4) and body angular momenta (..., 3) of Andoyer states."""
+    l, g, h = (as_finite(v, n) for n, v in zip("lgh", (l, g, h), strict=True))
+    L, G, H = _momenta(L, G, H)
+    l, g, h, L, G, H = broadcast(("l", l), ("g", g), ("h", h), ("L", L), ("G", G), ("H", H))
+    GsI, GcI = _sin_cos(H, G)
+    GsJ, GcJ = _sin_cos(L, G)
+    q = quat.multiply(quat.from_zxz(h, np.arctan2(GsI, GcI), g), quat.from_xz(np.arctan2(GsJ, GcJ), l))
+    m = np.stack([GsJ * np.sin(l), GsJ * np.cos(l), L], axis=-1)
+    return q, m
+
+
+def _hub_to_andoyer_kernel(
+    x: Array, y: Array, z: Array, w: Array, m1: Array, m2: Array, m3: Array
+) -> tuple[Array, ...]:
+    """Element-wise core of :func:`hub_to_andoyer` on 1-D slices."""
+    G = np.sqrt(m1 * m1 + m2 * m2 + m3 * m3)
+    # Rotation matrix A of the quaternion (body -> reference); only products are needed.
+    xx, yy, zz = x * x, y * y, z * z
+    xy, xz, yz, xw, yw, zw = x * y, x * z, y * z, x * w, y * w, z * w
+    a00, a01, a02 = 1 - 2 * (yy + zz), 2 * (xy - zw), 2 * (xz + yw)
+    a10, a11, a12 = 2 * (xy + zw), 1 - 2 * (xx + zz), 2 * (yz - xw)
+    M1 = a00 * m1 + a01 * m2 + a02 * m3
+    M2 = a10 * m1 + a11 * m2 + a12 * m3
+    M3 = 2 * (xz - yw) * m1 + 2 * (yz + xw) * m2 + (1 - 2 * (xx + yy)) * m3
+    rho_body = np.sqrt(m1 * m1 + m2 * m2)
+    rho_ref = np.sqrt(M1 * M1 + M2 * M2)
+    # Within a few ulp of a pole the direction of the node is round-off; snapping onto the
+    # pole (L or H = ±G exactly) keeps the round trip exact where (L, G, H) could not.
+    pole_tol = 4 * np.finfo(float).eps * G
+    on_pole_j = rho_body <= pole_tol
+    on_pole_i = rho_ref <= pole_tol
+    safe_body = np.where(on_pole_j, 1.0, rho_body)
+    safe_ref = np.where(on_pole_i, 1.0, rho_ref)
+    sl = np.where(on_pole_j, 0.0, m1 / safe_body)
+    cl = np.where(on_pole_j, 1.0, m2 / safe_body)
+    sh = np.where(on_pole_i, 0.0, M1 / safe_ref)
+    ch = np.where(on_pole_i, 1.0, -M2 / safe_ref)
+    # Node i = (cos h, sin h, 0) seen in the body frame is Aᵀ i; node j = (cos l, -sin l, 0).
+    i1, i2, i3 = ch * a00 + sh * a10, ch * a01 + sh * a11, ch * a02 + sh * a12
+    # g = angle from i to j about m: sin g ∝ m·(i × j), cos g ∝ G i·j, with m·(i × j)
+    # = i·(j × m) and j × m = (-sin l m3, -cos l m3, rho_body).
+    sin_g = rho_body * i3 - m3 * (sl * i1 + cl * i2)
+    cos_g = G * (i1 * cl - i2 * sl)
+    return (
+        atan2_2pi(sl, cl),
+        atan2_2pi(sin_g, cos_g),
+        atan2_2pi(sh, ch),
+        np.where(on_pole_j, np.copysign(G, m3), m3),
+        G,
+        np.where(on_pole_i, np.copysign(G, M3), M3),
+        on_pole_j,
+        on_pole_i,
+    )
+
+
+def hub_to_andoyer(q: Array, m: Array, stacklevel: int = 2) -> Andoyer:
+    """Andoyer variables of attitude quaternions (..., 4) and body momenta (..., 3).
+
+    ``l = atan2(m1, m2)``, ``h = atan2(M1, -M2)`` and ``g`` is the angle, about
+    the angular momentum, from the node ``i = (cos h, sin h, 0)`` (reference
+    frame) to the node ``j = (cos l, -sin l, 0)`` (body frame). Building ``i``
+    and ``j`` from the same ``h`` and ``l`` that are returned keeps the
+    attitude round trip exact even where ``h`` or ``l`` is ill-conditioned.
+    """
+    shape = m.shape[:-1]
+    if np.any(np.sum(m * m, axis=-1) <= 0):
+        msg = "expected a non-zero angular momentum, got |m| = 0 (the Andoyer chart needs G > 0)"
+        raise ValueError(msg)
+    columns = [*q.reshape(-1, 4).T, *m.reshape(-1, 3).T]
+    l, g, h, L, G, H, on_pole_j, on_pole_i = chunked(_hub_to_andoyer_kernel, columns, 8)
+    warn_if_singular(on_pole_j != 0, "Andoyer chart at sin(J) = 0: set l = 0", stacklevel + 1)
+    warn_if_singular(on_pole_i != 0, "Andoyer chart at sin(I) = 0: set h = 0", stacklevel + 1)
+    return Andoyer(*(v.reshape(shape) for v in (l, g, h, L, G, H)))
+
+
+def andoyer_from_euler(
+    phi: ArrayLike,
+    theta: ArrayLike,
+    psi: ArrayLike,
+    Phi: ArrayLike,
+    Theta: ArrayLike,
+    Psi: ArrayLike,
+) -> Andoyer:
+    """Andoyer variables from Euler angles and momenta by direct formulas (eqs. 83–88, 25–32).
+
+    ``H = Φ``, ``L = Ψ``, ``G² = Θ² + X² + Ψ²`` with ``X = (Φ - Ψ cos θ)/sin θ``;
+    ``l = atan2(m1, m2)`` from eqs. 25–26; ``h = atan2(M1, -M2)`` from eqs. 30–31;
+    and ``g = atan2(-G Θ sin θ, L H - G² cos θ)`` from the spherical triangle of
+    the three nodes (laws of sines and cosines). Requires ``sin θ ≠ 0``; use
+    :meth:`andoyer.State.as_andoyer` for the route through the state, which
+    handles every configuration.
+
+    Parameters
+    ----------
+    phi, theta, psi, Phi, Theta, Psi : array_like, shape (...)
+        Euler angles (radians) and conjugate momenta; they broadcast together.
+
+    Returns
+    -------
+    Andoyer
+
+    Examples
+    --------
+    >>> a = andoyer_from_euler(0.1, 0.7, 0.3, 0.5, 0.2, 0.8)
+    >>> e = euler_from_andoyer(*a)
+    >>> [round(float(x), 12) for x in e]
+    [0.1, 0.7, 0.3, 0.5, 0.2, 0.8]
+    """
+    names = ("phi", "theta", "psi", "Phi", "Theta", "Psi")
+    phi, theta, psi, Phi, Theta, Psi = broadcast_finite(names, (phi, theta, psi, Phi, Theta, Psi))
+    numerator_x, st = transverse_momentum(Phi, Psi, theta)
+    numerator_y, _ = transverse_momentum(Psi, Phi, theta)
+    if np.any(st == 0):
+        msg = "expected sin(theta) != 0 for the direct Euler -> Andoyer formulas, got sin(theta) = 0"
+        raise ValueError(msg)
+    X, Y = numerator_x / st, numerator_y / st
+    cp, sp = np.cos(psi), np.sin(psi)
+    cf, sf = np.cos(phi), np.sin(phi)
+    m1, m2 = Theta * cp + X * sp, -Theta * sp + X * cp
+    M1, M2 = Theta * cf + Y * sf, Theta * sf - Y * cf
+    G = np.sqrt(Theta * Theta + X * X + Psi * Psi)
+    g = np.arctan2(-G * Theta * st, Psi * Phi - G * G * np.cos(theta))
+    return Andoyer(
+        wrap_2pi(np.arctan2(m1, m2)),
+        wrap_2pi(g),
+        wrap_2pi(np.arctan2(M1, -M2)),
+        Psi,
+        G,
+        Phi,
+    )
+
+
+def euler_from_andoyer(
+    l: ArrayLike,
+    g: ArrayLike,
+    h: ArrayLike,
+    L: ArrayLike,
+    G: ArrayLike,
+    H: ArrayLike,
+) -> Euler:
+    """Euler angles and momenta from Andoyer variables by direct formulas (eqs. 83–88, corrected).
+
+    ``Φ = H``, ``Ψ = L``; ``cos θ`` is eq. 85; ``ψ = atan2(R13, R23)`` and
+    ``φ = atan2(R31, -R32)`` from the entries of Gurfil's matrix (eqs. 86–87;
+    eq. 86's denominator carries a sign typo, see ``docs/errata.md``); and
+    ``Θ = sqrt(G² - L²) sin(l - ψ)`` (eq. 41; eq. 88 has the sign reversed). At ``sin θ = 0`` the convention
+    ``ψ = 0`` applies with a :class:`SingularChartWarning`.
+
+    Parameters
+    ----------
+    l, g, h, L, G, H : array_like, shape (...)
+        Andoyer angles (radians) and momenta; they broadcast together.
+
+    Returns
+    -------
+    Euler
+
+    Examples
+    --------
+    >>> e = euler_from_andoyer(0.5, 0.0, 0.2, 0.6, 1.0, 0.8)
+    >>> round(float(e.theta), 12)  # I + J when g = 0
+    1.570796326795
+    """
+    l, g, h = (as_finite(v, n) for n, v in zip("lgh", (l, g, h), strict=True))
+    L, G, H = _momenta(L, G, H)
+    l, g, h, L, G, H = broadcast(("l", l), ("g", g), ("h", h), ("L", L), ("G", G), ("H", H))
+    I, J = inclinations(L, G, H)
+    R = andoyer_matrix(h, I, g, J, l)
+    st = np.hypot(R[..., 0, 2], R[..., 1, 2])
+    theta = np.arctan2(st, R[..., 2, 2])
+    singular = st == 0
+    warn_if_singular(singular, "Euler chart at sin(theta) = 0: set psi = 0", 2)
+    psi = np.where(singular, 0.0, np.arctan2(R[..., 0, 2], R[..., 1, 2]))
+    phi = np.where(singular, np.arctan2(R[..., 0, 1], R[..., 0, 0]), np.arctan2(R[..., 2, 0], -R[..., 2, 1]))
+    Theta = np.sqrt((G - L) * (G + L)) * np.sin(l - psi)
+    return Euler(wrap_2pi(phi), theta, wrap_2pi(psi), H, Theta, L)

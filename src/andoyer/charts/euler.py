@@ -1,0 +1,162 @@
+r"""Euler 3-1-3 angles ``(φ, θ, ψ)`` and their conjugate momenta ``(Φ, Θ, Ψ)``.
+
+Convention (Gurfil et al. §2.1): the attitude that takes body vectors to the
+reference frame is
+
+.. math:: \mathcal{R} = R_z(\phi)\, R_x(\theta)\, R_z(\psi)
+   = \texttt{Rotation.from\_euler("ZXZ", [φ, θ, ψ])},
+
+with ``0 <= θ <= π`` and ``φ, ψ`` in ``[0, 2π)``; Gurfil's matrix (eq. 2),
+mapping reference components to body components, is its transpose. The
+momenta (eqs. 25–27, 40–42) are
+
+.. math::
+   \Phi = \mathbf{m}\cdot\hat{s}_3, \quad \Psi = m_3, \quad
+   \Theta = m_1 \cos\psi - m_2 \sin\psi,
+
+and the body angular momentum follows as
+``m1 = Θ cos ψ + X sin ψ``, ``m2 = -Θ sin ψ + X cos ψ``, ``m3 = Ψ`` with
+``X = (Φ - Ψ cos θ)/sin θ``.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from andoyer import _quaternion as quat
+from andoyer._validation import as_finite, broadcast, broadcast_finite
+from andoyer.charts.singular import warn_if_singular
+
+__all__ = ["Euler", "euler_matrix", "euler_to_hub", "hub_to_euler", "transverse_momentum"]
+
+Array = NDArray[np.float64]
+
+
+class Euler(NamedTuple):
+    """Euler 3-1-3 angles and their conjugate momenta; each field has the state's shape."""
+
+    phi: Array
+    theta: Array
+    psi: Array
+    Phi: Array
+    Theta: Array
+    Psi: Array
+
+
+def euler_matrix(phi: ArrayLike, theta: ArrayLike, psi: ArrayLike) -> Array:
+    """Gurfil's rotation matrix ``R(φ, θ, ψ)`` (eq. 2), reference → body components.
+
+    Parameters
+    ----------
+    phi, theta, psi : array_like, shape (...)
+        Euler 3-1-3 angles in radians; they broadcast together.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3, 3)
+        ``R`` with ``v_body = R @ v_ref``; it equals
+        ``Rotation.from_euler("ZXZ", [φ, θ, ψ]).as_matrix().T``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> R = euler_matrix(0.3, 0.2, 0.1)
+    >>> np.allclose(R @ R.T, np.eye(3))
+    True
+    """
+    phi, theta, psi = broadcast(
+        ("phi", as_finite(phi, "phi")), ("theta", as_finite(theta, "theta")), ("psi", as_finite(psi, "psi"))
+    )
+    cf, sf = np.cos(phi), np.sin(phi)
+    ct, st = np.cos(theta), np.sin(theta)
+    cp, sp = np.cos(psi), np.sin(psi)
+    rows = [
+        [cp * cf - sp * ct * sf, cp * sf + sp * ct * cf, sp * st],
+        [-sp * cf - cp * ct * sf, -sp * sf + cp * ct * cf, cp * st],
+        [st * sf, -st * cf, ct],
+    ]
+    return np.stack([np.stack(row, axis=-1) for row in rows], axis=-2)
+
+
+def transverse_momentum(big: Array, small: Array, theta: Array) -> tuple[Array, Array]:
+    """``(big - small cos θ)`` and ``sin θ`` without cancellation near ``sin θ = 0``.
+
+    Near ``θ = 0`` the physical state has ``big ≈ small`` and the difference is
+    ``(big - small) + 2 small sin²(θ/2)``; near ``θ = π`` it is
+    ``(big + small) - 2 small cos²(θ/2)``. Both forms are exact rearrangements.
+    """
+    ct = np.cos(theta)
+    near_zero = ct >= 0
+    s2 = np.sin(0.5 * theta)
+    c2 = np.cos(0.5 * theta)
+    numerator = np.where(
+        near_zero, (big - small) + 2.0 * small * s2 * s2, (big + small) - 2.0 * small * c2 * c2
+    )
+    return numerator, np.sin(theta)
+
+
+def euler_to_hub(
+    phi: ArrayLike,
+    theta: ArrayLike,
+    psi: ArrayLike,
+    Phi: ArrayLike,
+    Theta: ArrayLike,
+    Psi: ArrayLike,
+    stacklevel: int = 2,
+) -> tuple[Array, Array]:
+    """Attitude quaternions (..., 4) and body angular momenta (..., 3) of Euler states.
+
+    At ``sin θ = 0`` the component ``X`` of the momentum is not represented by
+    the chart; it is set to 0 with a :class:`SingularChartWarning`, and states
+    with ``Φ ≠ ±Ψ`` there (infinite momentum) are rejected.
+    """
+    names = ("phi", "theta", "psi", "Phi", "Theta", "Psi")
+    values = (phi, theta, psi, Phi, Theta, Psi)
+    phi, theta, psi, Phi, Theta, Psi = broadcast_finite(names, values)
+    if np.any((theta < 0) | (theta > np.pi)):
+        bad = float(theta[(theta < 0) | (theta > np.pi)].flat[0])
+        msg = f"expected 0 <= theta <= pi, got theta = {bad!r}"
+        raise ValueError(msg)
+    numerator, st = transverse_momentum(Phi, Psi, theta)
+    # sin(pi) evaluates to 1.2e-16, not 0: treat |sin θ| <= 2ε as the singularity itself.
+    singular = np.abs(st) <= 2 * np.finfo(float).eps
+    scale = np.maximum(np.abs(Phi) + np.abs(Psi) + np.abs(Theta), np.finfo(float).tiny)
+    if np.any(singular & (np.abs(numerator) > 8 * np.finfo(float).eps * scale)):
+        msg = "expected Phi = Psi cos(theta) where sin(theta) = 0, got Phi != ±Psi (infinite momentum)"
+        raise ValueError(msg)
+    X = np.divide(numerator, st, out=np.zeros_like(numerator), where=~singular)
+    warn_if_singular(
+        singular,
+        "Euler chart at sin(theta) = 0: the momentum component normal to Theta's is not "
+        "represented and was set to 0",
+        stacklevel + 1,
+    )
+    cp, sp = np.cos(psi), np.sin(psi)
+    m = np.stack([Theta * cp + X * sp, -Theta * sp + X * cp, Psi], axis=-1)
+    return quat.from_zxz(phi, theta, psi), m
+
+
+def hub_to_euler(q: Array, m: Array, stacklevel: int = 2) -> Euler:
+    """Euler angles and momenta of attitude quaternions (..., 4) and body momenta (..., 3).
+
+    At ``sin θ = 0`` the convention is ``ψ = 0`` (``φ`` carries ``φ ± ψ``), with a
+    :class:`SingularChartWarning`. Attitudes within ``2ε`` of the singularity
+    (``sin(θ/2)`` or ``cos(θ/2)`` below ``2ε``) are snapped onto it, and there
+    ``Φ = Ψ cos θ`` exactly, so the rotation round trip stays exact to ``4ε``.
+    """
+    phi, theta, psi, singular = quat.to_zxz(q, tol=2 * np.finfo(float).eps)
+    warn_if_singular(
+        singular,
+        "Euler chart at sin(theta) = 0: set psi = 0; the momentum component "
+        "m1 sin(psi) + m2 cos(psi) is not represented by (Phi, Theta, Psi) there",
+        stacklevel + 1,
+    )
+    m_ref = quat.rotate(q, m)
+    cp, sp = np.cos(psi), np.sin(psi)
+    Theta = m[..., 0] * cp - m[..., 1] * sp
+    Psi = m[..., 2].copy()
+    Phi = np.where(singular, np.where(theta == 0, Psi, -Psi), m_ref[..., 2])
+    return Euler(phi, theta, psi, Phi, Theta, Psi)

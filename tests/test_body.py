@@ -1,0 +1,100 @@
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from andoyer import RigidBody, RotationMode, Symmetry, bodies
+
+# Lara (2013) Table 1: beta as printed (7 significant digits).
+TABLE1_BETA = {"mars": 0.0646316, "earth": 0.0003366, "moon": 0.226105, "eros": 0.977853}
+
+
+@pytest.mark.parametrize(("name", "beta"), TABLE1_BETA.items())
+def test_bodies_beta_matches_lara_table1(name, beta):
+    assert bodies.get(name).beta == pytest.approx(beta, abs=6e-7)
+
+
+@pytest.mark.parametrize("name", bodies.names())
+def test_bodies_alpha_beta_satisfy_lara_eq2(name):
+    body = bodies.get(name)
+    A, B, C = body.A, body.B, body.C
+    assert body.alpha * (1 + body.beta) == pytest.approx(C / A - 1, rel=1e-14)
+    assert body.alpha * (1 - body.beta) == pytest.approx(C / B - 1, rel=1e-13)
+
+
+def test_bodies_get_is_case_insensitive_and_rejects_unknown():
+    assert bodies.get(" EARTH ") is bodies.get("earth")
+    with pytest.raises(ValueError, match=r"expected one of .*, got 'pluto'"):
+        bodies.get("pluto")
+
+
+def test_body_sorted_moments_and_axis_order():
+    body = RigidBody(3.0, 1.0, 2.5)
+    assert body.sorted_moments == (1.0, 2.5, 3.0)
+    assert body.moments[list(body.axis_order)].tolist() == [1.0, 2.5, 3.0]
+
+
+@pytest.mark.parametrize(
+    ("moments", "symmetry", "beta", "kappa"),
+    [
+        ((1.0, 2.0, 2.5), Symmetry.TRIAXIAL, (2.5 - 1.25) / (2.5 + 1.25 - 2), np.sqrt(2.5 / 0.5)),
+        ((1.0, 1.0, 1.5), Symmetry.OBLATE, 0.0, 0.0),
+        ((0.5, 1.0, 1.0), Symmetry.PROLATE, 1.0, np.inf),
+        ((2.0, 2.0, 2.0), Symmetry.SPHERICAL, 0.0, 0.0),
+    ],
+)
+def test_body_symmetry_beta_kappa_regimes(moments, symmetry, beta, kappa):
+    body = RigidBody(*moments)
+    assert body.symmetry is symmetry
+    assert body.beta == pytest.approx(beta, rel=1e-15)
+    assert body.kappa == pytest.approx(kappa, rel=1e-15)
+    assert body.is_axisymmetric is (symmetry is not Symmetry.TRIAXIAL)
+
+
+def test_body_euler_coefficients_exact_on_near_axisymmetric_earth():
+    import mpmath
+
+    mpmath.mp.dps = 40
+    earth = bodies.get("earth")
+    I1, I2, I3 = (mpmath.mpf(x) for x in earth.moments)
+    exact = [(I2 - I3) / (I2 * I3), (I3 - I1) / (I3 * I1), (I1 - I2) / (I1 * I2)]
+    got = earth.euler_coefficients
+    for c, ref in zip(got, exact, strict=True):
+        assert abs(c - float(ref)) <= 2e-16 * abs(float(ref))
+
+
+@pytest.mark.parametrize(
+    ("m", "mode"),
+    [([0.01, 0.0, 1.0], "SAM"), ([1.0, 0.0, 0.01], "LAM"), ([0.0, 1.0, 0.0], "separatrix")],
+)
+def test_body_rotation_mode_triaxial(m, mode):
+    body = RigidBody(1.0, 2.0, 2.5)
+    assert body.rotation_mode(m) == mode
+    # The classification agrees with the energy test 2T/G^2 vs 1/B done directly.
+    two_t_over_g2 = 2 * body.energy(m) / np.dot(m, m)
+    expected = (
+        "SAM" if two_t_over_g2 < 1 / 2.0 - 1e-15 else "LAM" if two_t_over_g2 > 0.5 + 1e-15 else "separatrix"
+    )
+    assert mode == expected
+
+
+def test_body_rotation_mode_axisymmetric_is_steady_and_vectorised():
+    modes = RigidBody(1.0, 1.0, 1.5).rotation_mode(np.ones((4, 2, 3)))
+    assert modes.shape == (4, 2)
+    assert set(modes.ravel().tolist()) == {RotationMode.STEADY.value}
+
+
+@settings(max_examples=200, deadline=None)
+@given(alpha=st.floats(0.0, 0.9), beta=st.floats(0.0, 1.0), C=st.floats(1e-6, 1e12))
+def test_body_from_alpha_beta_round_trip(alpha, beta, C):
+    body = RigidBody.from_alpha_beta(alpha, beta, C)
+    assert body.alpha == pytest.approx(alpha, rel=1e-12, abs=1e-15)
+    if alpha > 1e-6:
+        assert body.beta == pytest.approx(beta, rel=1e-9, abs=1e-9)
+
+
+def test_body_repr_is_readable():
+    assert repr(RigidBody(1.0, 2.0, 2.5, name="x")) == "RigidBody(I1=1.0, I2=2.0, I3=2.5, name='x')"
+    assert "Earth" in repr(bodies.get("earth"))
