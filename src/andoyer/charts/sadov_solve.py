@@ -48,6 +48,25 @@ def _slope(frame: SadovFrame, o: Orbit, complement: NDArray[np.bool_]) -> Array:
     return o.dudtau * np.where(complement, -dtau_dv, dtau_dv)
 
 
+def _separatrix_guess(frame: SadovFrame, circ: NDArray[np.bool_], gap: Array) -> Array:
+    r"""Start for ``t = y_c`` or ``w_c`` from ``|u − u_s| ≈ A t (log(B/t) + 1)``.
+
+    The logarithmic asymptote of ``K`` (``K ≈ ½ log(16/m_c)``) in ``du/dτ`` gives
+    ``A = √(1 − ρ)/(2π√ρ)``, ``B = 16ρ`` (circulation) and ``A = √ρ/(2π√(1 − ρ))``,
+    ``B = 16(1 − ρ)`` (libration); the equation is solved by a few fixed-point steps. When
+    ``ρ = 1`` the libration has ``u = 1 − √w_c`` exactly.
+    """
+    rho, rho_c = frame.rho, frame.rho_c
+    if rho_c == 0.0:
+        return np.clip(gap * gap, TINY, 0.5)
+    A = np.where(circ, np.sqrt(rho_c / rho), np.sqrt(rho / rho_c)) / (2.0 * np.pi)
+    B = 16.0 * np.where(circ, rho, rho_c)
+    t = np.clip(gap / A, TINY, 0.5)
+    for _ in range(4):
+        t = np.clip(gap / (A * (np.log(B / t) + 1.0)), TINY, 0.5)
+    return t
+
+
 def solve(frame: SadovFrame, u: Array) -> Orbit:
     """Orbits with action fraction ``u`` (1-D, ``0 <= u <= 1``, none on the separatrix)."""
     u_s = frame.separatrix_fraction
@@ -59,8 +78,7 @@ def solve(frame: SadovFrame, u: Array) -> Orbit:
     complement = singular  # the unknown is y_c or w_c on the singular half, y or w on the other
     u_end = np.where(circ, 1.0, 0.0)  # u at t = 0 on the regular half
     t0_regular = 0.5 * (u - u_end) / (u_half - u_end)
-    t0_singular = 0.5 * (u - u_s) / (u_half - u_s)
-    t = np.clip(np.where(singular, t0_singular, t0_regular), 0.0, 0.5)
+    t = np.where(singular, _separatrix_guess(frame, circ, np.abs(u - u_s)), t0_regular)
     lo = np.where(singular, TINY, 0.0)
     hi = np.full_like(u, 0.5)
     t = np.clip(t, lo, hi)
@@ -84,11 +102,12 @@ def solve(frame: SadovFrame, u: Array) -> Orbit:
             newton = ti - resid / slope
         inside = (newton > lo_i) & (newton < hi_i) & np.isfinite(newton)
         geometric = singular[idx] & (hi_i > 4.0 * lo_i)
-        bisect = np.where(geometric, np.sqrt(np.maximum(lo_i, TINY) * hi_i), 0.5 * (lo_i + hi_i))
-        new = np.where(f == 0, ti, np.where(inside, newton, bisect))
-        # Converged: a Newton step at round-off level (in t or in u), or a collapsed bracket.
-        small = (np.abs(new - ti) <= 2.0 * EPS * np.abs(new)) | (np.abs(resid) <= 2.0 * EPS * u[idx])
-        done = (f == 0) | (inside & small) | (hi_i - lo_i <= 2.0 * EPS * hi_i)
+        bisect = np.where(geometric, np.sqrt(np.maximum(lo_i, 1e-12 * hi_i) * hi_i), 0.5 * (lo_i + hi_i))
+        # Converged: the residual or the Newton step is at round-off level (the step may then
+        # fall on the bracket's end, which is the root itself), or the bracket has collapsed.
+        small = (np.abs(newton - ti) <= 2.0 * EPS * np.abs(ti)) | (np.abs(resid) <= 2.0 * EPS * u[idx])
+        done = (f == 0) | small | (hi_i - lo_i <= 2.0 * EPS * hi_i)
+        new = np.where(inside, newton, np.where(done, ti, bisect))
         t[idx] = new
         active[idx] = ~done
     t = np.where(exact, 0.0, t)
