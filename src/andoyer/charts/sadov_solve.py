@@ -102,11 +102,12 @@ def solve(frame: SadovFrame, u: Array) -> Orbit:
             newton = ti - resid / slope
         inside = (newton > lo_i) & (newton < hi_i) & np.isfinite(newton)
         geometric = singular[idx] & (hi_i > 4.0 * lo_i)
-        bisect = np.where(geometric, np.sqrt(np.maximum(lo_i, 1e-12 * hi_i) * hi_i), 0.5 * (lo_i + hi_i))
+        bisect = np.where(geometric, np.sqrt(np.maximum(lo_i, 1e-12 * hi_i)) * np.sqrt(hi_i), 0.5 * (lo_i + hi_i))
         # Converged: the residual or the Newton step is at round-off level (the step may then
-        # fall on the bracket's end, which is the root itself), or the bracket has collapsed.
+        # fall on the bracket's end, which is the root itself), or the bracket has collapsed,
+        # possibly onto the floor TINY when u is within the rounding of u(t) from u_s.
         small = (np.abs(newton - ti) <= 2.0 * EPS * np.abs(ti)) | (np.abs(resid) <= 2.0 * EPS * u[idx])
-        done = (f == 0) | small | (hi_i - lo_i <= 2.0 * EPS * hi_i)
+        done = (f == 0) | small | (hi_i - lo_i <= 2.0 * EPS * hi_i) | (hi_i <= 4.0 * TINY)
         new = np.where(inside, newton, np.where(done, ti, bisect))
         t[idx] = new
         active[idx] = ~done
