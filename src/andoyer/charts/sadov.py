@@ -113,6 +113,14 @@ def _actions(I_l: ArrayLike, I_g: ArrayLike, I_h: ArrayLike | None = None) -> li
     return arrays
 
 
+def _finite(values: tuple[Array, ...], where: str) -> tuple[Array, ...]:
+    """Guard against a silent NaN: every output of a valid input must be finite."""
+    if not all(np.all(np.isfinite(v)) for v in values):
+        msg = f"expected finite {where} for finite input, got a non-finite value (please report this state)"
+        raise FloatingPointError(msg)
+    return values
+
+
 def separatrix_action(body: RigidBody, I_g: ArrayLike) -> Array:
     r"""``|I_ℓ|`` on the separatrix: ``I_g (2/π) arctan κ = I_g (2/π) arcsin √ρ``.
 
@@ -198,7 +206,7 @@ def andoyer_to_sadov(
     circ = delta < 0
     sep = delta == 0
     centre = ~circ & (omt == 0)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(all="ignore"):
         v = np.where(circ, tau / rho_c, omt / rho)
         vc = np.where(circ, -delta / rho_c, delta / rho)
     ok = ~sep
@@ -212,7 +220,7 @@ def andoyer_to_sadov(
     phi_l[centre], dg[centre], u[centre] = 0.0, 0.0, 0.0
     warn_if_singular(sep, f"{SEPARATRIX}: set phi_l = 0, phi_g = g", 2)
     warn_if_singular(centre, "Sadov chart at a libration centre (I_l = 0): set phi_l = 0, phi_g = g", 2)
-    out = (wrap_2pi(phi_l), wrap_2pi(g + dg), wrap_2pi(h), sign * G * u, G, H)
+    out = _finite((wrap_2pi(phi_l), wrap_2pi(g + dg), wrap_2pi(h), sign * G * u, G, H), "Sadov variables")
     return Sadov(*(np.reshape(a, shape) for a in out))
 
 
@@ -274,7 +282,7 @@ def sadov_to_andoyer(
     warn_if_singular(sep, f"{SEPARATRIX}: returned the equilibrium +b_i", 2)
     l = frame.angle_from_standard(s, c)
     out = (wrap_2pi(l), wrap_2pi(phi_g + dg), wrap_2pi(np.ravel(phi_h)), G * x, G, np.ravel(H))
-    return Andoyer(*(np.reshape(a, shape) for a in out))
+    return Andoyer(*(np.reshape(a, shape) for a in _finite(out, "Andoyer variables")))
 
 
 def _orbits(body: RigidBody, I_l: ArrayLike, I_g: ArrayLike) -> tuple:
@@ -323,7 +331,8 @@ def sadov_hamiltonian(body: RigidBody, I_l: ArrayLike, I_g: ArrayLike) -> Array:
         return np.reshape(0.5 * (frame.a3 * I_l * I_l + a_e * (G - I_l) * (G + I_l)), shape)
     tau = np.where(sep, frame.rho_c, o.tau)
     omt = np.where(sep, frame.rho, o.omt)
-    return np.reshape(0.5 * G * G * (frame.a3 * omt + a_e * tau), shape)
+    (H,) = _finite((0.5 * G * G * (frame.a3 * omt + a_e * tau),), "energies")
+    return np.reshape(H, shape)
 
 
 def sadov_frequencies(body: RigidBody, I_l: ArrayLike, I_g: ArrayLike) -> SadovFrequencies:
@@ -368,4 +377,5 @@ def sadov_frequencies(body: RigidBody, I_l: ArrayLike, I_g: ArrayLike) -> SadovF
         shift = np.where(sep, frame.rho_c, o.tau - u / (2.0 * o.dudtau))
         omega_g = G * (frame.a3 + frame.d_e3 * shift)
         warn_if_singular(sep, f"{SEPARATRIX}: returned the limits omega_l = 0, omega_g = G/I_i", 2)
+    omega_l, omega_g = _finite((omega_l, omega_g), "frequencies")
     return SadovFrequencies(np.reshape(omega_l, shape), np.reshape(omega_g, shape))

@@ -78,7 +78,7 @@ def orbit(frame: SadovFrame, circ: NDArray[np.bool_], v: Array, vc: Array) -> Or
     √((1 − ρ)(1 − τ)))`` or ``−K(m)/(π √(ρτ))`` (eq. 145 with ``dλ/dτ``).
     """
     rho, rho_c = np.float64(frame.rho), np.float64(frame.rho_c)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(all="ignore"):
         # Libration entries are computed in the circulation branch too (and vice versa):
         # the masked values are discarded by np.where.
         omt = np.where(circ, rho + rho_c * vc, rho * v)
@@ -94,7 +94,7 @@ def orbit(frame: SadovFrame, circ: NDArray[np.bool_], v: Array, vc: Array) -> Or
     K = ellipk(m, mc)
     RJc = sc.elliprj(0.0, mc, 1.0, p)
     dual = np.where(circ, rho_c < 0.5, tau < 0.5)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(all="ignore"):
         # u = offset + A [K − B R_J(0, m_c, 1, q)], direct (q = 1 − n) or dual.
         A_direct = np.where(circ, np.sqrt(omt / rho_c), omt / np.sqrt(rho * tau))
         B_direct = np.where(circ, rho / (3.0 * rho_c * omt), 1.0 / (3.0 * tau))
@@ -104,7 +104,7 @@ def orbit(frame: SadovFrame, circ: NDArray[np.bool_], v: Array, vc: Array) -> Or
     RJ = RJc.copy()
     if dual.any():
         RJ[dual] = sc.elliprj(0.0, mc[dual], 1.0, q_dual[dual])
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(all="ignore"):
         A = np.where(dual, A_dual, A_direct)
         B = np.where(dual, B_dual, B_direct)
         u = np.where(dual, 1.0, 0.0) + A * (K - B * RJ) / HALF_PI
