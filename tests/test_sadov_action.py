@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from test_sadov_support import BODIES, CASES, SCALES, inverse_moments, reference_action, sample, scaled
 
 from andoyer import RigidBody
 from andoyer.charts.sadov import (
@@ -16,6 +15,17 @@ from andoyer.charts.sadov import (
 from andoyer.charts.sadov_frame import SadovFrame
 from andoyer.charts.sadov_solve import solve
 from andoyer.hamiltonians import andoyer_hamiltonian
+from test_sadov_support import (
+    BODIES,
+    CASES,
+    REPRESENTATIVE,
+    SCALES,
+    inverse_moments,
+    reference_action,
+    reference_frequencies,
+    sample,
+    scaled,
+)
 
 EPS = np.finfo(float).eps
 
@@ -82,30 +92,58 @@ def test_hamiltonian_of_actions_equals_andoyer_hamiltonian(name, regime, rng):
     assert np.max(np.abs(sadov_hamiltonian(body, s.I_l, s.I_g) / ref - 1)) <= tol
 
 
-def richardson(f, x, h):
-    d = [(f(x + k) - f(x - k)) / (2 * k) for k in (h, h / 2)]
-    return (4 * d[1] - d[0]) / 3
-
-
-@pytest.mark.parametrize(("moment_scale", "momentum_scale"), [SCALES[0], SCALES[2], SCALES[3]])
-@pytest.mark.parametrize(("name", "regime"), [c for c in CASES if c[1] != "near-separatrix"])
-def test_frequencies_equal_richardson_differences_of_hamiltonian(name, regime, moment_scale, momentum_scale, rng):
-    """(ω_ℓ, ω_g) in closed form = central differences of H(I_ℓ, I_g), Richardson-extrapolated."""
-    body = scaled(BODIES[name], moment_scale)
-    l, g, h, L, G, H = sample(body, rng, 4, regime, G=momentum_scale)
+def check_time_averages(body, rng, regime, n, moment_scale=1.0, momentum_scale=1.0):
+    """|ω_ℓ| = 2π/T and ω_g = ⟨ġ⟩ by 30-digit quadrature along the orbit."""
+    body = scaled(body, moment_scale)
+    l, g, h, L, G, H = sample(body, rng, n, regime, G=momentum_scale)
     s = andoyer_to_sadov(body, l, g, h, L, G, H)
-    u_s = separatrix_action(body, 1.0)
-    for I_l, I_g in zip(s.I_l, s.I_g, strict=True):
-        # Steps well inside the region: H is not analytic across the separatrix.
-        gap = min(abs(abs(I_l) / I_g - u_s), 1 - abs(I_l) / I_g, abs(I_l) / I_g) * I_g
-        step = 1e-2 * gap
-        w = sadov_frequencies(body, I_l, I_g)
-        fd_l = richardson(lambda x: sadov_hamiltonian(body, x, I_g), I_l, step)
-        fd_g = richardson(lambda x: sadov_hamiltonian(body, I_l, x), I_g, step)
-        # Scale of the rounding in the differences: H/step.
-        scale = sadov_hamiltonian(body, I_l, I_g) / step
-        assert abs(w.omega_l - fd_l) <= 1e-7 * abs(w.omega_l) + 1e-13 * scale
-        assert abs(w.omega_g - fd_g) <= 1e-7 * abs(w.omega_g) + 1e-13 * scale
+    w = sadov_frequencies(body, s.I_l, s.I_g)
+    for k in range(n):
+        omega_l, omega_g = reference_frequencies(body, l[k], L[k], G[k])
+        assert abs(w.omega_l[k]) == pytest.approx(omega_l, rel=1e-13)
+        assert w.omega_g[k] == pytest.approx(omega_g, rel=1e-14)
+
+
+@pytest.mark.parametrize(("name", "regime"), REPRESENTATIVE)
+def test_frequencies_equal_time_averages_along_the_orbit(name, regime, rng):
+    check_time_averages(BODIES[name], rng, regime, 1)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(("moment_scale", "momentum_scale"), SCALES)
+@pytest.mark.parametrize(("name", "regime"), CASES)
+def test_frequencies_equal_time_averages_many_states(name, regime, moment_scale, momentum_scale, rng):
+    check_time_averages(BODIES[name], rng, regime, 3, moment_scale, momentum_scale)
+
+
+def check_richardson(body, rng, regime, n, moment_scale=1.0, momentum_scale=1.0):
+    """(ω_ℓ, ω_g) in closed form = central differences of H(I_ℓ, I_g), Richardson-extrapolated."""
+    body = scaled(body, moment_scale)
+    l, g, h, L, G, H = sample(body, rng, n, regime, G=momentum_scale)
+    s = andoyer_to_sadov(body, l, g, h, L, G, H)
+    u = np.abs(s.I_l) / s.I_g
+    # Steps well inside the region: H is not analytic across the separatrix.
+    gap = np.minimum.reduce([np.abs(u - separatrix_action(body, 1.0)), 1 - u, u]) * s.I_g
+    step = 1e-2 * gap
+    k = np.array([1.0, -1.0, 0.5, -0.5])[:, None] * step
+    H_l = sadov_hamiltonian(body, s.I_l + k, s.I_g)
+    H_g = sadov_hamiltonian(body, s.I_l, s.I_g + k)
+    w = sadov_frequencies(body, s.I_l, s.I_g)
+    scale = sadov_hamiltonian(body, s.I_l, s.I_g) / step  # the rounding in the differences
+    for values, omega in ((H_l, w.omega_l), (H_g, w.omega_g)):
+        fd = (4 * (values[2] - values[3]) / step - (values[0] - values[1]) / (2 * step)) / 3
+        assert np.all(np.abs(omega - fd) <= 1e-7 * np.abs(omega) + 1e-13 * scale)
+
+
+@pytest.mark.parametrize(("name", "regime"), [c for c in CASES if c[1] != "near-separatrix"])
+def test_frequencies_equal_richardson_differences_of_hamiltonian(name, regime, rng):
+    check_richardson(BODIES[name], rng, regime, 4)
+
+
+@pytest.mark.parametrize(("moment_scale", "momentum_scale"), SCALES[1:])
+@pytest.mark.parametrize("regime", ["circulation", "libration"])
+def test_frequencies_equal_richardson_differences_at_every_scale(regime, moment_scale, momentum_scale, rng):
+    check_richardson(BODIES["strongly-triaxial"], rng, regime, 4, moment_scale, momentum_scale)
 
 
 @pytest.mark.parametrize("name", [n for n in BODIES if n not in {"b1-symmetric"}])
@@ -149,7 +187,9 @@ def test_solver_inverts_the_action_to_round_off(name):
     assert np.all(o.circ == (u > u_s))
 
 
-@pytest.mark.parametrize("body", [RigidBody(1.0, 1.0, 1.5), RigidBody(2.0, 2.0, 1.5), RigidBody(1.0, 1.0, 1.0)])
+@pytest.mark.parametrize(
+    "body", [RigidBody(1.0, 1.0, 1.5), RigidBody(2.0, 2.0, 1.5), RigidBody(1.0, 1.0, 1.0)]
+)
 def test_axisymmetric_about_b3_hamiltonian_and_frequencies_are_andoyers(body, rng):
     """I1 = I2: H = ½(G² − I_ℓ²)/I1 + I_ℓ²/(2 I3), ω_ℓ = (1/I3 − 1/I1) I_ℓ, ω_g = G/I1."""
     G = rng.uniform(0.5, 2, 20)

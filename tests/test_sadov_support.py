@@ -34,7 +34,7 @@ def scaled(body: RigidBody, factor: float) -> RigidBody:
 
 
 def inverse_moments(body: RigidBody) -> tuple[float, float, float, float, float]:
-    """``a1, a2, a3`` and the inverse moments ``a_i`` of the intermediate and ``a_e`` of the other in-plane axis."""
+    """``a1, a2, a3`` and the inverse moments of the intermediate (``a_i``) and other in-plane axis."""
     a1, a2, a3 = (1.0 / body.I1, 1.0 / body.I2, 1.0 / body.I3)
     a_i = 1.0 / body.B
     a_e = a2 if body.I1 == body.B else a1
@@ -48,6 +48,18 @@ def has_regime(body: RigidBody, regime: str) -> bool:
 
 #: (body name, regime) pairs that exist.
 CASES = [(name, regime) for name in BODIES for regime in REGIMES if has_regime(BODIES[name], regime)]
+#: A subset for the expensive checks of the default run (every labelling, both regions);
+#: the slow run covers every case.
+REPRESENTATIVE = [
+    ("b3-max", "circulation"),
+    ("b3-max-b1-intermediate", "libration"),
+    ("b3-min", "libration"),
+    ("b3-min-b1-intermediate", "circulation"),
+    ("earth", "circulation"),
+    ("earth", "libration"),
+    ("strongly-triaxial", "circulation"),
+    ("b1-symmetric", "libration"),
+]
 
 
 def sample(body: RigidBody, rng: np.random.Generator, n: int, regime: str, G: float = 1.0):
@@ -120,6 +132,54 @@ def reference_action(
             half, sign = t1, mp.sign(mp.cos(l))
         area = 2 * mp.quad(absL, [centre - half, centre, centre + half])
         return float(sign * area / (2 * mp.pi))
+
+
+def reference_frequencies(
+    body: RigidBody, l: float, L: float, G: float, dps: int = 30
+) -> tuple[float, float]:
+    """``(|ω_ℓ|, ω_g)`` as time averages along the orbit, by mpmath quadrature.
+
+    ``T = ∮ dl / l̇`` with ``l̇ = ∂K/∂L = L (a3 − p(l))``, ``|ω_ℓ| = 2π/T``, and
+    ``ω_g = ⟨ġ⟩ = (1/T) ∮ G p(l) dl / l̇`` (``φ_g − g`` is periodic). Librations are
+    integrated over both branches with ``l = c + h sin θ``, which removes the inverse
+    square-root singularities at the turning points.
+    """
+    with mp.workdps(dps):
+        a1, a2, a3 = (1 / mp.mpf(body.I1), 1 / mp.mpf(body.I2), 1 / mp.mpf(body.I3))
+        l, L, G = mp.mpf(l), mp.mpf(L), mp.mpf(G)
+
+        def p(t):
+            return mp.sin(t) ** 2 * a1 + mp.cos(t) ** 2 * a2
+
+        e = (p(l) * (G - L) * (G + L) + a3 * L * L) / (G * G)
+
+        def dt_dl(t):
+            absL = G * mp.sqrt(abs((p(t) - e) / (p(t) - a3)))
+            return 1 / (absL * abs(a3 - p(t)))
+
+        s2 = (e - a2) / (a1 - a2)
+        if not 0 < s2 < 1:
+            nodes = [0, mp.pi / 2, mp.pi, 3 * mp.pi / 2, 2 * mp.pi]
+            T = mp.quad(dt_dl, nodes)
+            A = mp.quad(lambda t: G * p(t) * dt_dl(t), nodes)
+        else:
+            t1 = mp.asin(mp.sqrt(s2))
+            centre, half = (
+                (mp.pi / 2, mp.pi / 2 - t1) if (p(mp.pi / 2) - e) * (p(mp.pi / 2) - a3) > 0 else (0, t1)
+            )
+
+            def along(f):
+                def g(theta):
+                    t = centre + half * mp.sin(theta)
+                    # At the nodes that round onto a turning point the weight cos θ is ~1e-30.
+                    return 0 if p(t) == e else 2 * f(t) * dt_dl(t) * half * mp.cos(theta)
+
+                return g
+
+            nodes = [-mp.pi / 2, 0, mp.pi / 2]
+            T = mp.quad(along(lambda t: 1), nodes)
+            A = mp.quad(along(lambda t: G * p(t)), nodes)
+        return float(2 * mp.pi / T), float(A / T)
 
 
 def circle(d):

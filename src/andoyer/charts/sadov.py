@@ -104,10 +104,7 @@ def _actions(I_l: ArrayLike, I_g: ArrayLike, I_h: ArrayLike | None = None) -> li
         excess = np.abs(value) - G
         if np.any(excess > 4 * EPS * G):
             i = np.unravel_index(np.argmax(excess), excess.shape) if excess.ndim else ()
-            msg = (
-                f"expected |{name}| <= I_g, got |{name}| = {float(abs(value[i]))!r} "
-                f"> I_g = {float(G[i])!r}"
-            )
+            msg = f"expected |{name}| <= I_g, got |{name}| = {float(abs(value[i]))!r} > I_g = {float(G[i])!r}"
             raise ValueError(msg)
     arrays[0] = np.clip(arrays[0], -G, G)
     return arrays
@@ -140,7 +137,7 @@ def separatrix_action(body: RigidBody, I_g: ArrayLike) -> Array:
     Examples
     --------
     >>> from andoyer import RigidBody
-    >>> body = RigidBody(1.0, 2.0, 4.0)  # κ² = 4·1/(1·2) = 2
+    >>> body = RigidBody(2.0, 3.0, 4.0)  # κ² = 4·(3 − 2)/(2·(4 − 3)) = 2
     >>> bool(abs(separatrix_action(body, 1.0) - 2 / np.pi * np.arctan(np.sqrt(2))) < 1e-15)
     True
     """
@@ -181,7 +178,7 @@ def andoyer_to_sadov(
     >>> body = RigidBody(1.0, 2.0, 2.5)
     >>> s = andoyer_to_sadov(body, 0.3, 0.2, 0.1, 0.9, 1.0, 0.5)  # circulation, L > 0
     >>> [round(float(v), 10) for v in s]
-    [0.2005125451, 0.2153669082, 0.1, 0.8734484011, 1.0, 0.5]
+    [0.6815758166, 6.1026219874, 0.1, 0.9418041198, 1.0, 0.5]
     >>> a = sadov_to_andoyer(body, *s)
     >>> [round(float(v), 12) for v in a]
     [0.3, 0.2, 0.1, 0.9, 1.0, 0.5]

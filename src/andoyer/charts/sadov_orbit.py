@@ -162,7 +162,9 @@ def angles(
     """
     with np.errstate(invalid="ignore"):
         z = np.arctan2(-np.sqrt(frame.rho_c) * cos_lp, sin_lp)
-        zeta = np.arctan2(-np.sqrt(frame.rho * o.tau) * cos_lp, x * np.sqrt(frame.rho_c + frame.rho * sin_lp**2))
+        zeta = np.arctan2(
+            -np.sqrt(frame.rho * o.tau) * cos_lp, x * np.sqrt(frame.rho_c + frame.rho * sin_lp**2)
+        )
     arg = np.where(o.circ, z, zeta)
     offset = np.where(o.circ, -np.sign(frame.circulation_origin) * HALF_PI, 0.0)
     phi_l = HALF_PI * ellipf(arg, o.m, o.mc) / o.K + offset

@@ -34,7 +34,7 @@ TINY = 1e-300
 MAX_ITER = 200
 
 
-def _pair(circ: NDArray[np.bool_], complement: NDArray[np.bool_], t: Array) -> tuple[Array, Array]:
+def _pair(complement: NDArray[np.bool_], t: Array) -> tuple[Array, Array]:
     """``(v, v_c)`` of the region from the unknown ``t`` (``t = v_c`` where ``complement``)."""
     v = np.where(complement, 1.0 - t, t)
     vc = np.where(complement, t, 1.0 - t)
@@ -89,7 +89,7 @@ def solve(frame: SadovFrame, u: Array) -> Orbit:
             break
         idx = np.flatnonzero(active)
         ti = t[idx]
-        o = orbit(frame, circ[idx], *_pair(circ[idx], complement[idx], ti))
+        o = orbit(frame, circ[idx], *_pair(complement[idx], ti))
         slope = _slope(frame, o, complement[idx])
         resid = o.u - u[idx]
         # Orient so that the residual increases with t.
@@ -102,7 +102,9 @@ def solve(frame: SadovFrame, u: Array) -> Orbit:
             newton = ti - resid / slope
         inside = (newton > lo_i) & (newton < hi_i) & np.isfinite(newton)
         geometric = singular[idx] & (hi_i > 4.0 * lo_i)
-        bisect = np.where(geometric, np.sqrt(np.maximum(lo_i, 1e-12 * hi_i)) * np.sqrt(hi_i), 0.5 * (lo_i + hi_i))
+        bisect = np.where(
+            geometric, np.sqrt(np.maximum(lo_i, 1e-12 * hi_i)) * np.sqrt(hi_i), 0.5 * (lo_i + hi_i)
+        )
         # Converged: the residual or the Newton step is at round-off level (the step may then
         # fall on the bracket's end, which is the root itself), or the bracket has collapsed,
         # possibly onto the floor TINY when u is within the rounding of u(t) from u_s.
@@ -112,4 +114,4 @@ def solve(frame: SadovFrame, u: Array) -> Orbit:
         t[idx] = new
         active[idx] = ~done
     t = np.where(exact, 0.0, t)
-    return orbit(frame, circ, *_pair(circ, complement, t))
+    return orbit(frame, circ, *_pair(complement, t))
