@@ -25,6 +25,7 @@ from test_sadov_support import (
     reference_frequencies,
     sample,
     scaled,
+    separatrix_distance,
 )
 
 EPS = np.finfo(float).eps
@@ -98,10 +99,12 @@ def check_time_averages(body, rng, regime, n, moment_scale=1.0, momentum_scale=1
     l, g, h, L, G, H = sample(body, rng, n, regime, G=momentum_scale)
     s = andoyer_to_sadov(body, l, g, h, L, G, H)
     w = sadov_frequencies(body, s.I_l, s.I_g)
+    # Within d of the separatrix the state fixes the orbit only to ε/d (the chart's conditioning).
+    conditioning = 1e-16 / separatrix_distance(body, l, L, G)
     for k in range(n):
         omega_l, omega_g = reference_frequencies(body, l[k], L[k], G[k])
-        assert abs(w.omega_l[k]) == pytest.approx(omega_l, rel=1e-13)
-        assert w.omega_g[k] == pytest.approx(omega_g, rel=1e-14)
+        assert abs(w.omega_l[k]) == pytest.approx(omega_l, rel=1e-13 + conditioning[k])
+        assert w.omega_g[k] == pytest.approx(omega_g, rel=1e-14 + conditioning[k])
 
 
 @pytest.mark.parametrize(("name", "regime"), REPRESENTATIVE)

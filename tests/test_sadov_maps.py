@@ -9,7 +9,7 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from andoyer import RigidBody
+from andoyer import RigidBody, State
 from andoyer.charts import Andoyer, SingularChartWarning
 from andoyer.charts.sadov import (
     Sadov,
@@ -19,7 +19,17 @@ from andoyer.charts.sadov import (
     sadov_to_andoyer,
     separatrix_action,
 )
-from test_sadov_support import BODIES, CASES, SCALES, circle, inverse_moments, sample, scaled
+from conftest import random_states, rotation_distance
+from test_sadov_support import (
+    BODIES,
+    CASES,
+    SCALES,
+    circle,
+    inverse_moments,
+    sample,
+    scaled,
+    separatrix_distance,
+)
 
 J6 = np.block([[np.zeros((3, 3)), np.eye(3)], [-np.eye(3), np.zeros((3, 3))]])
 ROUND_TRIP = 1e-13
@@ -30,14 +40,6 @@ def andoyer_errors(a, ref):
     angles = max(np.max(np.abs(circle(x - y))) for x, y in zip(a[:3], ref[:3], strict=True))
     momenta = max(np.max(np.abs(x - y) / ref[4]) for x, y in zip(a[3:], ref[3:], strict=True))
     return angles, momenta
-
-
-def separatrix_distance(body, l, L, G):
-    """``|e − a_i|`` relative to the width of the state's region (independent of the code)."""
-    a1, a2, a3, a_i, a_e = inverse_moments(body)
-    e = (np.sin(l) ** 2 * a1 + np.cos(l) ** 2 * a2) * (G - L) * (G + L) / G**2 + a3 * (L / G) ** 2
-    width = np.where((e - a_i) * (a3 - a_i) > 0, a_i - a3, a_e - a_i)
-    return np.abs(e - a_i) / np.abs(width)
 
 
 @pytest.mark.parametrize(("moment_scale", "momentum_scale"), SCALES)
@@ -181,6 +183,25 @@ def check_canonical(body, regime, rng, moment_scale, momentum_scale, n):
     M = jacobians(f, x, step)
     error = np.abs(np.transpose(M, (0, 2, 1)) @ J6 @ M - J6).max()
     assert error <= 1e-8
+
+
+@pytest.mark.parametrize("name", ["b3-max", "b3-min-b1-intermediate", "earth"])
+def test_state_wrapper_round_trip_and_energy(name, rng):
+    """The two-line wrappers State → Sadov (``andoyer_to_sadov(body, *state.as_andoyer())``) and
+    Sadov → State (``State.from_andoyer(*sadov_to_andoyer(body, *s))``) on random hub states:
+    H(I_ℓ, I_g) is the state's kinetic energy and the state comes back."""
+    body = BODIES[name]
+    q, m = random_states(rng, 2000)
+    state = State.from_quaternion(q, m)
+    s = andoyer_to_sadov(body, *state.as_andoyer())
+    energy = state.energy(body)
+    assert np.max(np.abs(sadov_hamiltonian(body, s.I_l, s.I_g) / energy - 1)) <= 1e-14
+    back = State.from_andoyer(*sadov_to_andoyer(body, *s))
+    a = state.as_andoyer()
+    keep = separatrix_distance(body, a.l, a.L, a.G) > 1e-2
+    G = np.linalg.norm(m, axis=-1)
+    assert rotation_distance(back.quaternion, state.quaternion)[keep].max() <= 1e-13
+    assert (np.abs(back.m_body - m).max(axis=-1) / G)[keep].max() <= 1e-13
 
 
 @pytest.mark.parametrize(

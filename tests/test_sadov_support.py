@@ -182,6 +182,14 @@ def reference_frequencies(
         return float(2 * mp.pi / T), float(A / T)
 
 
+def separatrix_distance(body: RigidBody, l, L, G):
+    """``|e − a_i|`` relative to the width of the state's region (independent of the code)."""
+    a1, a2, a3, a_i, a_e = inverse_moments(body)
+    e = (np.sin(l) ** 2 * a1 + np.cos(l) ** 2 * a2) * (G - L) * (G + L) / G**2 + a3 * (L / G) ** 2
+    width = np.where((e - a_i) * (a3 - a_i) > 0, a_i - a3, a_e - a_i)
+    return np.abs(e - a_i) / np.abs(width)
+
+
 def circle(d):
     """Differences of angles taken on the circle, in ``(−π, π]``."""
     return np.angle(np.exp(1j * np.asarray(d)))

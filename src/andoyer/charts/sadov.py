@@ -189,7 +189,7 @@ def andoyer_to_sadov(
     L, H = np.clip(L, -G, G), np.clip(H, -G, G)
     frame = SadovFrame.from_body(body)
     if frame.identity:
-        return Sadov(wrap_2pi(l), wrap_2pi(g), wrap_2pi(h), L, G, H)
+        return Sadov(wrap_2pi(l), wrap_2pi(g), wrap_2pi(h), L, np.array(G), H)
     shape = l.shape
     l, g, L, G = (np.ravel(v) for v in (l, g, L, G))
     s, c = frame.to_standard(np.sin(l), np.cos(l))
