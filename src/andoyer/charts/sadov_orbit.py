@@ -76,6 +76,26 @@ def orbit(frame: SadovFrame, circ: NDArray[np.bool_], v: Array, vc: Array) -> Or
     circulation in the Andoyer chart about ``b_e``; same pair ``(v, v_c)``, same ``m``)
     gives the value from the well-conditioned formula instead. ``du/dτ = −K(m)/(π
     √((1 − ρ)(1 − τ)))`` or ``−K(m)/(π √(ρτ))`` (eq. 145 with ``dλ/dτ``).
+
+    Parameters
+    ----------
+    frame : SadovFrame
+    circ : numpy.ndarray of bool, shape (n,)
+        Circulation (True) or libration (False).
+    v, vc : numpy.ndarray, shape (n,)
+        The pair ``(y, y_c)`` or ``(w, w_c)``, ``v + v_c = 1``; ``v_c > 0``.
+
+    Returns
+    -------
+    Orbit
+
+    Examples
+    --------
+    >>> from andoyer import RigidBody
+    >>> frame = SadovFrame.from_body(RigidBody(1.0, 2.0, 2.5))
+    >>> o = orbit(frame, np.array([True, False]), np.array([0.0, 0.0]), np.array([1.0, 1.0]))
+    >>> o.u.tolist(), o.m.tolist()  # the pole (u = 1) and the libration centre (u = 0)
+    ([1.0, 0.0], [0.0, 0.0])
     """
     rho, rho_c = np.float64(frame.rho), np.float64(frame.rho_c)
     with np.errstate(all="ignore"):
@@ -159,6 +179,30 @@ def angles(
     (``λ sin z = sin ζ``, ``L = G √(1 − τ) cos ζ``) and ``φ_ℓ = (π/2) F(ζ|m)/K(m)``.
     In both, ``φ_g = g + σ Q / root`` (``Q`` from :func:`_bracket`, ``root`` from
     :class:`Orbit`), with ``σ`` the sign of ``I_ℓ``.
+
+    Parameters
+    ----------
+    frame : SadovFrame
+    o : Orbit
+        The states' orbits, shape (n,).
+    sign, sin_lp, cos_lp, x : numpy.ndarray, shape (n,)
+        ``σ``, ``sin l'``, ``cos l'`` and ``L/G``.
+
+    Returns
+    -------
+    phi_l, dg : numpy.ndarray, shape (n,)
+        ``φ_ℓ`` (unreduced) and ``φ_g − g``.
+
+    Examples
+    --------
+    >>> from andoyer import RigidBody
+    >>> frame = SadovFrame.from_body(RigidBody(1.0, 2.0, 2.5))
+    >>> o = orbit(frame, np.array([False]), np.array([0.5]), np.array([0.5]))
+    >>> s, c, x, _ = point(frame, o, np.array([1.0]), np.array([0.7]))
+    >>> norm = np.hypot(s, c)
+    >>> phi_l, _ = angles(frame, o, np.array([1.0]), s / norm, c / norm, x)
+    >>> round(float(phi_l[0]), 12)
+    0.7
     """
     with np.errstate(invalid="ignore"):
         z = np.arctan2(-np.sqrt(frame.rho_c) * cos_lp, sin_lp)
@@ -178,6 +222,28 @@ def point(frame: SadovFrame, o: Orbit, sign: Array, phi_l: Array) -> tuple[Array
     ``(sin l', cos l') ∝ (√(1 − ρ) cos z, −sin z)``, ``L = σ G √(1 − τ) dn``;
     ``ζ = am(2Kφ_ℓ/π | m)`` and ``(sin l', cos l') ∝ (σ √(ρτ) dn, −√(1 − τ) sin ζ)``,
     ``L = G √(1 − τ) cos ζ``, where ``dn = √(cos² + m_c sin²)`` of the amplitude.
+
+    Parameters
+    ----------
+    frame : SadovFrame
+    o : Orbit
+        The states' orbits, shape (n,).
+    sign, phi_l : numpy.ndarray, shape (n,)
+        ``σ`` and ``φ_ℓ``.
+
+    Returns
+    -------
+    sin_lp, cos_lp, x, dg : numpy.ndarray, shape (n,)
+        Components proportional to ``(sin l', cos l')``, ``L/G`` and ``g − φ_g``.
+
+    Examples
+    --------
+    >>> from andoyer import RigidBody
+    >>> frame = SadovFrame.from_body(RigidBody(1.0, 2.0, 2.5))
+    >>> o = orbit(frame, np.array([True]), np.array([0.5]), np.array([0.5]))
+    >>> s, c, x, dg = point(frame, o, np.array([1.0]), np.array([0.0]))
+    >>> float(s[0]), float(c[0]), float(dg[0])  # the origin: the meridian of +b2, m1 = 0
+    (0.0, 1.0, 0.0)
     """
     offset = np.where(o.circ, -np.sign(frame.circulation_origin) * HALF_PI, 0.0)
     arg = am((phi_l - offset) * o.K / HALF_PI, o.m, o.mc)

@@ -68,7 +68,28 @@ def _separatrix_guess(frame: SadovFrame, circ: NDArray[np.bool_], gap: Array) ->
 
 
 def solve(frame: SadovFrame, u: Array) -> Orbit:
-    """Orbits with action fraction ``u`` (1-D, ``0 <= u <= 1``, none on the separatrix)."""
+    """Orbits with action fraction ``u`` (1-D, ``0 <= u <= 1``, none on the separatrix).
+
+    Parameters
+    ----------
+    frame : SadovFrame
+    u : numpy.ndarray, shape (n,)
+        ``|I_ℓ|/G``, different from ``frame.separatrix_fraction``.
+
+    Returns
+    -------
+    Orbit
+        Circulating where ``u`` exceeds the separatrix value; ``orbit.u`` reproduces ``u`` to
+        a few ulp (``ε log(1/m_c)`` near the separatrix).
+
+    Examples
+    --------
+    >>> from andoyer import RigidBody
+    >>> frame = SadovFrame.from_body(RigidBody(1.0, 2.0, 2.5))
+    >>> o = solve(frame, np.array([0.3, 0.9]))
+    >>> o.circ.tolist(), bool(np.allclose(o.u, [0.3, 0.9], rtol=1e-15, atol=0))
+    ([False, True], True)
+    """
     u_s = frame.separatrix_fraction
     circ = u > u_s
     half = orbit(frame, np.array([True, False]), np.full(2, 0.5), np.full(2, 0.5)).u
