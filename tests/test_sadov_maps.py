@@ -177,9 +177,11 @@ def check_canonical(body, regime, rng, moment_scale, momentum_scale, n):
     keep = np.flatnonzero((d > 0.1) & (np.abs(a[3]) < 0.98))[:n]
     assert len(keep) == n
     x = np.stack([a[0][keep], a[1][keep], a[2][keep], a[3][keep], np.ones(n), 0.9 * a[5][keep]], axis=-1)
-    # The orbit's size in L sets the scale of the derivatives (tiny librations on the Earth).
+    # The orbit's extent in L/G sets the scale of the derivatives: |L| for the tiny librations
+    # of the Earth, G − |L| near the poles (where G's step moves L/G as much as L's).
+    x_abs = np.abs(a[3][keep])
     step = 1e-3 * np.minimum(1.0, d[keep])[:, None] * np.ones((n, 6))
-    step[:, 3] *= np.maximum(np.abs(a[3][keep]), 0.05)
+    step[:, 3:5] *= np.minimum(np.maximum(x_abs, 0.05), 1 - x_abs)[:, None]
     M = jacobians(f, x, step)
     error = np.abs(np.transpose(M, (0, 2, 1)) @ J6 @ M - J6).max()
     assert error <= 1e-8
