@@ -235,6 +235,67 @@ class State:
         """
         return hub_to_andoyer(self._q, self._m, stacklevel=2)
 
+    @classmethod
+    def from_sadov(
+        cls,
+        body: RigidBody,
+        phi_l: ArrayLike,
+        phi_g: ArrayLike,
+        phi_h: ArrayLike,
+        I_l: ArrayLike,
+        I_g: ArrayLike,
+        I_h: ArrayLike,
+    ) -> State:
+        """State from Sadov's action–angle variables (Gurfil §5); see :mod:`andoyer.charts.sadov`.
+
+        Examples
+        --------
+        >>> from andoyer import RigidBody
+        >>> body = RigidBody(1.0, 2.0, 3.0)
+        >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.9, 1.0, 0.2)
+        >>> back = State.from_sadov(body, *s.as_sadov(body))
+        >>> bool(abs(back.m_body - s.m_body).max() < 1e-13)
+        True
+        """
+        from andoyer.charts.sadov import sadov_to_andoyer
+
+        return cls.from_andoyer(*sadov_to_andoyer(_check_body(body), phi_l, phi_g, phi_h, I_l, I_g, I_h))
+
+    def as_sadov(self, body: RigidBody):
+        """Sadov's action–angle variables ``(phi_l, phi_g, phi_h, I_l, I_g, I_h)`` of the free body.
+
+        Examples
+        --------
+        >>> from andoyer import RigidBody
+        >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.9, 1.0, 0.2)
+        >>> round(float(s.as_sadov(RigidBody(1.0, 2.0, 3.0)).I_g), 12)
+        1.0
+        """
+        from andoyer.charts.sadov import andoyer_to_sadov
+
+        return andoyer_to_sadov(_check_body(body), *self.as_andoyer())
+
+    def as_initial_andoyer(self, body: RigidBody, epoch: ArrayLike, t: ArrayLike = 0.0) -> Andoyer:
+        """The modified Andoyer set (Gurfil §4.1): Andoyer variables at ``epoch`` of the free motion.
+
+        The state is taken at time ``t``; the free flow carries it to ``epoch``.
+        ``(l0, g0, h, L0, G, H)`` are constants of the free motion.
+
+        Examples
+        --------
+        >>> from andoyer import RigidBody, FreeRotation
+        >>> body = RigidBody(1.0, 2.0, 3.0)
+        >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.9, 1.0, 0.2)
+        >>> later = FreeRotation(body).propagate(s, 2.5)
+        >>> a, b = s.as_initial_andoyer(body, 0.0), later.as_initial_andoyer(body, 0.0, t=2.5)
+        >>> bool(max(abs(x - y) for x, y in zip(a, b)) < 1e-12)
+        True
+        """
+        from andoyer.free import FreeRotation
+
+        dt = np.asarray(epoch, dtype=float) - np.asarray(t, dtype=float)
+        return FreeRotation(_check_body(body)).propagate(self, dt).as_andoyer()
+
     # -------------------------------------------------------------- properties
     @property
     def quaternion(self) -> Array:
