@@ -160,9 +160,32 @@ def test_sam_hamiltonian_is_eq_27():
 
 
 def test_sam_errors():
-    with pytest.raises(ValueError, match="order >= 2"):
-        sam_theory(1)
-    with pytest.raises(ValueError, match="0 <= beta < 1"):
+    with pytest.raises(ValueError, match="order >= 1"):
+        sam_theory(0)
+    with pytest.raises(ValueError, match="-1 < beta < 1"):
         sam_theory(2).secular_hamiltonian(0.01, 1.0, 0.1, 1.0, 1.0)
-    with pytest.raises(ValueError, match="alpha > 0"):
-        sam_theory(2).frequencies(0.01, 1.0, -0.1, 0.5, 1.0)
+    with pytest.raises(ValueError, match="-1 < beta < 1"):
+        sam_theory(2).secular_hamiltonian(0.01, 1.0, 0.1, np.nan, 1.0)
+    with pytest.raises(ValueError, match="alpha != 0"):
+        sam_theory(2).frequencies(0.01, 1.0, 0.0, 0.5, 1.0)
+    with pytest.raises(ValueError, match="C > 0"):
+        sam_theory(2).frequencies(0.01, 1.0, 0.1, 0.5, -1.0)
+
+
+def test_sam_theory_order_1_has_no_q_and_the_first_transformation():
+    theory = sam_theory(1)
+    assert theory.q == {}
+    assert theory.l == {(1, 1): (Fraction(1, 2),)}
+    assert {(1, 1): (Fraction(1, 2),)} == theory.L
+    assert theory.g == {(1, 1): (Fraction(1, 4),)}
+
+
+def test_sam_theory_negative_alpha_and_beta_is_the_same_series():
+    # The LAM labelling evaluates the polynomials at α < 0, β < 0: K(ℓ + π/2; −β) = K(ℓ; β), so
+    # the secular Hamiltonian is even in β and linear in α.
+    theory = sam_theory(5)
+    a = theory.secular_hamiltonian(0.02, 1.0, 0.3, 0.6, 1.0)
+    b = theory.secular_hamiltonian(0.02, 1.0, 0.3, -0.6, 1.0)
+    assert a == pytest.approx(b, rel=1e-15)
+    c = theory.secular_hamiltonian(0.02, 1.0, -0.3, 0.6, 1.0)
+    assert (a - 0.5) == pytest.approx(-(c - 0.5), rel=1e-13)

@@ -162,15 +162,17 @@ class SAMTheory:
         return self._compiled[name]
 
     def _args(self, alpha: ArrayLike, beta: ArrayLike, C: ArrayLike) -> dict[str, Any]:
+        # β < 0 and α < 0 arise for other axis labellings (LAM: α* < 0, β = −β*); the series
+        # are polynomials in β and s = √(1 − β²), valid for |β| < 1.
         b = np.asarray(beta, dtype=np.float64)
-        if not np.all((b >= 0) & (b < 1)):
-            msg = f"expected 0 <= beta < 1, got {b[(b < 0) | (b >= 1)].flat[0]!r}"
+        if not np.all(np.abs(b) < 1):
+            msg = f"expected -1 < beta < 1, got {b[~(np.abs(b) < 1)].flat[0]!r}"
             raise ValueError(msg)
         a, c = np.asarray(alpha, dtype=np.float64), np.asarray(C, dtype=np.float64)
-        if not (np.all(a > 0) and np.all(c > 0)):
-            msg = "expected alpha > 0 and C > 0, got nonpositive values"
+        if not (np.all(a != 0) and np.all(c > 0)):
+            msg = "expected alpha != 0 and C > 0, got alpha = 0 or C <= 0"
             raise ValueError(msg)
-        return {"alpha": a, "beta": b, "s": np.sqrt(1 - b * b), "C": c}
+        return {"alpha": a, "beta": b, "s": np.sqrt((1 - b) * (1 + b)), "C": c}
 
     def secular_hamiltonian(
         self, L: ArrayLike, G: ArrayLike, alpha: ArrayLike, beta: ArrayLike, C: ArrayLike
@@ -337,7 +339,7 @@ def sam_theory(order: int = 12) -> SAMTheory:
     Parameters
     ----------
     order : int
-        ``N ≥ 2``; the paper tabulates ``q_i`` to ``i = 10`` and the transformation to ``i = 9``
+        ``N ≥ 1``; the paper tabulates ``q_i`` to ``i = 10`` and the transformation to ``i = 9``
         (``N = 11``); ``N = 12`` takes a fraction of a second.
 
     Returns
@@ -349,8 +351,8 @@ def sam_theory(order: int = 12) -> SAMTheory:
     >>> sam_theory(6).q[5]
     (Fraction(1, 1), Fraction(0, 1), Fraction(177, 64), Fraction(0, 1), Fraction(45, 128))
     """
-    if not isinstance(order, int) or isinstance(order, bool) or order < 2:
-        msg = f"expected an integer order >= 2, got {order!r}"
+    if not isinstance(order, int) or isinstance(order, bool) or order < 1:
+        msg = f"expected an integer order >= 1, got {order!r}"
         raise ValueError(msg)
     T = deprit(list(sam_hamiltonian()), order, ["l"])
     tables = _tables(T)
