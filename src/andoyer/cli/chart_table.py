@@ -2,11 +2,15 @@
 
 from __future__ import annotations
 
+import argparse
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
 
+from andoyer import bodies
+from andoyer.body import RigidBody
+from andoyer.cli.output import CliError
 from andoyer.state import State
 
 
@@ -16,27 +20,52 @@ class ChartColumns:
 
     columns: tuple[str, ...]
     angles: tuple[str, ...]
-    to_state: Callable[[Sequence[np.ndarray]], State]
-    from_state: Callable[[State], Sequence[np.ndarray]]
+    to_state: Callable[[Sequence[np.ndarray], RigidBody | None], State]
+    from_state: Callable[[State, RigidBody | None], Sequence[np.ndarray]]
+    needs_body: bool = False
 
 
 CHARTS: dict[str, ChartColumns] = {
     "state": ChartColumns(
         ("qx", "qy", "qz", "qw", "m1", "m2", "m3"),
         (),
-        lambda v: State.from_quaternion(np.stack(v[:4], -1), np.stack(v[4:], -1)),
-        lambda s: (*np.moveaxis(s.quaternion, -1, 0), *np.moveaxis(s.m_body, -1, 0)),
+        lambda v, _: State.from_quaternion(np.stack(v[:4], -1), np.stack(v[4:], -1)),
+        lambda s, _: (*np.moveaxis(s.quaternion, -1, 0), *np.moveaxis(s.m_body, -1, 0)),
     ),
     "euler": ChartColumns(
         ("phi", "theta", "psi", "Phi", "Theta", "Psi"),
         ("phi", "theta", "psi"),
-        lambda v: State.from_euler(*v),
-        lambda s: tuple(s.as_euler()),
+        lambda v, _: State.from_euler(*v),
+        lambda s, _: tuple(s.as_euler()),
     ),
     "andoyer": ChartColumns(
         ("l", "g", "h", "L", "G", "H"),
         ("l", "g", "h"),
-        lambda v: State.from_andoyer(*v),
-        lambda s: tuple(s.as_andoyer()),
+        lambda v, _: State.from_andoyer(*v),
+        lambda s, _: tuple(s.as_andoyer()),
+    ),
+    "sadov": ChartColumns(
+        ("phi_l", "phi_g", "phi_h", "I_l", "I_g", "I_h"),
+        ("phi_l", "phi_g", "phi_h"),
+        lambda v, body: State.from_sadov(body, *v),
+        lambda s, body: tuple(s.as_sadov(body)),
+        needs_body=True,
     ),
 }
+
+
+def add_body_arguments(parser: argparse.ArgumentParser) -> None:
+    """``--body NAME`` or ``--moments I1 I2 I3`` for the charts and models that need the inertia."""
+    group = parser.add_mutually_exclusive_group()
+    group.add_argument("--body", choices=bodies.names(), help="a named body (andoyer bodies)")
+    group.add_argument("--moments", nargs=3, type=float, metavar=("I1", "I2", "I3"))
+
+
+def body_from_args(args: argparse.Namespace) -> RigidBody:
+    """The body named on the command line."""
+    if getattr(args, "moments", None) is not None:
+        return RigidBody(*args.moments)
+    if getattr(args, "body", None) is not None:
+        return bodies.get(args.body)
+    msg = "expected --body NAME or --moments I1 I2 I3 for this chart, got neither"
+    raise CliError(msg)

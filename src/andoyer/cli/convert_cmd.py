@@ -6,7 +6,7 @@ import argparse
 
 import numpy as np
 
-from andoyer.cli.chart_table import CHARTS
+from andoyer.cli.chart_table import CHARTS, add_body_arguments, body_from_args
 from andoyer.cli.output import CliError, atomic_output, format_rows, read_csv_columns
 
 EXAMPLES = """examples:
@@ -30,6 +30,7 @@ def register(commands: argparse._SubParsersAction) -> None:
     given.add_argument("--values", nargs="+", type=float, metavar="X", help="one state, in column order")
     given.add_argument("--input", metavar="CSV", help="CSV file with a header naming the columns")
     parser.add_argument("--degrees", action="store_true", help="angles in degrees (input and output)")
+    add_body_arguments(parser)
     parser.add_argument("--format", choices=("table", "csv"), default="table")
     parser.add_argument("--output", metavar="FILE", help="write here instead of standard output")
     parser.set_defaults(run=run)
@@ -49,8 +50,9 @@ def run(args: argparse.Namespace) -> int:
         columns = read_csv_columns(args.input, source.columns)
     if args.degrees:
         columns = {c: np.radians(v) if c in source.angles else v for c, v in columns.items()}
-    state = source.to_state([columns[c] for c in source.columns])
-    values = [np.asarray(v, dtype=float) for v in target.from_state(state)]
+    body = body_from_args(args) if (source.needs_body or target.needs_body) else None
+    state = source.to_state([columns[c] for c in source.columns], body)
+    values = [np.asarray(v, dtype=float) for v in target.from_state(state, body)]
     if args.degrees:
         values = [
             np.degrees(v) if c in target.angles else v for c, v in zip(target.columns, values, strict=True)

@@ -4,12 +4,15 @@ from __future__ import annotations
 
 import argparse
 import sys
+from typing import TextIO
 
 import numpy as np
 
 from andoyer import bodies
+from andoyer.body import RigidBody
 from andoyer.cli.chart_table import CHARTS
 from andoyer.cli.output import format_rows
+from andoyer.free import FreeRotation
 from andoyer.state import State
 
 #: Illustrative inclination of the angular momentum on the reference axis (radians).
@@ -52,8 +55,25 @@ def run(args: argparse.Namespace) -> int:
     out.write(f"omega (body) = {state.omega(body).tolist()}\n")
     out.write(f"m (reference) = {state.m_reference.tolist()}\n\n")
     for name, chart in CHARTS.items():
-        values = [float(v) for v in chart.from_state(state)]
+        values = [float(v) for v in chart.from_state(state, body)]
         out.write(f"## {name}\n")
         out.write(format_rows(chart.columns, [values], "table"))
         out.write("\n")
+    write_exact_propagation(out, body, state, entry.rotation_period)
     return 0
+
+
+def write_exact_propagation(out: TextIO, body: RigidBody, state: State, rotation_period: float) -> None:
+    """The closed-form torque-free motion of the demo state: period, and 100 periods later."""
+    free = FreeRotation(body)
+    periods = free.periods(state)
+    period = float(periods.period)
+    out.write("## exact torque-free propagation\n")
+    out.write(f"regime: {free.regime(state)}\n")
+    out.write(
+        f"period of m(t) (free wobble): {period:.10g} s = {period / rotation_period:.6g} rotation periods\n"
+    )
+    later = free.propagate(state, 100 * period)
+    drift = float(abs(later.m_body - state.m_body).max() / abs(state.m_body).max())
+    energy = abs(float(later.energy(body) / state.energy(body)) - 1)
+    out.write(f"after 100 periods: |m - m0|/|m0| = {drift:.2e}, relative energy change = {energy:.2e}\n")
