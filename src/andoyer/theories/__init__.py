@@ -1,5 +1,9 @@
 """Concrete perturbation theories built on :mod:`andoyer.series`.
 
+Lara's SAM theory (:func:`sam_theory`), its evaluation on states (:class:`SAMRotation`), its
+tables (:mod:`andoyer.theories.sam_tables`) and its expansion in Kinoshita's ``j``
+(:mod:`andoyer.theories.kinoshita`).
+
 Examples
 --------
 >>> from andoyer.theories import sam_theory
@@ -14,5 +18,18 @@ from andoyer.theories.sam import (
     sam_hamiltonian,
     sam_theory,
 )
+from andoyer.theories.sam_rotation import SAMFrequencies, SAMRotation
+from andoyer.theories.sam_tables import sam_tables, tables_from_json, tables_to_json
 
-__all__ = ["SAM_RING", "SAMTheory", "beta_polynomial_value", "sam_hamiltonian", "sam_theory"]
+__all__ = [
+    "SAM_RING",
+    "SAMFrequencies",
+    "SAMRotation",
+    "SAMTheory",
+    "beta_polynomial_value",
+    "sam_hamiltonian",
+    "sam_tables",
+    "sam_theory",
+    "tables_from_json",
+    "tables_to_json",
+]

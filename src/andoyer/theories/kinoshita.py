@@ -14,8 +14,9 @@ action are offered:
 * ``relation="exact"``: eq. 35 with the full transformation, inverted as a series in ``j²``
   (the minimum inclination itself, exact through the order kept).
 
-The computation is polynomial arithmetic in ``u = j²`` with coefficients rational in ``β`` and
-``s`` (kept as a symbol, reduced by ``s² = 1 − β²`` at the end).  Symbols: ``alpha, beta, G, C,
+The computation is exact polynomial arithmetic in ``u = j²`` over the field ℚ(τ, α) with
+``β = (1 − τ²)/(1 + τ²)``, ``s = 2τ/(1 + τ²)``; coefficients are written back as
+``A(β) + B(β)√(1 − β²)``.  Symbols: ``alpha, beta, G, C,
 j`` (positive) and ``l`` for the mean angle ``ℓ'``; ``G`` stands for ``G' = M``.
 """
 
@@ -66,77 +67,112 @@ def _check(order: int, j_order: int, relation: str) -> None:
 
 
 class _Work:
-    """Symbols of the computation: ``x = L'/G'``, ``u = j²`` and ``s`` independent of β."""
+    """Exact arithmetic for the expansions.
 
-    def __init__(self) -> None:
+    β and ``s = √(1 − β²)`` are parametrised rationally, ``β = (1 − τ²)/(1 + τ²)``,
+    ``s = 2τ/(1 + τ²)`` (``τ = √((1 − β)/(1 + β))``), so every coefficient lies in the field
+    ℚ(τ, α) with exact, canonical arithmetic.  ``G = C = 1`` inside (restored by scaling).
+    A truncated series in ``u = j²`` is a list of dicts ``{trig: coefficient}``, ``trig`` being
+    ``()`` or ``("cos"|"sin", k)`` for a harmonic ``k ℓ'``.
+    """
+
+    def __init__(self, top: int) -> None:
         import sympy as sp
+        from sympy.polys.fields import field
 
         self.sp = sp
         self.S = symbols()
-        self.x = sp.Symbol("x", positive=True)
-        self.u = sp.Symbol("u", positive=True)
-        self.s = sp.Symbol("s", positive=True)
+        self.top = top
+        self.K, self.tau, self.alpha = field("tau, alpha", sp.QQ)
+        self.beta = (1 - self.tau**2) / (1 + self.tau**2)
+        self.s = 2 * self.tau / (1 + self.tau**2)
 
-    def series(self, f: PoissonSeries) -> Any:
-        """A SAM-ring series as a polynomial in ``x`` (``L = x G``)."""
-        S = self.S
-        subs = {"L": self.x * S["G"], "G": S["G"], "C": S["C"], "alpha": S["alpha"], "beta": S["beta"]}
-        return self.sp.expand(f.to_sympy(subs | {"s": self.s, "l": S["l"]}))
+    def zero(self) -> list[dict[Any, Any]]:
+        return [{} for _ in range(self.top + 1)]
 
-    def truncate(self, expr: Any, top: int) -> Any:
-        """Powers ``u^0 … u^top`` of a polynomial in ``u``."""
-        sp = self.sp
-        poly = sp.Poly(sp.expand(expr), self.u)
-        return sp.Add(*(c * self.u**k for (k,), c in poly.terms() if k <= top))
+    def series(self, f: PoissonSeries, at_half_pi: bool = False) -> dict[int, dict[Any, Any]]:
+        """``f`` with ``L = x``, ``G = C = 1``: ``{power of x: {trig: coefficient}}``."""
+        from math import cos, pi, sin
 
-    def compose(self, poly_x: Any, x_of_u: Any, top: int) -> Any:
-        """``poly_x(x_of_u(u))`` truncated at ``u^top`` (``x_of_u`` has no constant term)."""
-        sp = self.sp
-        poly = sp.Poly(poly_x, self.x)
-        out, power = sp.Integer(0), sp.Integer(1)
-        for k in range(poly.degree() + 1):
+        values = {"G": 1, "C": 1, "alpha": self.alpha, "beta": self.beta, "s": self.s}
+        names = f.ring.poly_names
+        out: dict[int, dict[Any, Any]] = {}
+        for t in f.terms():
+            c = self.K(self.sp.Rational(t.coeff.numerator, t.coeff.denominator))
+            power = 0
+            for name, e in zip(names, t.exponents, strict=True):
+                if name == "L":
+                    power = e
+                elif e:
+                    c = c * values[name] ** e
+            k = t.harmonics[0]
+            if at_half_pi and k:
+                c = c * round((cos if t.kind == "cos" else sin)(k * pi / 2))
+                key: Any = ()
+            else:
+                key = (t.kind, k) if k else ()
+            row = out.setdefault(power, {})
+            row[key] = row.get(key, 0) + c
+        return out
+
+    def add_into(self, target: dict[Any, Any], row: dict[Any, Any], factor: Any = 1) -> None:
+        for key, c in row.items():
+            target[key] = target.get(key, 0) + c * factor
+
+    def compose(self, poly_x: dict[int, dict[Any, Any]], x_of_u: list[Any]) -> list[dict[Any, Any]]:
+        """``poly_x(x_of_u(u))`` truncated at ``u^top`` (``x_of_u`` scalar, no constant term)."""
+        out, power = self.zero(), [1] + [0] * self.top
+        for k in range(max(poly_x) + 1):
             if k:
-                power = self.truncate(power * x_of_u, top)
-            c = poly.coeff_monomial(self.x**k)
-            if c != 0:
-                out += c * power
-        return self.truncate(out, top)
+                power = [sum(power[i] * x_of_u[n - i] for i in range(n + 1)) for n in range(self.top + 1)]
+            for n in range(self.top + 1):
+                if power[n] != 0:
+                    self.add_into(out[n], poly_x.get(k, {}), power[n])
+        return out
 
-    def first_order(self) -> Any:
-        """Eq. 36: ``x = s u/(2(1 − β))``."""
-        return self.s * self.u / (2 * (1 - self.S["beta"]))
-
-    def finish(self, expr: Any, top: int) -> Any:
-        """Collect in ``j``, reduce ``s² = 1 − β²`` and factor each coefficient."""
+    def to_sympy(self, c: Any) -> Any:
+        """A coefficient of ℚ(τ, α) as ``A(β) + B(β)√(1 − β²)``, factored."""
         sp = self.sp
-        beta, j = self.S["beta"], self.S["j"]
-        root = sp.sqrt(1 - beta**2)
+        tau = sp.Symbol("tau", positive=True)
+        expr = sp.sympify(c.as_expr()).subs(sp.Symbol("alpha"), self.S["alpha"]).subs(sp.Symbol("tau"), tau)
+        mirrored = expr.subs(tau, -tau)
+        even = sp.cancel((expr + mirrored) / 2)
+        odd = sp.cancel((expr - mirrored) / 2 / (2 * tau / (1 + tau**2)))
+        beta = self.S["beta"]
+        root = sp.sqrt((1 - beta) / (1 + beta))
+        A, B = (sp.cancel(part.subs(tau, root)) for part in (even, odd))
+        r = sp.Symbol("r", positive=True)  # stands for √(1 − β²) while factoring
+        return sp.factor(A + B * r).subs(r, sp.sqrt(1 - beta**2))
+
+    def finish(self, coeffs: list[dict[Any, Any]], scale: Any = 1) -> Any:
+        """Polynomial in ``j`` (trigonometric coefficients in ``ℓ'``), times ``scale``."""
+        sp = self.sp
+        l, j = self.S["l"], self.S["j"]
         terms = []
-        poly = sp.Poly(sp.expand(expr), self.u)
-        for k in range(top + 1):
-            c = sp.cancel(poly.coeff_monomial(self.u**k))
-            num, den = sp.fraction(c)
-            num = sp.rem(sp.expand(num), self.s**2 - 1 + beta**2, self.s)
-            den = sp.rem(sp.expand(den), self.s**2 - 1 + beta**2, self.s)
-            c = sp.factor(sp.cancel(num / den).subs(self.s, root))
-            terms.append(c * j ** (2 * k))
+        for n, row in enumerate(coeffs):
+            for key, c in row.items():
+                if c != 0:
+                    trig = 1 if key == () else getattr(sp, key[0])(key[1] * l)
+                    terms.append(scale * self.to_sympy(c) * trig * j ** (2 * n))
         return sp.Add(*terms)
 
 
-def _mean_action(w: _Work, order: int, top: int, relation: str) -> Any:
-    """``x(u)`` as a polynomial in ``u`` with coefficients in β, s."""
-    sp = w.sp
-    x1 = w.first_order()
+def _mean_action(w: _Work, order: int, relation: str) -> list[Any]:
+    """``x(u)`` as scalar coefficients of ``u⁰ … u^top`` in ℚ(τ)."""
+    x = [w.K(0)] * (w.top + 1)
+    x[1] = w.s / (2 * (1 - w.beta))  # eq. 36
     if relation == "eq36":
-        return x1
-    beta = w.S["beta"]
-    one_minus_cos = sum((-1) ** (k + 1) * w.u**k / sp.factorial(2 * k) for k in range(1, top + 1))
-    L_half = w.series(lie_sum(sam_theory(max(order, top)).transform.direct("L"))).subs(w.S["l"], sp.pi / 2)
-    lhs = sp.expand((1 - beta) / w.s * L_half / w.S["G"])
-    slope = lhs.coeff(w.x, 1)
-    x = x1
-    for _ in range(top):  # Newton-like fixed point: one more power of u per pass
-        x = w.truncate(x - (w.compose(lhs, x, top) - one_minus_cos) / slope, top)
+        return x
+    one_minus_cos = [0] + [
+        (-1) ** (k + 1) * w.K(w.sp.Rational(1, factorial(2 * k))) for k in range(1, w.top + 1)
+    ]
+    L_half = w.series(lie_sum(sam_theory(max(order, w.top)).transform.direct("L")), at_half_pi=True)
+    lhs = {k: {(): (1 - w.beta) / w.s * row.get((), 0)} for k, row in L_half.items()}  # x + O(x²)
+    for _ in range(w.top):  # each pass fixes one more power of u
+        residual = w.compose(lhs, x)
+        x = [
+            x[n] - (residual[n].get((), 0) - one_minus_cos[n]) * w.s / (1 - w.beta) for n in range(w.top + 1)
+        ]
     return x
 
 
@@ -160,11 +196,11 @@ def mean_action_in_j(order: int = 2, j_order: int = 4, relation: str = "eq36") -
     >>> mean_action_in_j(relation="eq36")
     -j**2*sqrt(1 - beta**2)/(2*(beta - 1))
     >>> mean_action_in_j(j_order=4, relation="exact").coeff(symbols()["j"], 4)
-    -sqrt(1 - beta**2)*(3*beta**2 - 2*beta + 1)/(24*(beta - 1)**2)
+    sqrt(1 - beta**2)*(4*beta - 1)/(24*(beta - 1)**2)
     """
     _check(order, j_order, relation)
-    w = _Work()
-    return w.finish(_mean_action(w, order, j_order // 2, relation), j_order // 2)
+    w = _Work(j_order // 2)
+    return w.finish([{(): c} for c in _mean_action(w, order, relation)])
 
 
 def secular_frequencies_in_j(order: int = 2, j_order: int = 6, relation: str = "eq36") -> tuple[Any, Any]:
@@ -191,11 +227,11 @@ def secular_frequencies_in_j(order: int = 2, j_order: int = 6, relation: str = "
     G*alpha*beta**2*j**6*(beta + 1)/(32*C*(beta - 1)**2) + G*alpha*j**2*(beta + 1)/(2*C) + G/C
     """
     _check(order, j_order, relation)
-    w = _Work()
-    top = j_order // 2
+    w = _Work(j_order // 2)
     T = lie_sum(sam_theory(order).transform.new_hamiltonian)
-    x = _mean_action(w, order, top, relation)
-    return tuple(w.finish(w.compose(w.series(T.diff(name)), x, top), top) for name in ("L", "G"))
+    x = _mean_action(w, order, relation)
+    scale = w.S["G"] / w.S["C"]  # T = (G²/C) f(L/G): both frequencies scale as G/C
+    return tuple(w.finish(w.compose(w.series(T.diff(name)), x), scale) for name in ("L", "G"))
 
 
 def precession_rate_in_j(order: int = 2, j_order: int = 2, relation: str = "eq36") -> Any:
@@ -206,14 +242,13 @@ def precession_rate_in_j(order: int = 2, j_order: int = 2, relation: str = "eq36
     Examples
     --------
     >>> precession_rate_in_j()
-    G*alpha*j**2*(-beta**2 - sqrt(1 - beta**2) + 1)/(2*C*(beta - 1)) + G*(alpha*sqrt(1 - beta**2) + 1)/C
+    G*alpha*j**2*(beta**2 + sqrt(1 - beta**2) - 1)/(2*C*(beta - 1)) + G*(alpha*sqrt(1 - beta**2) + 1)/C
     """
     _check(order, j_order, relation)
-    w = _Work()
-    top = j_order // 2
+    w = _Work(j_order // 2)
     T = lie_sum(sam_theory(order).transform.new_hamiltonian)
-    x = _mean_action(w, order, top, relation)
-    return w.finish(w.compose(w.series(T.diff("L") + T.diff("G")), x, top), top)
+    x = _mean_action(w, order, relation)
+    return w.finish(w.compose(w.series(T.diff("L") + T.diff("G")), x), w.S["G"] / w.S["C"])
 
 
 def andoyer_N_in_j(order: int = 2, j_order: int = 2, relation: str = "eq36") -> Any:
@@ -235,8 +270,8 @@ def andoyer_N_in_j(order: int = 2, j_order: int = 2, relation: str = "eq36") -> 
     0
     """
     _check(order, j_order, relation)
-    w = _Work()
     top = j_order // 2
+    w = _Work(top)
     theory = sam_theory(max(order, top)).transform
     R = theory.ring
     dl, L_old = lie_sum(theory.direct_angle("l")), lie_sum(theory.direct("L"))
@@ -251,5 +286,4 @@ def andoyer_N_in_j(order: int = 2, j_order: int = 2, relation: str = "eq36") -> 
         power = power * (dl * 2)
     cos_2l = R("cos(2*l)") * cos_d - R("sin(2*l)") * sin_d
     N_over_M = R.one - L_old * R("G**-1 * s**-1") * (R.one + R("beta") * cos_2l)
-    x = _mean_action(w, order, top, relation)
-    return w.finish(w.compose(w.series(N_over_M), x, top), top)
+    return w.finish(w.compose(w.series(N_over_M), _mean_action(w, order, relation)))

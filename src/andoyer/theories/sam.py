@@ -308,17 +308,16 @@ def _tables(T: LieTransform) -> dict[str, dict[Any, BetaPolynomial]]:
     for i in range(1, N + 1):
         delta_i = R(f"L**{i} * G**{-i} * s**{-i}")
         terms = {name: series[i] / factorial(i) for name, series in (("l", dl), ("g", dg), ("L", dL))}
-        for t in terms["l"].terms():
-            m = t.harmonics[0] // 2
+        # One coefficient per harmonic 2mℓ (each harmonic carries many monomials).
+        harmonics = {name: sorted({t.harmonics[0] // 2 for t in f.terms()}) for name, f in terms.items()}
+        for m in harmonics["l"]:
             coeff = terms["l"].trig_coefficient("sin", [2 * m, 0])
             l_tab[(i, m)] = _divide_by_beta_power(_as_beta_polynomial(coeff, delta_i), m, (-1) ** m)
-        for t in terms["g"].terms():
-            m = t.harmonics[0] // 2
+        for m in harmonics["g"]:
             coeff = terms["g"].trig_coefficient("sin", [2 * m, 0])
             poly = _as_beta_polynomial(coeff, delta_i * R("L/G"))
             g_tab[(i, m)] = _divide_by_beta_power(poly, m, -((-1) ** m))
-        for t in terms["L"].terms():
-            m = t.harmonics[0] // 2
+        for m in harmonics["L"]:
             coeff = terms["L"].trig_coefficient("cos", [2 * m, 0])
             poly = _as_beta_polynomial(coeff, delta_i * R("L"))
             if m == 0:
