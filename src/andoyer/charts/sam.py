@@ -48,7 +48,7 @@ from scipy.spatial.transform import Rotation
 
 from andoyer import _quaternion as quat
 from andoyer._fastmath import atan2_2pi, chunked, wrap_2pi
-from andoyer._validation import as_finite, broadcast, check_momenta
+from andoyer._validation import as_finite, as_vectors, broadcast, check_momenta
 from andoyer.body import RigidBody
 from andoyer.charts.andoyer import Andoyer, _hub_to_andoyer_kernel
 from andoyer.charts.singular import warn_if_singular
@@ -351,9 +351,13 @@ def andoyer_from_sam(
 
 def _sam_of_hub(q: Array, m: Array, axes: SAMAxes) -> tuple[SAM, Array, Array]:
     """SAM variables of hub arrays in the frame of ``axes``, and the masks of the singular charts."""
-    q = np.asarray(q, dtype=np.float64)
-    m = np.asarray(m, dtype=np.float64)
-    shape = m.shape[:-1]
+    q, m = as_vectors(q, "quaternion", 4), as_vectors(m, "m_body", 3)
+    try:
+        shape = np.broadcast_shapes(q.shape[:-1], m.shape[:-1])
+    except ValueError as exc:
+        msg = f"expected quaternions and momenta with broadcastable shapes, got {q.shape} and {m.shape}"
+        raise ValueError(msg) from exc
+    q, m = np.broadcast_to(q, (*shape, 4)), np.broadcast_to(m, (*shape, 3))
     if np.any(np.sum(m * m, axis=-1) <= 0):
         msg = "expected a non-zero angular momentum, got |m| = 0 (the SAM chart needs G > 0)"
         raise ValueError(msg)
@@ -372,11 +376,28 @@ def _sam_of_hub(q: Array, m: Array, axes: SAMAxes) -> tuple[SAM, Array, Array]:
 
 
 def hub_to_sam(q: Array, m: Array, body: RigidBody, mode: str = "SAM", stacklevel: int = 2) -> SAM:
-    """SAM (or LAM) variables of attitude quaternions (..., 4) and body momenta (..., 3).
+    """SAM (or LAM) variables of attitude quaternions and body momenta.
 
     The body frame is relabelled by :func:`sam_axes`; ``M − N = (m1'² + m2'²)/(M + |N|)`` is
     formed without cancellation.  Warnings (:class:`SingularChartWarning`) at ``sam_L = 0``
     (``sam_l = 0``) and at ``sin I = 0`` (``h = 0``, ``sam_g`` carries ``h ± g``).
+
+    Parameters
+    ----------
+    q : array_like, shape (..., 4)
+        Attitude quaternions (body → reference), scalar last.
+    m : array_like, shape (..., 3)
+        Body angular momenta (non-zero); leading shapes broadcast with ``q``.
+    body : RigidBody
+    mode : {"SAM", "LAM"}
+    stacklevel : int
+        Warnings point ``stacklevel`` frames above the caller (2 suits a method wrapping this
+        function, as ``State.as_sam``; use 1 for a direct call).
+
+    Returns
+    -------
+    SAM
+        Fields of the broadcast leading shape.
 
     Examples
     --------
@@ -404,10 +425,24 @@ def sam_to_hub(
     body: RigidBody,
     mode: str = "SAM",
 ) -> tuple[Array, Array]:
-    """Attitude quaternions (..., 4) and body momenta (..., 3) of SAM (or LAM) variables.
+    """Attitude quaternions and body momenta of SAM (or LAM) variables.
 
     ``sin J = √((M − N)(M + N))/M`` is built from ``M − N = L (1 + β cos 2ℓ)/s`` directly, so
     states close to the pole keep their transverse momentum to full relative precision.
+
+    Parameters
+    ----------
+    sam_l, sam_g, h, sam_L, sam_G, H : array_like, shape (...)
+        SAM variables, ``sam_G > 0``, ``sam_L >= 0``, ``|H| <= sam_G``; they broadcast.
+    sign : array_like, optional
+        Hemisphere ``±1`` of the angular momentum on the chart's axis (default ``+1``).
+    body : RigidBody
+    mode : {"SAM", "LAM"}
+
+    Returns
+    -------
+    q : numpy.ndarray, shape (..., 4)
+    m : numpy.ndarray, shape (..., 3)
 
     Examples
     --------
@@ -439,6 +474,16 @@ def sam_energy(
 
     ``K = G²/(2 I3) [1 + 2 α s L/G − α (L/G)² (1 + β cos 2ℓ)]``, ``s = √(1 − β²)``, with
     ``I3`` the moment of the chart's axis.
+
+    Parameters
+    ----------
+    sam_l, sam_L, sam_G : array_like, shape (...)
+    alpha, beta, I3 : array_like
+        :attr:`SAMAxes.alpha`, :attr:`SAMAxes.beta` and ``SAMAxes.moments[2]``; all broadcast.
+
+    Returns
+    -------
+    numpy.ndarray, shape (...)
 
     Examples
     --------
