@@ -296,6 +296,43 @@ class State:
         dt = np.asarray(epoch, dtype=float) - np.asarray(t, dtype=float)
         return FreeRotation(_check_body(body)).propagate(self, dt).as_andoyer()
 
+    def as_sam(self, body: RigidBody, mode: str = "SAM"):
+        """Lara's SAM (or LAM) action–angle chart ``(sam_l, sam_g, h, sam_L, sam_G, H, sign)``.
+
+        See :mod:`andoyer.charts.sam` (Lara eqs. 18–25, any axis labelling).
+
+        Examples
+        --------
+        >>> from andoyer import RigidBody
+        >>> body = RigidBody(1.0, 2.0, 3.0)
+        >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.99, 1.0, 0.2)
+        >>> back = State.from_sam(*s.as_sam(body), body=body)
+        >>> bool(abs(back.m_body - s.m_body).max() < 1e-13)
+        True
+        """
+        from andoyer.charts.sam import hub_to_sam
+
+        return hub_to_sam(self._q, self._m, _check_body(body), mode, stacklevel=2)
+
+    @classmethod
+    def from_sam(
+        cls,
+        sam_l: ArrayLike,
+        sam_g: ArrayLike,
+        h: ArrayLike,
+        sam_L: ArrayLike,
+        sam_G: ArrayLike,
+        H: ArrayLike,
+        sign: ArrayLike = 1.0,
+        *,
+        body: RigidBody,
+        mode: str = "SAM",
+    ) -> State:
+        """State from Lara's SAM (or LAM) action–angle chart; inverse of :meth:`as_sam`."""
+        from andoyer.charts.sam import sam_to_hub
+
+        return cls(*sam_to_hub(sam_l, sam_g, h, sam_L, sam_G, H, sign, body=_check_body(body), mode=mode))
+
     # -------------------------------------------------------------- properties
     @property
     def quaternion(self) -> Array:
