@@ -4,9 +4,14 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from hypothesis import settings
 from scipy.spatial.transform import Rotation
 
 from andoyer import RigidBody, bodies
+
+# Seeded like every other test: hypothesis draws the same examples on every run and machine.
+settings.register_profile("andoyer", derandomize=True, deadline=None)
+settings.load_profile("andoyer")
 
 REGIME_BODIES = {
     "triaxial": RigidBody(0.7, 1.0, 1.3),
