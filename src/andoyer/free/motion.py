@@ -125,18 +125,19 @@ class FreeMotion:
         spin = triax & (zeros >= 2)
         sep = (regime == Regime.SEPARATRIX) & ~spin
         tri = triax & ~sep & ~spin
+        frame = None
         if np.any(tri):
-            # a wobble whose square underflows (|m⊥| < 1e-154 |m|) is a steady spin
             idx = np.nonzero(tri)[0]
             frame = polhode_frame(moments[idx], m0[idx], regime[idx] == Regime.LAM)
             flat = frame.P1[0] == 0
-            spin[idx[flat]] = True
-            tri[idx[flat]] = False
+            if np.any(flat):  # a wobble whose square underflows (|m⊥| < 1e-154 |m|)
+                spin[idx[flat]] = True  # is a steady spin
+                tri[idx[flat]] = False
+                idx = idx[~flat]
+                frame = polhode_frame(moments[idx], m0[idx], regime[idx] == Regime.LAM)
         uni = ~triax | spin
 
         if np.any(tri):
-            idx = np.nonzero(tri)[0]
-            frame = polhode_frame(moments[idx], m0[idx], regime[idx] == Regime.LAM)
             const = _tri.triaxial(frame, None if q0 is None else q0[idx])
             period[idx] = const.period
             rate[idx] = const.precession_rate

@@ -89,10 +89,25 @@ def cycles(freq: Frequency, t, tt=None, offset=0.0):
     0.0
     """
     th, tl = split(t) if tt is None else tt
-    p = freq.hi * t
-    e = ((freq.hh * th - p) + freq.hh * tl + freq.hl * th) + freq.hl * tl
-    f = (p - np.round(p)) + (e + freq.lo * t) + offset
-    return f - np.round(f)
+    # in place: this runs per epoch, and fresh temporaries cost page faults
+    p = np.asarray(freq.hi * t)  # 0-d arrays, not numpy scalars, accept out=
+    e = np.asarray(freq.hh * th)
+    e -= p
+    tmp = np.asarray(freq.hh * tl)
+    e += tmp
+    np.multiply(freq.hl, th, out=tmp)
+    e += tmp
+    np.multiply(freq.hl, tl, out=tmp)
+    e += tmp
+    np.multiply(freq.lo, t, out=tmp)
+    e += tmp
+    f = np.asarray(np.round(p))
+    np.subtract(p, f, out=f)
+    f += e
+    f += offset
+    np.round(f, out=p)
+    f -= p
+    return f
 
 
 # Polynomials in f² for sin(πf)/f and cos(πf) on |f| ≤ 1/2: least-squares fits on

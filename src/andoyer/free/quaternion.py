@@ -125,11 +125,51 @@ def anchored_attitude(c, half, arc, m3):
     >>> [float(x) for x in anchored_attitude(c, (1.0, 0.0), ((e[0], 0.0), (e[1], 0.0)), 1.0)]
     [0.0, 0.0, 0.0, 1.0]
     """
+    # in place throughout: this runs per epoch, and fresh temporaries cost page faults
     cz, sz = half
-    au = tuple(cz * c.quat_u[k] + sz * c.quat_v[k] for k in range(4))
-    w = c.G + m3
-    inv = 1.0 / np.sqrt((2.0 * c.G) * w)
+    tmp = np.empty(np.broadcast_shapes(np.shape(cz), np.shape(m3), np.shape(c.quat_u[0])))
+    au = []
+    for k in range(4):
+        a = c.quat_u[k] * cz
+        np.multiply(c.quat_v[k], sz, out=tmp)
+        a += tmp
+        au.append(a)
+    w = np.asarray(m3 + c.G, dtype=np.float64)  # 0-d arrays accept out=, scalars do not
+    inv = np.asarray((2.0 * c.G) * w)
+    np.sqrt(inv, out=inv)
+    np.reciprocal(inv, out=inv)
     (va, xa), (vb, xb) = arc
     xa = xa * inv
     xb = xb * inv
-    return qmul(au, (*(va[k] * xa + vb[k] * xb for k in range(3)), w * inv))
+    vec = []
+    for k in range(3):
+        v = va[k] * xa
+        np.multiply(vb[k], xb, out=tmp)
+        v += tmp
+        vec.append(v)
+    w *= inv
+    return _qmul_accumulate(au, (*vec, w), tmp)
+
+
+def _qmul_accumulate(a, b, tmp):
+    """``a ⊗ b`` with one scratch array (same result as :func:`qmul`)."""
+    ax, ay, az, aw = a
+    bx, by, bz, bw = b
+    terms = (
+        ((aw, bx, 1), (ax, bw, 1), (ay, bz, 1), (az, by, -1)),
+        ((aw, by, 1), (ax, bz, -1), (ay, bw, 1), (az, bx, 1)),
+        ((aw, bz, 1), (ax, by, 1), (ay, bx, -1), (az, bw, 1)),
+        ((aw, bw, 1), (ax, bx, -1), (ay, by, -1), (az, bz, -1)),
+    )
+    out = []
+    for row in terms:
+        (u, v, _), *rest = row
+        r = u * v
+        for u, v, sign in rest:
+            np.multiply(u, v, out=tmp)
+            if sign > 0:
+                r += tmp
+            else:
+                r -= tmp
+        out.append(r)
+    return tuple(out)

@@ -27,16 +27,38 @@ def _terms(powers, qmax):
 
 def _multiples(s1, c1, n_odd, n_even):
     """``sin, cos((2k+1)x)`` for ``k < n_odd`` and ``cos(2kx)`` for ``1 ≤ k ≤ n_even``."""
-    c2 = 1.0 - 2.0 * (s1 * s1)
+    c2 = s1 * s1
+    c2 *= -2.0
+    c2 += 1.0
     tc2 = c2 + c2
     so, co = [s1, s1 * (tc2 + 1.0)], [c1, c1 * (tc2 - 1.0)]
     while len(so) < n_odd:
-        so.append(tc2 * so[-1] - so[-2])
-        co.append(tc2 * co[-1] - co[-2])
+        for seq in (so, co):
+            nxt = tc2 * seq[-1]
+            nxt -= seq[-2]
+            seq.append(nxt)
     ce = [1.0, c2]
     while len(ce) <= n_even:
-        ce.append(tc2 * ce[-1] - ce[-2])
+        nxt = tc2 * ce[-1]
+        nxt -= ce[-2]
+        ce.append(nxt)
     return so[:n_odd], co[:n_odd], ce[1 : n_even + 1]
+
+
+def _assemble(c, parts, scale):
+    """``m_k = scale · Σⱼ mu_j[k] partⱼ`` in place (per-epoch temporaries cost page faults)."""
+    out = []
+    tmp = np.empty_like(parts[0])
+    for k in range(3):
+        mk = c.mu_cn[k] * parts[0]
+        np.multiply(c.mu_sn[k], parts[1], out=tmp)
+        mk += tmp
+        np.multiply(c.mu_dn[k], parts[2], out=tmp)
+        mk += tmp
+        if scale is not None:
+            mk *= scale
+        out.append(mk)
+    return tuple(out)
 
 
 def circular(c, t, tt, attitude):
@@ -81,21 +103,30 @@ def circular(c, t, tt, attitude):
     n_even = _terms((1, 4, 9, 16), qmax) if qmax > 0 else 0  # q^{n²}
     n_w = _terms((0, 2, 8), qmax) if attitude else 0  # coefficients of ϑ₁(·|q²)
     so, co, ce = _multiples(s1, c1, max(n_odd, n_w, 1), n_even)
-    num_s, num_c = so[0], co[0]
-    even = odd = 0.0
+    num_s, num_c = so[0].copy(), co[0].copy()
+    tmp = np.empty_like(num_s)
     for n in range(1, n_odd):
         qn = q ** (n * (n + 1))
-        num_s = num_s + (-qn if n % 2 else qn) * so[n]
-        num_c = num_c + qn * co[n]
+        np.multiply(-qn if n % 2 else qn, so[n], out=tmp)
+        num_s += tmp
+        np.multiply(qn, co[n], out=tmp)
+        num_c += tmp
+    even, odd = np.zeros_like(num_s), np.zeros_like(num_s)
     for n in range(1, n_even + 1):
-        term = q ** (n * n) * ce[n - 1]
+        np.multiply(q ** (n * n), ce[n - 1], out=tmp)
         if n % 2:
-            odd = odd + term
+            odd += tmp
         else:
-            even = even + term
-    inv = 1.0 / (1.0 + 2.0 * (even - odd))
-    th3 = 1.0 + 2.0 * (even + odd)
-    m = tuple(inv * (c.mu_cn[k] * num_c + c.mu_sn[k] * num_s + c.mu_dn[k] * th3) for k in range(3))
+            even += tmp
+    inv = even - odd
+    inv *= 2.0
+    inv += 1.0
+    np.reciprocal(inv, out=inv)
+    th3 = even
+    th3 += odd
+    th3 *= 2.0
+    th3 += 1.0
+    m = _assemble(c, (num_c, num_s, th3), inv)
     if not attitude:
         return m, None, None
     sn, cn, dn = c.c_sn * inv * num_s, c.c_cn * inv * num_c, c.c_dn * inv * th3
@@ -173,7 +204,7 @@ def hyperbolic(c, t, tt, attitude):
     sh = np.copysign(sh, fw) * (sgn * inv)
     t4 = t4 * (sgn * inv * zi)
     t3 = t3 * (inv * zi)
-    m = tuple(c.mu_cn[k] * t4 + c.mu_sn[k] * sh + c.mu_dn[k] * t3 for k in range(3))
+    m = _assemble(c, (t4, sh, t3), None)
     if not attitude:
         return m, None, None
     sn, cn, dn = c.c_sn * sh, c.c_cn * t4, c.c_dn * t3
