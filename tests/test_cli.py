@@ -135,13 +135,6 @@ def test_cli_convert_degrees(capsys):
     assert got == pytest.approx([30, 60, 90, 0.5, 0.1, 0.8], abs=1e-12)
 
 
-def test_cli_demo_shows_every_chart(capsys):
-    code, out, _ = run_cli(capsys, "demo")
-    assert code == 0
-    for section in ("## state", "## euler", "## andoyer", "rotation mode: SAM", "Earth"):
-        assert section in out
-
-
 BAD_ARGS = [
     ["convert", "--from", "andoyer", "--to", "euler", "--values", "0", "0", "0", "2", "1", "0"],
     ["convert", "--from", "andoyer", "--to", "euler", "--values", "0", "0", "0"],

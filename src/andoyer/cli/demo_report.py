@@ -1,0 +1,201 @@
+"""The ``andoyer demo`` report: a folder with a Markdown summary and its pictures.
+
+Each section is a function ``(context) -> str`` returning Markdown; sections that draw write
+their pictures into the report folder and link them.  The folder is assembled in a temporary
+sibling directory and renamed into place at the end, so an interrupted demo never leaves a
+half-written report.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import shutil
+import tempfile
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from andoyer import bodies
+from andoyer.body import RigidBody, RotationMode
+from andoyer.cli.chart_table import CHARTS
+from andoyer.cli.output import CliError
+from andoyer.free import FreeRotation
+from andoyer.state import State
+
+#: Illustrative inclination of the angular momentum on the reference axis (radians).
+DEMO_INCLINATION = 0.4
+
+#: Angles of the angular momentum off the figure axis for the SAM-series section (radians).
+SAM_NUTATIONS = (0.05, 0.1, 0.2)
+
+#: Deprit orders shown in the SAM-series section.
+SAM_ORDERS = (1, 2, 4, 6)
+
+
+@dataclass
+class DemoContext:
+    """What every section sees: the body, its demo state and the report folder."""
+
+    name: str
+    folder: Path
+    entry: bodies.BodyInfo = field(init=False)
+    body: RigidBody = field(init=False)
+    state: State = field(init=False)
+
+    def __post_init__(self) -> None:
+        self.entry = bodies.info(self.name)
+        self.body = self.entry.body
+        self.state = demo_state(self.name)
+
+
+def demo_state(name: str, nutation: float | None = None) -> State:
+    """One spin per sidereal period, the momentum ``nutation`` (default ``J0``) off the figure axis.
+
+    Examples
+    --------
+    >>> state = demo_state("earth")
+    >>> round(float(state.as_andoyer().G / bodies.get("earth").C * 86164.0905 / (2 * np.pi)), 6)
+    1.0
+    """
+    entry = bodies.info(name)
+    J = entry.J0 if nutation is None else nutation
+    G = entry.body.C * 2 * np.pi / entry.rotation_period
+    return State.from_andoyer(0.3, 1.0, 0.5, G * np.cos(J), G, G * np.cos(DEMO_INCLINATION))
+
+
+def _table(header: list[str], rows: list[list[str]]) -> str:
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    lines += ["| " + " | ".join(row) + " |" for row in rows]
+    return "\n".join(lines) + "\n"
+
+
+def section_body(ctx: DemoContext) -> str:
+    """The body, its parameters and the demo state in every chart."""
+    body, entry, state = ctx.body, ctx.entry, ctx.state
+    text = [
+        f"## {body.name}: the body and its state in every chart\n",
+        f"Moments `{body!r}` ({entry.source}).",
+        (
+            f"α = {body.alpha:.10g}, β = {body.beta:.10g}, κ = {body.kappa:.10g}, "
+            f"symmetry: {body.symmetry.value}.\n"
+        ),
+        (
+            f"State: one spin per {entry.rotation_period:.10g} s, angular momentum {entry.J0:.3g} rad "
+            f"from the figure axis, inclination I = {DEMO_INCLINATION} rad on the reference axis; "
+            f"rotation mode {body.rotation_mode(state.m_body)}, "
+            f"energy T = {float(state.energy(body)):.17g}.\n"
+        ),
+    ]
+    for name, chart in CHARTS.items():
+        values = [f"{float(v):.15g}" for v in chart.from_state(state, body)]
+        text += [f"### {name}\n", _table(list(chart.columns), [values])]
+    return "\n".join(text)
+
+
+def section_exact(ctx: DemoContext) -> str:
+    """The closed-form torque-free motion: regime, period, conservation after 100 periods."""
+    body, state = ctx.body, ctx.state
+    free = FreeRotation(body)
+    period = float(free.periods(state).period)
+    later = free.propagate(state, 100 * period)
+    drift = float(np.abs(later.m_body - state.m_body).max() / np.abs(state.m_body).max())
+    energy = abs(float(later.energy(body) / state.energy(body)) - 1)
+    momentum = float(np.abs(later.m_reference - state.m_reference).max() / np.abs(state.m_reference).max())
+    return "\n".join(
+        [
+            "## Exact torque-free propagation\n",
+            (
+                f"Regime {free.regime(state)}; the body momentum returns after {period:.10g} s "
+                f"= {period / ctx.entry.rotation_period:.6g} rotation periods (the free wobble).\n"
+            ),
+            _table(
+                ["after 100 periods", "value"],
+                [
+                    ["‖m − m₀‖ / ‖m₀‖ (body)", f"{drift:.2e}"],
+                    ["relative energy change", f"{energy:.2e}"],
+                    ["‖M − M₀‖ / ‖M₀‖ (reference)", f"{momentum:.2e}"],
+                ],
+            ),
+        ]
+    )
+
+
+def section_sam(ctx: DemoContext) -> str:
+    """Lara's SAM series against the exact solution, over one period of the momentum."""
+    from andoyer.theories import SAMRotation
+
+    body = ctx.body
+    free = FreeRotation(body)
+    mode = "LAM" if body.rotation_mode(ctx.state.m_body) == RotationMode.LAM else "SAM"
+    rows = []
+    for nutation in SAM_NUTATIONS:
+        state = demo_state(ctx.name, nutation)
+        t = float(free.periods(state).period)
+        exact = free.propagate(state, t)
+        row = [f"{nutation:g}"]
+        for order in SAM_ORDERS:
+            series = SAMRotation(body, order=order, mode=mode).propagate(state, t)
+            err = np.linalg.norm(series.m_body - exact.m_body) / np.linalg.norm(exact.m_body)
+            row.append(f"{float(err):.1e}")
+        rows.append(row)
+    return "\n".join(
+        [
+            f"## Lara's {mode} series against the exact solution\n",
+            (
+                "Relative error of the body angular momentum after one period of the exact motion, "
+                "for states whose momentum is J rad off the figure axis; the error falls as "
+                "δ^(N+1) with δ ≈ 2 sin²(J/2) / √(1 − β²).\n"
+            ),
+            _table(["J (rad)", *[f"N = {n}" for n in SAM_ORDERS]], rows),
+        ]
+    )
+
+
+SECTIONS: tuple[Callable[[DemoContext], str], ...] = (section_body, section_exact, section_sam)
+
+
+def write_report(name: str, folder: str | Path, progress: bool | None = None) -> str:
+    """Run every section for body ``name`` and write ``folder/README.md`` (plus pictures).
+
+    Returns the Markdown summary.  The folder is built beside its final place and renamed
+    over it at the end.
+    """
+    from tqdm import tqdm
+
+    target = Path(folder)
+    parent = target.resolve().parent
+    if not parent.is_dir():
+        msg = f"expected an existing parent directory for the report, got {str(parent)!r}"
+        raise CliError(msg)
+    if target.exists() and not target.is_dir():
+        msg = f"expected a directory for the report, got the file {str(target)!r}"
+        raise CliError(msg)
+    staging = Path(tempfile.mkdtemp(prefix=f".{target.name}.", suffix=".part", dir=parent))
+    try:
+        ctx = DemoContext(name, staging)
+        parts = [f"# andoyer demo: {ctx.body.name}\n"]
+        disable = None if progress is None else not progress  # None: a bar only on a terminal
+        parts.extend(
+            section(ctx) for section in tqdm(SECTIONS, desc="andoyer demo", unit="section", disable=disable)
+        )
+        summary = "\n".join(parts)
+        (staging / "README.md").write_text(summary, encoding="utf-8")
+        _swap_into_place(staging, target)
+    except BaseException:
+        shutil.rmtree(staging, ignore_errors=True)
+        raise
+    return summary
+
+
+def _swap_into_place(staging: Path, target: Path) -> None:
+    old = None
+    if target.exists():
+        old = target.with_name(f".{target.name}.old")
+        with contextlib.suppress(FileNotFoundError):
+            shutil.rmtree(old)
+        target.rename(old)
+    staging.rename(target)
+    if old is not None:
+        shutil.rmtree(old, ignore_errors=True)
