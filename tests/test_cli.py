@@ -213,67 +213,36 @@ def test_cli_brackets_json_every_entry_verified(capsys, algebra):
         assert pairs[("g", "G")] == "1"
 
 
-def test_cli_propagate_one_period_returns_the_start(capsys):
+#: A triaxial body and an Andoyer state shared by the propagate tests.
+PROPAGATE_START = ("--moments", "1", "2", "3", "--values", "0.1", "0.2", "0.3", "0.9", "1.0", "0.5")
+
+
+@pytest.fixture
+def propagate_csv(capsys):
+    """Run ``andoyer propagate`` on the shared start with extra arguments; return the CSV rows."""
+
+    def run(*extra):
+        code, out, _ = run_cli(capsys, "propagate", *PROPAGATE_START, *extra, "--format", "csv")
+        assert code == 0
+        return np.loadtxt(out.splitlines()[1:], delimiter=",")
+
+    return run
+
+
+def test_cli_propagate_one_period_returns_the_start(propagate_csv):
     from andoyer import FreeRotation, RigidBody
 
     body = RigidBody(1.0, 2.0, 3.0)
     start = State.from_andoyer(0.1, 0.2, 0.3, 0.9, 1.0, 0.5)
     T = float(FreeRotation(body).periods(start).period)
-    code, out, _ = run_cli(
-        capsys,
-        "propagate",
-        "--moments",
-        "1",
-        "2",
-        "3",
-        "--values",
-        "0.1",
-        "0.2",
-        "0.3",
-        "0.9",
-        "1.0",
-        "0.5",
-        "--times",
-        "0",
-        repr(T),
-        "--to",
-        "state",
-        "--format",
-        "csv",
-    )
-    assert code == 0
-    rows = np.loadtxt(out.splitlines()[1:], delimiter=",")
+    rows = propagate_csv("--times", "0", repr(T), "--to", "state")
     m0, m1 = rows[0, 6:], rows[1, 6:]
     assert np.abs(m1 - m0).max() <= 1e-13
     assert np.abs(m0 - start.m_body).max() <= 1e-15
 
 
-def test_cli_propagate_sadov_angles_advance_linearly(capsys):
-    code, out, _ = run_cli(
-        capsys,
-        "propagate",
-        "--moments",
-        "1",
-        "2",
-        "3",
-        "--values",
-        "0.1",
-        "0.2",
-        "0.3",
-        "0.9",
-        "1.0",
-        "0.5",
-        "--range",
-        "0",
-        "3",
-        "4",
-        "--to",
-        "sadov",
-        "--format",
-        "csv",
-    )
-    assert code == 0
-    rows = np.loadtxt(out.splitlines()[1:], delimiter=",")
+def test_cli_propagate_sadov_angles_advance_linearly(propagate_csv):
+    rows = propagate_csv("--range", "0", "3", "4", "--to", "sadov")
     phi = np.unwrap(rows[:, 2])
     assert np.abs(np.diff(phi, 2)).max() <= 1e-12
     assert np.ptp(rows[:, 5]) <= 1e-13  # I_l constant
