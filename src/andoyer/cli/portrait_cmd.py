@@ -1,0 +1,154 @@
+"""``andoyer portrait``: the pictures of :mod:`andoyer.plot` written as PNG or SVG files."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from andoyer import plot
+from andoyer.body import RigidBody
+from andoyer.cli.chart_table import add_body_arguments, body_from_args
+from andoyer.cli.output import CliError, atomic_output
+from andoyer.free import FreeRotation
+from andoyer.state import State
+
+EXAMPLES = """examples:
+  andoyer portrait phase --body eros --out phase.svg
+  andoyer portrait sphere --moments 1 2 3 --levels 4 --elev-deg 30 --out sphere.png
+  andoyer portrait lara --out lara-fig1.png                    (Lara 2013 Fig. 1, beta = 0.8)
+  andoyer portrait polhode --moments 1 2 3 --values 0.5 0 0 0.9 1 0.9 --out poinsot.png
+  andoyer portrait precession --moments 1 1 1.5 --values 0 0 0 0.9 2 2 --duration 10
+The state (--values) is in Andoyer variables l g h L G H; angles in radians.
+"""
+FORMATS = ("png", "svg")
+DEFAULT_STATE = (0.5, 0.0, 0.0, 0.9, 1.0, 0.9)
+
+
+def register(commands: argparse._SubParsersAction) -> None:
+    """Add the sub-command and its five pictures to the parser."""
+    parser = commands.add_parser(
+        "portrait",
+        help="draw a phase portrait, the momentum sphere, Lara's Fig. 1, a polhode or a precession series",
+        epilog=EXAMPLES,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    kinds = parser.add_subparsers(dest="kind", required=True)
+    helps = {
+        "phase": "(l, L) phase portrait of the free body with its separatrix (Gurfil Fig. 4)",
+        "sphere": "angular-momentum sphere with the energy contours (Gurfil Fig. 1)",
+        "lara": "free body vs. main problem of SAM rotation (Lara Fig. 1)",
+        "polhode": "polhode and herpolhode of a state (exact free motion)",
+        "precession": "precession, obliquity and nutation of a freely rotating state",
+    }
+    for kind, text in helps.items():
+        sub = kinds.add_parser(kind, help=text, description=text)
+        add_body_arguments(sub)
+        sub.add_argument(
+            "--out", metavar="FILE", help=f"PNG or SVG file, or - for stdout (default portrait-{kind}.png)"
+        )
+        sub.add_argument("--format", choices=FORMATS, help="default: from the file suffix")
+        sub.add_argument("--dpi", type=float, default=150.0, help="resolution of PNG output (default 150)")
+        if kind in ("phase", "sphere"):
+            sub.add_argument("--G", type=float, default=1.0, help="angular-momentum magnitude (default 1)")
+            sub.add_argument(
+                "--levels", type=int, default=5, help="energy levels on each side of the separatrix"
+            )
+        if kind in ("sphere", "polhode"):
+            sub.add_argument("--elev-deg", type=float, default=25.0, help="viewing elevation, degrees")
+            sub.add_argument("--azim-deg", type=float, default=35.0, help="viewing azimuth, degrees")
+        if kind == "lara":
+            sub.add_argument(
+                "--beta", type=float, help="triaxiality (default: the body's, else 0.8 as in Lara)"
+            )
+            sub.add_argument("--ratio-min", type=float, default=0.88, help="lower edge in N/M (default 0.88)")
+        if kind in ("polhode", "precession"):
+            sub.add_argument(
+                "--values", nargs=6, type=float, metavar=("l", "g", "h", "L", "G", "H"), default=DEFAULT_STATE
+            )
+            sub.add_argument(
+                "--duration", type=float, help="time span (default: one period of m, five for precession)"
+            )
+        if kind == "precession":
+            sub.add_argument("--steps", type=int, default=2001, help="number of output times (default 2001)")
+            sub.add_argument("--axis", choices=("figure", "momentum"), default="figure")
+            sub.add_argument("--degrees", action="store_true", help="angles in degrees")
+        sub.set_defaults(run=run)
+
+
+def _format(args: argparse.Namespace, path: str) -> str:
+    suffix = Path(path).suffix.lower().lstrip(".") if path != "-" else ""
+    if args.format is not None:
+        if suffix and suffix != args.format:
+            msg = f"expected a .{args.format} file for --format {args.format}, got {path!r}"
+            raise CliError(msg)
+        return args.format
+    if suffix not in FORMATS:
+        msg = f"expected --out ending in .png or .svg (or --format), got {path!r}"
+        raise CliError(msg)
+    return suffix
+
+
+def _state(args: argparse.Namespace) -> State:
+    return State.from_andoyer(*args.values)
+
+
+def _figure(args: argparse.Namespace) -> Figure:
+    kind = args.kind
+    if kind == "lara":
+        if args.beta is not None:
+            beta = args.beta
+        elif args.body is not None or args.moments is not None:
+            beta = body_from_args(args).beta
+        else:
+            beta = 0.8
+        return plot.lara_portrait(beta, ratio_min=args.ratio_min)
+    body = body_from_args(args)
+    if kind == "phase":
+        return plot.phase_portrait(body, args.G, _levels(body, args))
+    if kind == "sphere":
+        view = {"elev": np.radians(args.elev_deg), "azim": np.radians(args.azim_deg)}
+        return plot.momentum_sphere(body, args.G, _levels(body, args), **view)
+    state = _state(args)
+    if kind == "polhode":
+        return plot.poinsot(body, state, args.duration)
+    if args.steps < 2:
+        msg = f"expected --steps >= 2, got {args.steps}"
+        raise CliError(msg)
+    duration = args.duration
+    if duration is None:
+        period = float(FreeRotation(body).periods(state).period)
+        duration = 5 * period if np.isfinite(period) else 100.0
+    if not duration > 0:
+        msg = f"expected --duration > 0, got {duration!r}"
+        raise CliError(msg)
+    t = np.linspace(0.0, duration, args.steps)
+    return plot.precession(t, FreeRotation(body).propagate(state, t), args.axis, degrees=args.degrees)
+
+
+def _levels(body: RigidBody, args: argparse.Namespace) -> np.ndarray:
+    if args.levels < 0:
+        msg = f"expected --levels >= 0, got {args.levels}"
+        raise CliError(msg)
+    return plot.default_energies(body, args.G, args.levels)
+
+
+def run(args: argparse.Namespace) -> int:
+    """Draw the picture and write it atomically."""
+    path = args.out if args.out is not None else f"portrait-{args.kind}.png"
+    fmt = _format(args, path)
+    if not args.dpi > 0:
+        msg = f"expected --dpi > 0, got {args.dpi!r}"
+        raise CliError(msg)
+    figure = _figure(args)
+    with atomic_output(path) as stream:
+        stream.flush()
+        binary = getattr(stream, "buffer", None)
+        if binary is None:
+            msg = "expected a binary standard output for --out -, got a text-only stream"
+            raise CliError(msg)
+        figure.savefig(binary, format=fmt, dpi=args.dpi)
+        binary.flush()
+    return 0

@@ -1,0 +1,61 @@
+"""Pictures of free and perturbed rotation (matplotlib).
+
+Every drawing function returns a :class:`matplotlib.figure.Figure` (a new pyplot-free figure,
+or the figure of the ``ax`` it was given) with what it drew attached as
+``figure.andoyer_data``; the matching ``*_data`` function computes the same data without
+drawing.  The contours are exact (closed form), not contoured on a grid.
+
+* :func:`phase_portrait` — the ``(l, L)`` plane of the free body and its separatrix (Gurfil Fig. 4);
+* :func:`momentum_sphere` — energy contours (polhodes) on ``|m| = G`` (Gurfil Fig. 1);
+* :func:`lara_portrait` — free body vs. the main problem of SAM rotation (Lara Fig. 1);
+* :func:`polhode`, :func:`herpolhode`, :func:`poinsot` — Poinsot's construction for a state;
+* :func:`precession` — precession, obliquity and nutation series of a propagation.
+
+Examples
+--------
+>>> from andoyer import RigidBody, plot
+>>> fig = plot.phase_portrait(RigidBody(1.0, 2.0, 3.0))
+>>> fig.andoyer_data.separatrix_energy
+0.25
+"""
+
+from andoyer.plot.contours import default_energies, energy_contour, separatrix_contour
+from andoyer.plot.lara import LARA_LEVELS, LaraPortrait, lara_portrait, lara_portrait_data
+from andoyer.plot.phase import PhasePortrait, phase_portrait, phase_portrait_data
+from andoyer.plot.poinsot import (
+    Herpolhode,
+    Polhode,
+    herpolhode,
+    herpolhode_data,
+    poinsot,
+    polhode,
+    polhode_data,
+)
+from andoyer.plot.precession import PrecessionSeries, precession, precession_data
+from andoyer.plot.sphere import MomentumSphere, momentum_sphere, momentum_sphere_data
+
+__all__ = [
+    "LARA_LEVELS",
+    "Herpolhode",
+    "LaraPortrait",
+    "MomentumSphere",
+    "PhasePortrait",
+    "Polhode",
+    "PrecessionSeries",
+    "default_energies",
+    "energy_contour",
+    "herpolhode",
+    "herpolhode_data",
+    "lara_portrait",
+    "lara_portrait_data",
+    "momentum_sphere",
+    "momentum_sphere_data",
+    "phase_portrait",
+    "phase_portrait_data",
+    "poinsot",
+    "polhode",
+    "polhode_data",
+    "precession",
+    "precession_data",
+    "separatrix_contour",
+]
