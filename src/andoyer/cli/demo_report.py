@@ -153,7 +153,46 @@ def section_sam(ctx: DemoContext) -> str:
     )
 
 
-SECTIONS: tuple[Callable[[DemoContext], str], ...] = (section_body, section_exact, section_sam)
+def section_pictures(ctx: DemoContext) -> str:
+    """The phase portraits: (l, L) with its separatrix, the momentum sphere, Lara's Fig. 1, Poinsot."""
+    from andoyer import plot
+
+    body, state = ctx.body, ctx.state
+    G = float(state.as_andoyer().G)
+    figures = {
+        "phase-portrait.png": (
+            plot.phase_portrait(body, G),
+            "The (l, L) phase portrait with the separatrix through the saddles (Gurfil Fig. 4).",
+        ),
+        "momentum-sphere.png": (
+            plot.momentum_sphere(body, G),
+            "Energy contours on the angular-momentum sphere |m| = G (Gurfil Fig. 1).",
+        ),
+        "lara-figure-1.png": (
+            plot.lara_portrait(),
+            (
+                "The reduced phase space of the free body against the main problem of SAM rotation, "
+                "β = 0.8 (Lara Fig. 1)."
+            ),
+        ),
+        "poinsot.png": (
+            plot.poinsot(body, demo_state(ctx.name, SAM_NUTATIONS[-1])),
+            "Polhode and herpolhode of the body spinning 0.2 rad off its figure axis.",
+        ),
+    }
+    text = ["## Phase portraits\n"]
+    for name, (figure, caption) in figures.items():
+        figure.savefig(ctx.folder / name, dpi=110)
+        text.append(f"![{caption}]({name})\n\n{caption}\n")
+    return "\n".join(text)
+
+
+SECTIONS: tuple[Callable[[DemoContext], str], ...] = (
+    section_body,
+    section_exact,
+    section_sam,
+    section_pictures,
+)
 
 
 def write_report(name: str, folder: str | Path, progress: bool | None = None) -> str:
