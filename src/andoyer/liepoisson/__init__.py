@@ -7,6 +7,8 @@ Numeric part (numpy only):
 * Andoyer–Deprit coordinates on the leaves: :func:`so3_to_andoyer`,
   :func:`so3_from_andoyer`, :func:`e3_to_andoyer`, :func:`e3_from_andoyer`,
   :func:`l7_to_andoyer`, :func:`l7_from_andoyer`;
+* the heavy top on an e(3) leaf in ``(l, g, L, G; H)``: :func:`heavy_top_hamiltonian`,
+  :func:`heavy_top_equations` (→ :class:`AndoyerRates`), :func:`heavy_top_rhs`;
 * Pavlov's quaternion λ = (w, x, y, z): :func:`quaternion_from_scipy`,
   :func:`quaternion_to_scipy`, :func:`gamma_from_quaternion`.
 
@@ -29,6 +31,12 @@ from typing import Any
 
 from andoyer.liepoisson._domain import SINGULAR_TOL, UNIT_TOL, SingularChartWarning
 from andoyer.liepoisson.algebra import ALGEBRA_NAMES, Casimir, LiePoissonAlgebra, get_algebra
+from andoyer.liepoisson.heavy_top import (
+    AndoyerRates,
+    heavy_top_equations,
+    heavy_top_hamiltonian,
+    heavy_top_rhs,
+)
 from andoyer.liepoisson.pavlov_e3 import (
     E3Coordinates,
     So3Coordinates,
@@ -64,6 +72,7 @@ __all__ = [
     "ALGEBRA_NAMES",
     "SINGULAR_TOL",
     "UNIT_TOL",
+    "AndoyerRates",
     # symbolic (lazy)
     "BracketRecord",
     "CanonicalCoordinates",
@@ -87,6 +96,9 @@ __all__ = [
     "euler_momenta",
     "gamma_from_quaternion",
     "get_algebra",
+    "heavy_top_equations",
+    "heavy_top_hamiltonian",
+    "heavy_top_rhs",
     "l7_from_andoyer",
     "l7_to_andoyer",
     "pavlov_table",

@@ -20,7 +20,13 @@ from andoyer._validation import as_finite, as_vectors
 from andoyer.body import RigidBody
 from andoyer.perturbations.base import Perturbation
 
-__all__ = ["HeavyTop", "kovalevskaya_integral", "kovalevskaya_top", "lagrange_top"]
+__all__ = [
+    "HeavyTop",
+    "kovalevskaya_integral",
+    "kovalevskaya_integral_e3",
+    "kovalevskaya_top",
+    "lagrange_top",
+]
 
 Array = NDArray[np.float64]
 
@@ -123,13 +129,38 @@ def kovalevskaya_integral(body: RigidBody, top: HeavyTop, quaternion: ArrayLike,
     >>> float(kovalevskaya_integral(body, top, [0, 0, 0, 1.0], [2.0, 0.0, 0.0]))  # p = 1, γ = e3
     1.0
     """
+    q = as_vectors(quaternion, "quaternion", 4)
+    return kovalevskaya_integral_e3(body, top, m_body, top.gamma(q))
+
+
+def kovalevskaya_integral_e3(body: RigidBody, top: HeavyTop, m_body: ArrayLike, gamma: ArrayLike) -> Array:
+    r"""Kovalevskaya's integral at points ``(m, γ)`` of e(3): ``(p² - q² - c γ1)² + (2pq - c γ2)²``.
+
+    As :func:`kovalevskaya_integral`, with the vertical ``γ`` given directly
+    (any norm), ``(p, q) = (m1/I1, m2/I2)`` and ``c = m g0 x0 / I3``.
+
+    Parameters
+    ----------
+    body : RigidBody
+    top : HeavyTop
+    m_body, gamma : array_like, shape (..., 3)
+
+    Returns
+    -------
+    numpy.ndarray, shape (...)
+
+    Examples
+    --------
+    >>> body, top = kovalevskaya_top(1.0, 1.0, 0.5)
+    >>> float(kovalevskaya_integral_e3(body, top, [2.0, 0.0, 0.0], [0.0, 0.0, 1.0]))
+    1.0
+    """
     I1, I2, I3 = body.moments
     x0, y0, z0 = top.center_of_mass
     if not (I1 == I2 == 2 * I3 and y0 == 0 and z0 == 0):
         msg = f"expected a Kovalevskaya top (I1 = I2 = 2 I3, centre of mass on b1), got {body!r} and {top!r}"
         raise ValueError(msg)
-    q, m = as_vectors(quaternion, "quaternion", 4), as_vectors(m_body, "m_body")
+    m, gamma = as_vectors(m_body, "m_body"), as_vectors(gamma, "gamma")
     p, qq = m[..., 0] / I1, m[..., 1] / I2
-    gamma = top.gamma(q)
     c = top.weight * x0 / I3
     return (p * p - qq * qq - c * gamma[..., 0]) ** 2 + (2 * p * qq - c * gamma[..., 1]) ** 2
