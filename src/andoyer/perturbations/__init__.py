@@ -8,7 +8,13 @@ from andoyer.perturbations.base import Perturbation, SumOfPerturbations
 from andoyer.perturbations.equations import perturbed_rates
 from andoyer.perturbations.frame import PrecessingFrame
 from andoyer.perturbations.gravity import GravityGradient, PointMass
-from andoyer.perturbations.heavy_top import HeavyTop, kovalevskaya_integral, kovalevskaya_top, lagrange_top
+from andoyer.perturbations.heavy_top import (
+    HeavyTop,
+    kovalevskaya_integral,
+    kovalevskaya_integral_e3,
+    kovalevskaya_top,
+    lagrange_top,
+)
 from andoyer.perturbations.model import Model
 from andoyer.perturbations.orbits import CircularOrbit, KeplerOrbit, Orbit, TabulatedOrbit, solve_kepler
 from andoyer.perturbations.user import LinearDamping, UserPotential, UserTorque
@@ -30,6 +36,7 @@ __all__ = [
     "UserTorque",
     "andoyer_perturbed_equations",
     "kovalevskaya_integral",
+    "kovalevskaya_integral_e3",
     "kovalevskaya_top",
     "lagrange_top",
     "perturbed_rates",
