@@ -74,7 +74,7 @@ def carlson_rf(x, y, z):
     Examples
     --------
     >>> from scipy.special import ellipk
-    >>> abs(carlson_rf(0.0, 0.5, 1.0) / ellipk(0.5) - 1.0) < 1e-15
+    >>> bool(abs(carlson_rf(0.0, 0.5, 1.0) / ellipk(0.5) - 1.0) < 1e-15)
     True
     """
     a0 = (x + y + z) / 3.0
@@ -123,7 +123,7 @@ def carlson_rj(x, y, z, p):
     Examples
     --------
     >>> from scipy.special import elliprj
-    >>> abs(carlson_rj(1.0, 2.0, 3.0, 4.0) / elliprj(1.0, 2.0, 3.0, 4.0) - 1.0) < 1e-15
+    >>> bool(abs(carlson_rj(1.0, 2.0, 3.0, 4.0) / elliprj(1.0, 2.0, 3.0, 4.0) - 1.0) < 1e-15)
     True
     """
     a0 = (x + y + z + 2.0 * p) / 5.0
