@@ -390,6 +390,9 @@ def free_step(moments, q, m, h):
     """
     q = np.array(q, dtype=np.float64, copy=True).reshape(-1, 4)
     m = np.array(m, dtype=np.float64, copy=True).reshape(-1, 3)
+    if q.shape[0] != m.shape[0]:
+        msg = f"expected as many attitudes as momenta, got {q.shape[0]} and {m.shape[0]}"
+        raise ValueError(msg)
     moments = np.ascontiguousarray(np.broadcast_to(np.asarray(moments, dtype=np.float64), m.shape))
     q0, m0 = q.copy(), m.copy()
     done = np.zeros(q.shape[0], dtype=np.bool_)
@@ -402,4 +405,3 @@ def free_step(moments, q, m, h):
         m_new, q_new = FreeMotion(moments[rest], m0[rest], q0[rest]).propagate(float(h))
         q[rest], m[rest] = q_new, m_new
     return q, m
-

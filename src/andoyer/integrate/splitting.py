@@ -138,7 +138,8 @@ def split_step(
     >>> from andoyer import RigidBody
     >>> from andoyer.perturbations import HeavyTop
     >>> model = Model(RigidBody(1.0, 1.0, 1.5), HeavyTop(1.0, [0.0, 0.0, 0.1]))
-    >>> q, m = split_step(model, None, 0.0, np.array([[0.0, 0.0, 0.0, 1.0]]), np.array([[0.0, 0.0, 1.0]]), 0.1)
+    >>> q0, m0 = np.array([[0.0, 0.0, 0.0, 1.0]]), np.array([[0.0, 0.0, 1.0]])
+    >>> q, m = split_step(model, None, 0.0, q0, m0, 0.1)
     >>> m.round(15).tolist()  # upright: no torque
     [[0.0, 0.0, 1.0]]
     """
@@ -184,7 +185,10 @@ class _Tables:
         self.nodes = np.concatenate([[0.0], np.cumsum(weights)])
         self.mids = 0.5 * (self.nodes[:-1] + self.nodes[1:])
         self.sources = [
-            (p, kick.body.moments) for kick in kicks if isinstance(kick, GravityGradient) for p in kick.perturbers
+            (p, kick.body.moments)
+            for kick in kicks
+            if isinstance(kick, GravityGradient)
+            for p in kick.perturbers
         ]
         self.gm = np.array([p.gm for p, _ in self.sources], dtype=np.float64)
         self.inertia = np.array([moments for _, moments in self.sources], dtype=np.float64).reshape(-1, 3)
@@ -208,7 +212,14 @@ class _Tables:
 
 
 def _run_steps(
-    model: Model, tables: _Tables | None, q: Array, m: Array, now: float, step: float, n_full: int, last: float,
+    model: Model,
+    tables: _Tables | None,
+    q: Array,
+    m: Array,
+    now: float,
+    step: float,
+    n_full: int,
+    last: float,
     order: int,
 ) -> tuple[Array, Array]:
     """``n_full`` steps of ``step`` from ``now`` then one of ``last`` (may be 0), all states."""
@@ -232,8 +243,18 @@ def _run_steps(
         status = np.full(q.shape[0], -1, dtype=np.int64)
         while True:
             run_tabulated(
-                moments, q, m, hs, tables.weights, positions, tables.gm, tables.inertia, tables.heavy, rates,
-                begin, status,
+                moments,
+                q,
+                m,
+                hs,
+                tables.weights,
+                positions,
+                tables.gm,
+                tables.inertia,
+                tables.heavy,
+                rates,
+                begin,
+                status,
             )
             stuck = np.nonzero(status >= 0)[0]
             if stuck.size == 0:
