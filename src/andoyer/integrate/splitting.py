@@ -26,13 +26,17 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer import _quaternion as quat
+from andoyer.free.lean import NUMBA, free_step
 from andoyer.integrate.output import gather_states, output_times
+from andoyer.integrate.split_kernel import run_tabulated
 from andoyer.perturbations.base import Perturbation, SumOfPerturbations
 from andoyer.perturbations.frame import PrecessingFrame
+from andoyer.perturbations.gravity import GravityGradient
+from andoyer.perturbations.heavy_top import HeavyTop
 from andoyer.perturbations.model import Model
 from andoyer.state import State
 
-__all__ = ["COMPOSITIONS", "integrate_splitting", "split_step", "splitting_coefficients"]
+__all__ = ["COMPOSITIONS", "exact_free_flow", "integrate_splitting", "split_step", "splitting_coefficients"]
 
 Array = NDArray[np.float64]
 
@@ -97,13 +101,49 @@ def _parts(perturbation: Perturbation | None) -> tuple[list[Perturbation], list[
 FreeFlow = Callable[[Array, Array, Array, float], tuple[Array, Array]]
 
 
+def exact_free_flow(moments: Array, q: Array, m: Array, h: float) -> tuple[Array, Array]:
+    """The closed-form torque-free flow over ``h`` of attitudes (N, 4) and momenta (N, 3).
+
+    :func:`andoyer.free.lean.free_step`: the scalar kernel (compiled with numba when
+    installed) for one step, :class:`~andoyer.free.FreeMotion` for separatrix states
+    and for large batches without numba.
+
+    Examples
+    --------
+    >>> q, m = exact_free_flow(np.array([1.0, 2.0, 3.0]), np.array([[0.0, 0.0, 0.0, 1.0]]),
+    ...                        np.array([[0.0, 0.0, 3.0]]), np.pi)
+    >>> q.round(12).tolist(), m.tolist()  # half a turn about b3
+    ([[0.0, 0.0, 1.0, 0.0]], [[0.0, 0.0, 3.0]])
+    """
+    return free_step(moments, q, m, h)
+
+
 def split_step(
-    model: Model, free_flow: FreeFlow, t: float, q: Array, m: Array, h: float, order: int = 2
+    model: Model,
+    free_flow: FreeFlow | None,
+    t: float,
+    q: Array,
+    m: Array,
+    h: float,
+    order: int = 2,
 ) -> tuple[Array, Array]:
     """Advance attitudes ``q`` (N, 4) and momenta ``m`` (N, 3) from ``t`` by one step ``h``.
 
-    ``free_flow(moments, q, m, h) -> (q, m)`` is the exact torque-free flow.
+    The generic (Python) step: kicks through the models' torques, so any attitude-only
+    Hamiltonian model works. ``free_flow(moments, q, m, h) -> (q, m)`` is the exact
+    torque-free flow (``None``: :func:`exact_free_flow`).
+
+    Examples
+    --------
+    >>> from andoyer import RigidBody
+    >>> from andoyer.perturbations import HeavyTop
+    >>> model = Model(RigidBody(1.0, 1.0, 1.5), HeavyTop(1.0, [0.0, 0.0, 0.1]))
+    >>> q0, m0 = np.array([[0.0, 0.0, 0.0, 1.0]]), np.array([[0.0, 0.0, 1.0]])
+    >>> q, m = split_step(model, None, 0.0, q0, m0, 0.1)
+    >>> m.round(15).tolist()  # upright: no torque
+    [[0.0, 0.0, 1.0]]
     """
+    flow = exact_free_flow if free_flow is None else free_flow
     kicks, frames = _parts(model.perturbation)
     moments = model.body.moments
     time = t
@@ -111,27 +151,124 @@ def split_step(
         sub = weight * h
         for kick in kicks:
             m = m + kick._torque(np.asarray(time), q, m) * (0.5 * sub)
-        q, m = free_flow(moments, q, m, sub)
-        for frame in frames:
-            mu = frame.rate(np.asarray(time + 0.5 * sub))
-            angle = -np.asarray(mu) * sub
-            norm = np.linalg.norm(angle, axis=-1, keepdims=True)
-            half = 0.5 * norm
-            axis = np.divide(angle, norm, out=np.zeros_like(angle), where=norm > 0)
-            turn = np.concatenate([np.sin(half) * axis, np.cos(half)], axis=-1)
-            q = quat.multiply(np.broadcast_to(turn, q.shape), q)
+        q, m = flow(moments, q, m, sub)
+        if frames:
+            mu = sum(np.asarray(frame.rate(np.asarray(time + 0.5 * sub))) for frame in frames)
+            q = quat.multiply(np.broadcast_to(_frame_quaternion(mu, sub), q.shape), q)
         time = time + sub
         for kick in kicks:
             m = m + kick._torque(np.asarray(time), q, m) * (0.5 * sub)
     return q, m
 
 
-def exact_free_flow(moments: Array, q: Array, m: Array, h: float) -> tuple[Array, Array]:
-    """The closed-form torque-free flow over ``h`` of attitudes (N, 4) and momenta (N, 3)."""
-    from andoyer.free import FreeMotion
+def _frame_quaternion(mu: Array, sub: float) -> Array:
+    """``exp(−μ sub/2)``: the exact flow of ``−μ·M`` over ``sub``, as a quaternion (..., 4)."""
+    angle = -np.asarray(mu, dtype=np.float64) * sub
+    norm = np.linalg.norm(angle, axis=-1, keepdims=True)
+    axis = np.divide(angle, norm, out=np.zeros_like(angle), where=norm > 0)
+    return np.concatenate([np.sin(0.5 * norm) * axis, np.cos(0.5 * norm)], axis=-1)
 
-    m_new, q_new = FreeMotion(moments, m, q).propagate(h)
-    return q_new, m_new
+
+def _tabulable(kicks: list[Perturbation]) -> bool:
+    return NUMBA and all(type(kick) in (GravityGradient, HeavyTop) for kick in kicks)
+
+
+_CHUNK = 4096
+
+
+class _Tables:
+    """Perturber positions and frame rates of one chunk of steps, for :func:`run_tabulated`."""
+
+    def __init__(self, kicks: list[Perturbation], frames: list[PrecessingFrame], order: int) -> None:
+        weights = np.array(COMPOSITIONS[order])
+        self.weights = weights
+        self.nodes = np.concatenate([[0.0], np.cumsum(weights)])
+        self.mids = 0.5 * (self.nodes[:-1] + self.nodes[1:])
+        self.sources = [
+            (p, kick.body.moments)
+            for kick in kicks
+            if isinstance(kick, GravityGradient)
+            for p in kick.perturbers
+        ]
+        self.gm = np.array([p.gm for p, _ in self.sources], dtype=np.float64)
+        self.inertia = np.array([moments for _, moments in self.sources], dtype=np.float64).reshape(-1, 3)
+        heavy = np.zeros(3)
+        for kick in kicks:
+            if isinstance(kick, HeavyTop):
+                heavy += kick.weight * kick.center_of_mass
+        self.heavy = heavy
+        self.frames = frames
+
+    def build(self, starts: Array, hs: Array) -> tuple[Array, Array]:
+        times = starts[:, None] + hs[:, None] * self.nodes  # (S, K+1)
+        positions = np.zeros((*times.shape, len(self.sources), 3))
+        for j, (p, _) in enumerate(self.sources):
+            positions[:, :, j] = p.orbit.position(times)
+        rates = np.zeros((hs.size, self.weights.size, 3))
+        mids = starts[:, None] + hs[:, None] * self.mids
+        for frame in self.frames:
+            rates += np.asarray(frame.rate(mids), dtype=np.float64)
+        return positions, rates
+
+
+def _run_steps(
+    model: Model,
+    tables: _Tables | None,
+    q: Array,
+    m: Array,
+    now: float,
+    step: float,
+    n_full: int,
+    last: float,
+    order: int,
+) -> tuple[Array, Array]:
+    """``n_full`` steps of ``step`` from ``now`` then one of ``last`` (may be 0), all states."""
+    moments = model.body.moments
+    if tables is None:
+        for n in range(n_full):
+            q, m = split_step(model, None, now + n * step, q, m, step, order)
+        if last != 0.0:
+            q, m = split_step(model, None, now + n_full * step, q, m, last, order)
+        return q, m
+    q, m = np.ascontiguousarray(q, dtype=np.float64).copy(), np.ascontiguousarray(m, dtype=np.float64).copy()
+    hs_all = np.full(n_full + (last != 0.0), step)
+    if last != 0.0:
+        hs_all[-1] = last
+    starts_all = now + step * np.arange(hs_all.size, dtype=np.float64)
+    stages = tables.weights.size
+    for lo in range(0, hs_all.size, _CHUNK):
+        hs, starts = hs_all[lo : lo + _CHUNK], starts_all[lo : lo + _CHUNK]
+        positions, rates = tables.build(starts, hs)
+        begin = np.zeros(q.shape[0], dtype=np.int64)
+        status = np.full(q.shape[0], -1, dtype=np.int64)
+        while True:
+            run_tabulated(
+                moments,
+                q,
+                m,
+                hs,
+                tables.weights,
+                positions,
+                tables.gm,
+                tables.inertia,
+                tables.heavy,
+                rates,
+                begin,
+                status,
+            )
+            stuck = np.nonzero(status >= 0)[0]
+            if stuck.size == 0:
+                break
+            # separatrix states: this free substep by FreeMotion, then resume at the next kick
+            for i in stuck:
+                n, k = divmod(int(status[i]), stages + 1)
+                sub = tables.weights[k] * hs[n]
+                qi, mi = free_step(moments, q[i : i + 1], m[i : i + 1], sub)
+                q[i], m[i] = quat.multiply(_frame_quaternion(rates[n, k], sub), qi[0]), mi[0]
+                begin[i] = status[i] + 1
+            done = status < 0
+            begin[done] = hs.size * (stages + 1)
+    return q, m
 
 
 def integrate_splitting(
@@ -145,8 +282,12 @@ def integrate_splitting(
     """Propagate ``state`` (at ``t0``) under ``model`` to times ``t`` by symmetric splitting.
 
     Fixed steps of length ``step`` (the last step to each output time is
-    shortened to land on it), each a composition of :func:`split_step` of
-    order 2, 4 or 6. The output broadcasts the state's shape with ``t``'s.
+    shortened to land on it), each a composition of Strang steps
+    ``V(h/2) ∘ F(h) ∘ T(h) ∘ V(h/2)`` of order 2, 4 or 6. Gravity-gradient,
+    heavy-top and precessing-frame models run in a compiled loop when numba is
+    installed (:mod:`andoyer.integrate.split_kernel`); other attitude-only models and
+    the no-numba case step through :func:`split_step`. The output broadcasts the
+    state's shape with ``t``'s.
 
     Parameters
     ----------
@@ -162,6 +303,16 @@ def integrate_splitting(
     Returns
     -------
     State, shape broadcast(S..., T...)
+
+    Examples
+    --------
+    >>> from andoyer import RigidBody
+    >>> from andoyer.perturbations import HeavyTop
+    >>> model = Model(RigidBody(1.0, 1.2, 1.5), HeavyTop(1.0, [0.0, 0.0, 0.1]))
+    >>> s = State.from_quaternion([0.0, 0.0, 0.0, 1.0], [0.0, 0.0, 5.0])
+    >>> out = integrate_splitting(model, s, [0.0, 1.0], step=0.05)
+    >>> out.shape, out.m_body[1].round(12).tolist()  # upright spinning top: steady
+    ((2,), [0.0, 0.0, 5.0])
     """
     if not isinstance(model, Model):
         msg = f"expected an andoyer Model, got {type(model).__name__}"
@@ -170,7 +321,8 @@ def integrate_splitting(
         msg = f"expected a positive finite step, got {step!r}"
         raise ValueError(msg)
     splitting_coefficients(order)
-    _parts(model.perturbation)
+    kicks, frames = _parts(model.perturbation)
+    tables = _Tables(kicks, frames, order) if _tabulable(kicks) else None
     times, unique, shape = output_times(state, t)
     q0 = state.quaternion.reshape(-1, 4)
     m0 = state.m_body.reshape(-1, 3)
@@ -179,10 +331,13 @@ def integrate_splitting(
         targets = np.sort(unique[(unique - t0) * direction > 0])[:: int(direction)]
         q, m, now = q0, m0, t0
         for target in targets:
-            while (target - now) * direction > 0:
-                h = direction * min(step, abs(target - now))
-                q, m = split_step(model, exact_free_flow, now, q, m, h, order)
-                now = target if abs(target - (now + h)) <= 1e-12 * max(1.0, abs(target)) else now + h
+            span = abs(float(target) - now)
+            n_full = int(np.floor(span / step))
+            last = span - n_full * step
+            if last <= 1e-12 * max(1.0, abs(float(target))):
+                last = 0.0
+            q, m = _run_steps(model, tables, q, m, now, direction * step, n_full, direction * last, order)
+            now = float(target)
             values[float(target)] = (q, m)
     for time in unique:
         if time == t0:
