@@ -26,7 +26,7 @@ from andoyer.ensemble.store import (
 
 __all__ = ["run_ensemble"]
 
-TASK_PREFIX = "andoyer-ensemble-chunk"
+TASK_PREFIX = "andoyer_ensemble_chunk"  # dask groups tasks by this prefix (key_split)
 
 
 def _store_chunk(spec: EnsembleSpec, index: int, path: str | None) -> Any:
@@ -56,7 +56,8 @@ def _client(scheduler: Any, n_workers: int, processes: bool) -> Iterator[Any]:
                 n_workers=int(n_workers),
                 threads_per_worker=1,
                 processes=processes,
-                dashboard_address=None,
+                # Port 0: the HTTP server always starts, and a fixed port may be taken.
+                dashboard_address="127.0.0.1:0",
             ) as cluster,
             Client(cluster) as client,
         ):
@@ -67,7 +68,7 @@ def _client(scheduler: Any, n_workers: int, processes: bool) -> Iterator[Any]:
         raise ValueError(msg)
     try:
         client = Client(scheduler, timeout="10s")
-    except OSError as exc:
+    except (OSError, ValueError) as exc:  # refused or timed out (OSError), malformed address (ValueError)
         msg = f"expected a reachable Dask scheduler at {scheduler!r}, got {exc}"
         raise ValueError(msg) from exc
     with client:
@@ -233,27 +234,64 @@ def _run(
                 if on_chunk is not None:
                     on_chunk(index)
             return results
-        from distributed import as_completed
-
         with _client(scheduler, n_workers, processes) as client:
-            run_id = uuid.uuid4().hex[:12]
-            futures = [
-                client.submit(_store_chunk, spec, index, store, key=f"{TASK_PREFIX}-{run_id}-{index}")
-                for index in todo
-            ]
-            index_of = {f.key: i for f, i in zip(futures, todo, strict=True)}
-            try:
-                for future in as_completed(futures):
-                    index = index_of[future.key]
-                    results[index] = future.result()
-                    future.release()
-                    bar.update()
-                    if on_chunk is not None:
-                        on_chunk(index)
-            except BaseException:
-                client.cancel(futures)
-                raise
+            _submit_windowed(client, spec, todo, store, results, bar, on_chunk)
     return results
+
+
+def _submit_windowed(
+    client: Any,
+    spec: EnsembleSpec,
+    todo: list[int],
+    store: str | None,
+    results: dict[int, Any],
+    bar: Any,
+    on_chunk: Callable[[int], None] | None,
+) -> None:
+    """Keep about two chunks per worker thread in flight, submitting the next as one completes.
+
+    The window bounds the memory of the scheduler and of an in-memory result, and makes
+    an interruption clean: on any exception (a failed chunk, the callback, Ctrl-C) no new
+    chunk starts, the few in flight are allowed to finish writing (a second Ctrl-C
+    abandons them), and the exception propagates. Nothing is written after this returns.
+    """
+    from distributed import as_completed, wait
+
+    run_id = uuid.uuid4().hex[:12]
+    window = max(4, 2 * sum(client.nthreads().values()))
+    queue = iter(todo)
+    index_of: dict[Any, int] = {}
+
+    def submit() -> Any:
+        index = next(queue, None)
+        if index is None:
+            return None
+        future = client.submit(_store_chunk, spec, index, store, key=f"{TASK_PREFIX}-{index}-{run_id}")
+        index_of[future.key] = index
+        return future
+
+    first = [f for f in (submit() for _ in range(window)) if f is not None]
+    in_flight = set(first)
+    stream = as_completed(first)
+    try:
+        for future in stream:
+            in_flight.discard(future)
+            index = index_of.pop(future.key)
+            results[index] = future.result()
+            future.release()
+            nxt = submit()
+            if nxt is not None:
+                in_flight.add(nxt)
+                stream.add(nxt)
+            bar.update()
+            if on_chunk is not None:
+                on_chunk(index)
+    except BaseException:
+        try:
+            wait(list(in_flight))
+        finally:
+            client.cancel(list(in_flight))
+        raise
 
 
 def _assemble(spec: EnsembleSpec, results: dict[int, Any]):
