@@ -16,7 +16,7 @@ TIMES = np.array([0.0, 1.5, 40.0])
 N, CHUNK = 29, 4  # 8 chunks, the last one short
 
 
-class Interrupt(Exception):
+class SimulatedKillError(Exception):
     """Raised from the chunk callback to simulate a kill."""
 
 
@@ -26,7 +26,7 @@ def stop_after(k):
     def on_chunk(index):
         done.append(index)
         if len(done) >= k:
-            raise Interrupt
+            raise SimulatedKillError
 
     return on_chunk
 
@@ -40,14 +40,20 @@ def chunk_files(store, chunks):
         if len(rel) >= 3 and rel[1] == "c" and int(rel[2]) in chunks:
             found.update({os.path.join(root, f): os.stat(os.path.join(root, f)).st_mtime_ns for f in files})
         if len(rel) == 2 and rel[1] == "c":  # one-dimensional arrays: the file name is the chunk
-            found.update({os.path.join(root, f): os.stat(os.path.join(root, f)).st_mtime_ns
-                          for f in files if f.isdigit() and int(f) in chunks})
+            found.update(
+                {
+                    os.path.join(root, f): os.stat(os.path.join(root, f)).st_mtime_ns
+                    for f in files
+                    if f.isdigit() and int(f) in chunks
+                }
+            )
     return found
 
 
 def reference():
-    return run_ensemble(AndoyerSampler(), N, TIMES, body=EROS, chunk=CHUNK, seed=9, scheduler="synchronous",
-                        progress=False)
+    return run_ensemble(
+        AndoyerSampler(), N, TIMES, body=EROS, chunk=CHUNK, seed=9, scheduler="synchronous", progress=False
+    )
 
 
 @pytest.mark.parametrize("where", ["synchronous", "loopback"])
@@ -55,8 +61,15 @@ def reference():
 def test_ensemble_zarr_resume_recomputes_only_missing_chunks(where, k, tmp_path, loopback_cluster):
     scheduler = "synchronous" if where == "synchronous" else loopback_cluster.scheduler_address
     store = tmp_path / "e.zarr"
-    kwargs = {"body": EROS, "chunk": CHUNK, "seed": 9, "out": store, "scheduler": scheduler, "progress": False}
-    with pytest.raises(Interrupt):
+    kwargs = {
+        "body": EROS,
+        "chunk": CHUNK,
+        "seed": 9,
+        "out": store,
+        "scheduler": scheduler,
+        "progress": False,
+    }
+    with pytest.raises(SimulatedKillError):
         run_ensemble(AndoyerSampler(), N, TIMES, on_chunk=stop_after(k), **kwargs)
     done = set(np.flatnonzero(completed_chunks(store)).tolist())
     assert k <= len(done) < 8
@@ -79,7 +92,14 @@ def test_ensemble_zarr_partial_chunk_without_marker_is_recomputed(tmp_path):
     import zarr
 
     store = tmp_path / "e.zarr"
-    kwargs = {"body": EROS, "chunk": CHUNK, "seed": 9, "out": store, "scheduler": "synchronous", "progress": False}
+    kwargs = {
+        "body": EROS,
+        "chunk": CHUNK,
+        "seed": 9,
+        "out": store,
+        "scheduler": "synchronous",
+        "progress": False,
+    }
     run_ensemble(AndoyerSampler(), N, TIMES, **kwargs)
     group = zarr.open_group(store, mode="r+")
     group["quaternion"][8:12] = 0.5  # a worker killed half-way through chunk 2: data, no marker
@@ -93,9 +113,15 @@ def test_ensemble_zarr_partial_chunk_without_marker_is_recomputed(tmp_path):
 def test_ensemble_netcdf_is_atomic_and_resumes(tmp_path, loopback_cluster):
     out = tmp_path / "e.nc"
     parts = tmp_path / "e.nc.parts.zarr"
-    kwargs = {"body": EROS, "chunk": CHUNK, "seed": 9, "out": out, "progress": False,
-              "scheduler": loopback_cluster.scheduler_address}
-    with pytest.raises(Interrupt):
+    kwargs = {
+        "body": EROS,
+        "chunk": CHUNK,
+        "seed": 9,
+        "out": out,
+        "progress": False,
+        "scheduler": loopback_cluster.scheduler_address,
+    }
+    with pytest.raises(SimulatedKillError):
         run_ensemble(AndoyerSampler(), N, TIMES, on_chunk=stop_after(2), **kwargs)
     assert not out.exists()  # nothing half-written under the final name
     assert parts.is_dir()
@@ -116,22 +142,50 @@ def test_ensemble_netcdf_is_atomic_and_resumes(tmp_path, loopback_cluster):
 
 
 @pytest.mark.parametrize(
-    "change", [{"seed": 10}, {"chunk": 5}, {"times": [0.0, 1.5, 41.0]}, {"n_samples": 30}, {"output": "euler"}]
+    "change",
+    [{"seed": 10}, {"chunk": 5}, {"times": [0.0, 1.5, 41.0]}, {"n_samples": 30}, {"output": "euler"}],
 )
-@pytest.mark.parametrize("suffix", [".zarr", ".nc"])
-def test_ensemble_refuses_to_resume_with_other_settings(change, suffix, tmp_path):
-    out = tmp_path / f"e{suffix}"
-    args = {"n_samples": N, "times": TIMES, "body": EROS, "chunk": CHUNK, "seed": 9, "out": out,
-            "scheduler": "synchronous", "progress": False}
+def test_ensemble_refuses_to_resume_with_other_settings(change, tmp_path):
+    out = tmp_path / "e.zarr"
+    args = {
+        "n_samples": N,
+        "times": TIMES,
+        "body": EROS,
+        "chunk": CHUNK,
+        "seed": 9,
+        "out": out,
+        "scheduler": "synchronous",
+        "progress": False,
+    }
     run_ensemble(AndoyerSampler(), **args)
     args.update(change)
     with pytest.raises(ValueError, match="expected the settings of the ensemble already in"):
         run_ensemble(AndoyerSampler(), **args)
 
 
+def test_ensemble_refuses_a_netcdf_file_with_other_settings(tmp_path):
+    args = {
+        "body": EROS,
+        "chunk": CHUNK,
+        "out": tmp_path / "e.nc",
+        "scheduler": "synchronous",
+        "progress": False,
+    }
+    run_ensemble(AndoyerSampler(), N, TIMES, seed=9, **args)
+    with pytest.raises(ValueError, match="expected the settings of the ensemble already in"):
+        run_ensemble(AndoyerSampler(), N, TIMES, seed=10, **args)
+
+
 def test_ensemble_refuses_a_foreign_store(tmp_path):
     (tmp_path / "x.zarr").mkdir()
     (tmp_path / "x.zarr" / "notes.txt").write_text("not a store")
     with pytest.raises(ValueError, match="expected an andoyer ensemble Zarr store"):
-        run_ensemble(AndoyerSampler(), 4, TIMES, body=EROS, out=tmp_path / "x.zarr", scheduler="synchronous",
-                     progress=False)
+        run_ensemble(
+            AndoyerSampler(),
+            4,
+            TIMES,
+            body=EROS,
+            out=tmp_path / "x.zarr",
+            scheduler="synchronous",
+            progress=False,
+        )

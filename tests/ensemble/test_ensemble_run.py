@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from conftest import documented_andoyer_samples
 
 from andoyer import FreeRotation, RigidBody, State, bodies
 from andoyer.ensemble import (
@@ -14,6 +13,7 @@ from andoyer.ensemble import (
     MomentumSampler,
     run_ensemble,
 )
+from conftest import documented_andoyer_samples
 
 EROS = bodies.get("eros")
 TIMES = np.array([0.0, 0.37, 5.0, -12.5, 1.0e4])
@@ -22,7 +22,9 @@ TIMES = np.array([0.0, 0.37, 5.0, -12.5, 1.0e4])
 def direct_states(body, seed, n, chunk, times, **ranges):
     """FreeRotation(body).propagate on the documented samples, one State per chunk."""
     return [
-        FreeRotation(body).propagate(documented_andoyer_samples(seed, k, min(chunk, n - s), **ranges)[:, None], times)
+        FreeRotation(body).propagate(
+            documented_andoyer_samples(seed, k, min(chunk, n - s), **ranges)[:, None], times
+        )
         for k, s in enumerate(range(0, n, chunk))
     ]
 
@@ -37,21 +39,22 @@ def direct(body, seed, n, chunk, times, **ranges):
 @pytest.mark.parametrize("where", ["synchronous", "loopback", "loopback-1-worker-chunks-of-1"])
 def test_ensemble_equals_direct_call_bitwise(where, loopback_cluster):
     n, chunk, seed = 23, 5, 11
-    if where == "synchronous":
-        scheduler = "synchronous"
-    else:
-        scheduler = loopback_cluster.scheduler_address
+    scheduler = "synchronous" if where == "synchronous" else loopback_cluster.scheduler_address
     if where.endswith("chunks-of-1"):
         chunk = 1
-    ds = run_ensemble(AndoyerSampler(), n, TIMES, body=EROS, chunk=chunk, seed=seed, scheduler=scheduler,
-                      progress=False)
+    ds = run_ensemble(
+        AndoyerSampler(), n, TIMES, body=EROS, chunk=chunk, seed=seed, scheduler=scheduler, progress=False
+    )
     q, m = direct(EROS, seed, n, chunk, TIMES)
     assert ds.quaternion.dims == ("sample", "time", "quaternion_component")
     np.testing.assert_array_equal(ds.quaternion.values, q)
     np.testing.assert_array_equal(ds.m_body.values, m)
     np.testing.assert_array_equal(ds.time.values, TIMES)
     initial = np.concatenate(
-        [documented_andoyer_samples(seed, k, min(chunk, n - s)).m_body for k, s in enumerate(range(0, n, chunk))]
+        [
+            documented_andoyer_samples(seed, k, min(chunk, n - s)).m_body
+            for k, s in enumerate(range(0, n, chunk))
+        ]
     )
     np.testing.assert_array_equal(ds.m_body0.values, initial)
 
@@ -70,8 +73,18 @@ def test_ensemble_same_numbers_for_any_worker_count(loopback_cluster):
 )
 def test_ensemble_default_local_cluster(processes, tmp_path):
     # The default path: a distributed.LocalCluster of two workers, closed at the end.
-    ds = run_ensemble(AndoyerSampler(), 9, TIMES, body=EROS, chunk=4, seed=5, n_workers=2,
-                      processes=processes, out=tmp_path / "e.zarr", progress=False)
+    ds = run_ensemble(
+        AndoyerSampler(),
+        9,
+        TIMES,
+        body=EROS,
+        chunk=4,
+        seed=5,
+        n_workers=2,
+        processes=processes,
+        out=tmp_path / "e.zarr",
+        progress=False,
+    )
     q, m = direct(EROS, 5, 9, 4, TIMES)
     np.testing.assert_array_equal(ds.quaternion.values, q)
     np.testing.assert_array_equal(ds.m_body.values, m)
@@ -79,9 +92,20 @@ def test_ensemble_default_local_cluster(processes, tmp_path):
 
 def test_ensemble_scheduler_by_address_runs_there(loopback_cluster):
     prefixes = loopback_cluster.scheduler.task_prefixes
-    before = prefixes["andoyer_ensemble_chunk"].state_counts["memory"] if "andoyer_ensemble_chunk" in prefixes else 0
-    run_ensemble(AndoyerSampler(), 10, TIMES, body=EROS, chunk=3, scheduler=loopback_cluster.scheduler_address,
-                 progress=False)
+    before = (
+        prefixes["andoyer_ensemble_chunk"].state_counts["memory"]
+        if "andoyer_ensemble_chunk" in prefixes
+        else 0
+    )
+    run_ensemble(
+        AndoyerSampler(),
+        10,
+        TIMES,
+        body=EROS,
+        chunk=3,
+        scheduler=loopback_cluster.scheduler_address,
+        progress=False,
+    )
     after = loopback_cluster.scheduler.task_prefixes["andoyer_ensemble_chunk"].state_counts["memory"]
     assert after - before == 4  # ceil(10 / 3) chunk tasks finished on that scheduler's workers
 
@@ -109,15 +133,25 @@ def test_ensemble_chart_outputs_match_state_conversion(output):
 
 def test_ensemble_inertia_sampler_moves_each_sample_with_its_own_body():
     sampler = InertiaSampler(AndoyerSampler(), low=(0.5, 0.8, 1.0), high=(0.7, 1.0, 1.3))
-    ds = run_ensemble(sampler, 8, TIMES, propagator=FreePropagator(), chunk=3, seed=4, scheduler="synchronous",
-                      progress=False)
+    ds = run_ensemble(
+        sampler,
+        8,
+        TIMES,
+        propagator=FreePropagator(),
+        chunk=3,
+        seed=4,
+        scheduler="synchronous",
+        progress=False,
+    )
     moments = ds.moments.values
     assert ds.moments.dims == ("sample", "axis")
     assert np.all((moments >= [0.5, 0.8, 1.0]) & (moments <= [0.7, 1.0, 1.3]))
     for i in range(8):  # one FreeRotation per body: the scalar path, not the vectorised one
         s0 = State.from_quaternion(ds.quaternion0.values[i], ds.m_body0.values[i])
         ref = FreeRotation(RigidBody(*moments[i])).propagate(s0, TIMES)
-        np.testing.assert_allclose(ds.m_body.values[i], ref.m_body, rtol=0, atol=1e-15 * np.abs(ref.m_body).max())
+        np.testing.assert_allclose(
+            ds.m_body.values[i], ref.m_body, rtol=0, atol=1e-15 * np.abs(ref.m_body).max()
+        )
         np.testing.assert_allclose(ds.quaternion.values[i], ref.quaternion, rtol=0, atol=1e-15)
 
 
@@ -128,8 +162,15 @@ def test_ensemble_custom_propagator_plugs_in(loopback_cluster):
             np.broadcast_to(state.m_body[:, None], (state.size, times.size, 3)),
         )
 
-    ds = run_ensemble(MomentumSampler(), 7, [0.0, 1.0], propagator=frozen, chunk=2,
-                      scheduler=loopback_cluster.scheduler_address, progress=False)
+    ds = run_ensemble(
+        MomentumSampler(),
+        7,
+        [0.0, 1.0],
+        propagator=frozen,
+        chunk=2,
+        scheduler=loopback_cluster.scheduler_address,
+        progress=False,
+    )
     np.testing.assert_array_equal(ds.m_body.values[:, 1], ds.m_body0.values)
 
 
@@ -157,5 +198,11 @@ def test_ensemble_bad_arguments_raise_one_message(kwargs, match):
 
 def test_ensemble_propagator_with_wrong_shape_is_reported():
     with pytest.raises(ValueError, match=r"expected the propagator to return a State of shape \(4, 2\)"):
-        run_ensemble(AndoyerSampler(), 4, [0.0, 1.0], propagator=lambda s, t: s, scheduler="synchronous",
-                     progress=False)
+        run_ensemble(
+            AndoyerSampler(),
+            4,
+            [0.0, 1.0],
+            propagator=lambda s, t: s,
+            scheduler="synchronous",
+            progress=False,
+        )
