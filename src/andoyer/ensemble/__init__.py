@@ -25,7 +25,7 @@ Examples
 
 from andoyer.ensemble.layout import OUTPUTS, EnsembleSpec
 from andoyer.ensemble.propagators import FreePropagator, Propagator
-from andoyer.ensemble.runner import run_ensemble
+from andoyer.ensemble.runner import local_client, run_ensemble
 from andoyer.ensemble.sampling import (
     AndoyerSampler,
     Draw,
@@ -48,5 +48,6 @@ __all__ = [
     "Sampler",
     "chunk_rng",
     "completed_chunks",
+    "local_client",
     "run_ensemble",
 ]
