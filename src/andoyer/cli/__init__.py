@@ -17,6 +17,7 @@ from andoyer.cli import (
     brackets_cmd,
     convert_cmd,
     demo_cmd,
+    ensemble_cmd,
     portrait_cmd,
     propagate_cmd,
     series_cmd,
@@ -38,7 +39,16 @@ def build_parser() -> argparse.ArgumentParser:
 
     parser.add_argument("--version", action="version", version=f"andoyer {__version__}")
     commands = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
-    for module in (demo_cmd, bodies_cmd, convert_cmd, propagate_cmd, brackets_cmd, series_cmd, portrait_cmd):
+    for module in (
+        demo_cmd,
+        bodies_cmd,
+        convert_cmd,
+        propagate_cmd,
+        ensemble_cmd,
+        brackets_cmd,
+        series_cmd,
+        portrait_cmd,
+    ):
         module.register(commands)
     return parser
 
