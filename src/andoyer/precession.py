@@ -75,6 +75,7 @@ from andoyer.state import State
 __all__ = [
     "ARCSEC",
     "NODE_PHASES",
+    "PLANETS",
     "PrecessionRates",
     "default_step",
     "mean_node_rate",

@@ -12,7 +12,15 @@ import argparse
 import sys
 from collections.abc import Sequence
 
-from andoyer.cli import bodies_cmd, brackets_cmd, convert_cmd, demo_cmd, propagate_cmd, series_cmd
+from andoyer.cli import (
+    bodies_cmd,
+    brackets_cmd,
+    convert_cmd,
+    demo_cmd,
+    precession_cmd,
+    propagate_cmd,
+    series_cmd,
+)
 from andoyer.cli.output import CliError
 
 __all__ = ["main"]
@@ -30,7 +38,15 @@ def build_parser() -> argparse.ArgumentParser:
 
     parser.add_argument("--version", action="version", version=f"andoyer {__version__}")
     commands = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
-    for module in (demo_cmd, bodies_cmd, convert_cmd, propagate_cmd, brackets_cmd, series_cmd):
+    for module in (
+        demo_cmd,
+        bodies_cmd,
+        convert_cmd,
+        propagate_cmd,
+        precession_cmd,
+        brackets_cmd,
+        series_cmd,
+    ):
         module.register(commands)
     return parser
 
