@@ -281,7 +281,8 @@ def precession_rates(
     key = _planet(body)
     model, states = precession_problem(key)
     perturbers = mean_perturbers(key)
-    h0 = _node(states, 0.0)
+    M0 = states.m_reference
+    h0 = np.arctan2(M0[:, 0], -M0[:, 1])
     for name, value in (("integrate", integrate), ("secular_years", secular_years)):
         if value is not None and not (np.isfinite(value) and value > 0):
             msg = f"expected a positive number of years for {name}, got {value!r}"
