@@ -17,7 +17,7 @@ EXAMPLES = """examples:
   andoyer propagate --moments 1 2 3 --from state --input s.csv --range 0 100 11 --to sadov --format csv
   andoyer propagate --model heavy-top --weight 0.5 --center-of-mass 0 0 0.3 --moments 1 1 0.5 \
       --values 0.1 0.2 0.3 0.9 1.0 0.5 --range 0 10 11 --method splitting --step 0.01
-  andoyer propagate --model earth-lunisolar --method secular --values 0 0 0 7.29e-5 7.29e-5 6.69e-5 \
+  andoyer propagate --model earth-lunisolar --method secular --values 0 0 0 7.28e-5 7.29e-5 6.69e-5 \
       --range 0 3.15576e9 11 --to andoyer
 Times are in the units of the angular momentum and moments (e.g. seconds for SI values); the
 solar-system models (gravity-gradient-sun, earth-lunisolar, mars-solar) use seconds, and the
