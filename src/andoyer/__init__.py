@@ -18,6 +18,7 @@ from andoyer import bodies, charts, free, integrate, liepoisson, perturbations, 
 from andoyer.body import RigidBody, RotationMode, Symmetry
 from andoyer.charts import SingularChartWarning
 from andoyer.free import FreeRotation
+from andoyer.propagation import propagate
 from andoyer.state import State
 
 __all__ = [
@@ -33,6 +34,7 @@ __all__ = [
     "integrate",
     "liepoisson",
     "perturbations",
+    "propagate",
     "series",
     "special",
     "theories",

@@ -19,6 +19,7 @@ from andoyer.cli import (
     demo_cmd,
     ensemble_cmd,
     portrait_cmd,
+    precession_cmd,
     propagate_cmd,
     series_cmd,
 )
@@ -44,6 +45,7 @@ def build_parser() -> argparse.ArgumentParser:
         bodies_cmd,
         convert_cmd,
         propagate_cmd,
+        precession_cmd,
         ensemble_cmd,
         brackets_cmd,
         series_cmd,

@@ -1,4 +1,4 @@
-"""``andoyer propagate``: exact torque-free propagation of states, written in any chart."""
+"""``andoyer propagate``: propagation of states (torque-free or under a named model), written in any chart."""
 
 from __future__ import annotations
 
@@ -7,25 +7,41 @@ import argparse
 import numpy as np
 
 from andoyer.cli.chart_table import CHARTS, add_body_arguments, body_from_args
+from andoyer.cli.named_models import MODELS, add_model_arguments, model_from_args
 from andoyer.cli.output import CliError, atomic_output, format_rows, read_csv_columns
 from andoyer.free import FreeRotation
+from andoyer.propagation import propagate
 
 EXAMPLES = """examples:
   andoyer propagate --body eros --from andoyer --values 0.1 0.2 0.3 0.99 1.0 0.5 --times 0 10 100
   andoyer propagate --moments 1 2 3 --from state --input s.csv --range 0 100 11 --to sadov --format csv
-Times are in the units of the angular momentum and moments (e.g. seconds for SI values).
+  andoyer propagate --model heavy-top --weight 0.5 --center-of-mass 0 0 0.3 --moments 1 1 0.5 \
+      --values 0.1 0.2 0.3 0.9 1.0 0.5 --range 0 10 11 --method splitting --step 0.01
+  andoyer propagate --model earth-lunisolar --method secular --values 0 0 0 7.28e-5 7.29e-5 6.69e-5 \
+      --range 0 3.15576e9 11 --to andoyer
+Times are in the units of the angular momentum and moments (e.g. seconds for SI values); the
+solar-system models (gravity-gradient-sun, earth-lunisolar, mars-solar) use seconds, and the
+states are given at t = 0. --method: exact (closed-form flow, --model free only; the default
+there), reference (DOP853; the default otherwise), splitting (needs --step), secular (mean
+states of a fast rotator: gravity-gradient and precessing-frame models).
 """
+
+METHODS = ("exact", "reference", "splitting", "secular")
 
 
 def register(commands: argparse._SubParsersAction) -> None:
     """Add the sub-command to the parser."""
     parser = commands.add_parser(
         "propagate",
-        help="propagate states exactly (torque-free) and write any chart at the requested times",
+        help="propagate states (torque-free or under a model) and write any chart at the requested times",
         epilog=EXAMPLES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     add_body_arguments(parser)
+    add_model_arguments(parser)
+    parser.add_argument("--method", choices=METHODS, help="default: exact for --model free, else reference")
+    parser.add_argument("--step", type=float, metavar="H", help="splitting step (time units)")
+    parser.add_argument("--order", type=int, choices=(2, 4, 6), help="splitting order (default 4)")
     parser.add_argument("--from", dest="source", choices=tuple(CHARTS), default="andoyer")
     parser.add_argument("--to", dest="target", choices=tuple(CHARTS), default=None, help="default: --from")
     given = parser.add_mutually_exclusive_group(required=True)
@@ -41,7 +57,13 @@ def register(commands: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Read the states, propagate them, write one row per (state, time)."""
+    named = MODELS[args.model]
+    if args.body is None and args.moments is None and named.default_body is not None:
+        args.body = named.default_body
     body = body_from_args(args)
+    model = model_from_args(body, args)
+    method = args.method or ("exact" if args.model == "free" else "reference")
+    options = _method_options(args, method)
     source = CHARTS[args.source]
     target = CHARTS[args.target or args.source]
     if args.values is not None:
@@ -65,7 +87,10 @@ def run(args: argparse.Namespace) -> int:
         msg = f"expected finite times, got {times.tolist()!r}"
         raise CliError(msg)
     state = source.to_state([columns[c] for c in source.columns], body)
-    out = FreeRotation(body).propagate(state.reshape(1, -1), times[:, None])
+    if method == "exact":
+        out = FreeRotation(body).propagate(state.reshape(1, -1), times[:, None])
+    else:
+        out = propagate(model, state.reshape(1, -1), times[:, None], method=method, **options)
     values = [np.asarray(v, dtype=float) for v in target.from_state(out, body)]
     n_states = state.size
     rows = [
@@ -76,3 +101,22 @@ def run(args: argparse.Namespace) -> int:
     with atomic_output(args.output) as stream:
         stream.write(format_rows(("t", "state", *target.columns), rows, args.format))
     return 0
+
+
+def _method_options(args: argparse.Namespace, method: str) -> dict[str, float]:
+    """The integrator options given on the command line, checked against the method."""
+    if method == "exact" and args.model != "free":
+        msg = f"expected --method reference, splitting or secular for --model {args.model}, got exact"
+        raise CliError(msg)
+    if method != "splitting":
+        given = [
+            flag for flag, value in (("--step", args.step), ("--order", args.order)) if value is not None
+        ]
+        if given:
+            msg = f"expected {', '.join(given)} only with --method splitting, got --method {method}"
+            raise CliError(msg)
+        return {}
+    if args.step is None or not (np.isfinite(args.step) and args.step > 0):
+        msg = f"expected a positive --step for --method splitting, got {args.step!r}"
+        raise CliError(msg)
+    return {"step": args.step, "order": args.order or 4}

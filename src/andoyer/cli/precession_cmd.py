@@ -1,0 +1,90 @@
+"""``andoyer precession``: the precession rate of a planet's spin axis about its ecliptic pole."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+
+from andoyer.cli.output import CliError, atomic_output
+
+EXAMPLES = """examples:
+  andoyer precession earth
+  andoyer precession mars --integrate 2 --format json
+  andoyer precession earth --integrate 1 --step 8.227 --output earth.json --format json
+Rates are arcseconds per Julian year of regression of the angular momentum's node on the
+planet's ecliptic: from the averaged (secular) model, and with --integrate YEARS from a full
+splitting integration of the Sun's (and Moon's) gravity-gradient torque (see andoyer.precession).
+JSON keys: body, perturbers, obliquity_deg, secular_arcsec_per_year, integrated_arcsec_per_year
+(null without --integrate), integration_years, step_days.
+"""
+
+
+def _positive(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not (math.isfinite(value) and value > 0):
+        msg = f"expected a positive number, got {text!r}"
+        raise argparse.ArgumentTypeError(msg)
+    return value
+
+
+def register(commands: argparse._SubParsersAction) -> None:
+    """Add the sub-command to the parser."""
+    from andoyer.precession import PLANETS
+
+    parser = commands.add_parser(
+        "precession",
+        help="precession rate of the spin axis of the Earth (Sun + Moon) or Mars (Sun), arcsec/yr",
+        epilog=EXAMPLES,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    parser.add_argument("body", type=str.lower, choices=PLANETS)
+    parser.add_argument(
+        "--integrate", type=_positive, metavar="YEARS", help="also integrate the full torque this long"
+    )
+    parser.add_argument(
+        "--step",
+        type=_positive,
+        metavar="DAYS",
+        help="splitting step (default: andoyer.precession.default_step)",
+    )
+    parser.add_argument("--order", type=int, choices=(2, 4, 6), default=2, help="splitting order")
+    parser.add_argument("--format", choices=("text", "json"), default="text")
+    parser.add_argument("--output", metavar="FILE", help="write here instead of standard output")
+    parser.set_defaults(run=run)
+
+
+def render_text(fields: dict) -> str:
+    """The rates as a few human-readable lines."""
+    lines = [
+        f"precession of the angular momentum of {fields['body'].capitalize()} about its ecliptic pole",
+        f"perturbers: {', '.join(fields['perturbers'])}",
+        f"obliquity: {fields['obliquity_deg']:.4f} deg",
+        f"secular model: {fields['secular_arcsec_per_year']:.4f} arcsec/yr",
+    ]
+    if fields["integrated_arcsec_per_year"] is not None:
+        lines.append(
+            f"full integration ({fields['integration_years']:.3f} yr, step {fields['step_days']:.4f} d): "
+            f"{fields['integrated_arcsec_per_year']:.4f} arcsec/yr"
+        )
+    return "\n".join(lines) + "\n"
+
+
+def run(args: argparse.Namespace) -> int:
+    """Compute the rates and write them."""
+    from andoyer.perturbations.solar_system import DAY
+    from andoyer.precession import precession_rates
+
+    if args.step is not None and args.integrate is None:
+        msg = "expected --step only with --integrate YEARS, got --step alone"
+        raise CliError(msg)
+    step = None if args.step is None else args.step * DAY
+    rates = precession_rates(args.body, integrate=args.integrate, step=step, order=args.order)
+    fields = rates.as_dict()
+    text = json.dumps(fields, indent=2) + "\n" if args.format == "json" else render_text(fields)
+    with atomic_output(args.output) as stream:
+        stream.write(text)
+    return 0
