@@ -23,6 +23,8 @@ def test_demo_report_has_every_section(report):
     folder, summary = report
     assert (folder / "README.md").read_text(encoding="utf-8") == summary
     for heading in (
+        "## Earth's precession",
+        "## Phase portraits",
         "### state",
         "### euler",
         "### andoyer",
@@ -92,3 +94,26 @@ def test_demo_cli_bad_arguments_one_line_exit_2(argv):
     assert proc.returncode == 2
     assert len(proc.stderr.strip().splitlines()) == 1
     assert "Traceback" not in proc.stderr
+
+
+def test_demo_report_pictures_exist_and_are_linked(report):
+    folder, summary = report
+    for name in (
+        "phase-portrait.png",
+        "momentum-sphere.png",
+        "lara-figure-1.png",
+        "poinsot.png",
+        "earth-precession.png",
+    ):
+        assert f"]({name})" in summary
+        assert (folder / name).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_demo_report_precession_in_the_issue_band(report):
+    # Issue band for a rigid Earth torqued by the Sun and the Moon: 50.0–50.8″/yr, from both
+    # the secular model and the splitting integration (observed 50.38″/yr).
+    _, summary = report
+    rows = [line for line in summary.splitlines() if line.startswith(("| secular", "| splitting"))]
+    rates = [float(row.strip("|").split("|")[-1]) for row in rows]
+    assert len(rates) == 2
+    assert all(50.0 <= rate <= 50.8 for rate in rates)

@@ -152,6 +152,7 @@ def precession(
     axis: str = "figure",
     *,
     degrees: bool = False,
+    time_unit: str | None = None,
     axes: tuple[Axes, Axes, Axes] | None = None,
 ) -> Figure:
     """Draw the precession ``Ω``, the obliquity ``ε`` (with their trends) and the nutations.
@@ -162,6 +163,8 @@ def precession(
         As in :func:`precession_data`.
     degrees : bool
         Show angles in degrees (default radians).
+    time_unit : str, optional
+        Name of the unit of ``times`` for the labels (e.g. ``"yr"``); default "unit time".
     axes : three matplotlib Axes, optional
         Where to draw the three panels; default a new figure with three rows.
 
@@ -201,7 +204,7 @@ def precession(
         color="k",
         ls="--",
         lw=0.8,
-        label=f"trend, $\\dot\\Omega = {k * data.precession_rate:.6g}$ {unit} per unit time",
+        label=f"trend, $\\dot\\Omega = {k * data.precession_rate:.6g}$ {unit} per {time_unit or 'unit time'}",
     )
     top.set_ylabel(f"precession $\\Omega$ ({unit})")
     top.set_title(f"Precession, obliquity and nutation of the {what}")
@@ -215,7 +218,7 @@ def precession(
         t, k * data.nutation_obliquity, color="tab:green", lw=0.9, label="$\\Delta\\varepsilon$ (obliquity)"
     )
     low.set_ylabel(f"nutation ({unit})")
-    low.set_xlabel("time $t$ (units of the input)")
+    low.set_xlabel(f"time $t$ ({time_unit or 'units of the input'})")
     for a in axes:
         a.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize="small", frameon=False)
     fig.andoyer_data = data  # type: ignore[attr-defined]
