@@ -298,7 +298,7 @@ def serret_to_andoyer(
         raise ValueError(msg)
     shape = g0.shape
     g0, t0, G, T, sign, t = (np.ravel(v) for v in (g0, t0, G, T, sign, t))
-    a_e = frame.a3 + frame.d_e3
+    a_e = 1.0 / (body.I2 if frame.swapped else body.I1)
     e = 2.0 * T / (G * G)
     lo, hi = 1.0 / float(np.max(body.moments)), 1.0 / float(np.min(body.moments))
     slack = 4 * EPS * hi
@@ -321,7 +321,8 @@ def serret_to_andoyer(
         circ = w_c < 0
         with np.errstate(all="ignore"):
             y, y_c = (e - frame.a3) / (a_i - frame.a3), (a_i - e) / (a_i - frame.a3)
-        v, vc = np.where(circ, y, w), np.where(circ, y_c, w_c)
+        # Rounding (of e near an end of its region) must not leave [0, 1].
+        v, vc = np.clip(np.where(circ, y, w), 0.0, 1.0), np.clip(np.where(circ, y_c, w_c), 0.0, 1.0)
         o = orbit(frame, circ, v, vc)
         omega_l, omega_g = _frequencies(frame, o, sign, G)
         s, c, x, dg = point(frame, o, sign, np.mod(omega_l * elapsed, TWO_PI))
