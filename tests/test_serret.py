@@ -156,9 +156,9 @@ def test_t0_and_g0_match_quadrature_every_case(name, regime, rng):
 # ------------------------------------------------------------------- the free flow
 @pytest.mark.parametrize(("name", "regime"), CASES_HERE)
 def test_elements_are_constant_along_the_exact_free_flow(name, regime, rng):
-    """Over ~60 periods, with the branch fixed by ``epoch``: g0, h, G, H, T constant to 1e-12
-    (g0 and t0 scaled by ``1 + |ω_g| P_ℓ``, the chart's own conditioning, and by the distance to
-    the separatrix in the near-separatrix regime)."""
+    """Over ~60 periods, with the branch fixed by ``epoch``: G, H, T, h constant to 1e-12; t0 to
+    2e-13 P_ℓ and g0 to 2e-13 (1 + |ω_g| P_ℓ) (the chart's own conditioning: ∂g0/∂t0 = ω_g),
+    both times ``k`` in the near-separatrix regime."""
     body = BODIES_HERE[name]
     a = sample(body, rng, 40, regime)
     state = State.from_andoyer(*a)
@@ -177,8 +177,10 @@ def test_elements_are_constant_along_the_exact_free_flow(name, regime, rng):
     scale = (1 + np.abs(w.omega_g) * period) * k
     err_t = np.abs(s.t0 - ref.t0[:, None]) / period[:, None]
     err_g = np.abs(circle(s.g0 - ref.g0[:, None]))
-    assert np.all(err_t.max(axis=1) <= 1e-12 * k)
-    assert np.all(err_g.max(axis=1) <= 1e-12 * scale)
+    # Measured: t0/P to ~5e-14 and g0 to ~1e-12 over 60 periods for the generic bodies (t0
+    # carries eps·|t|, and g0 = φ_g − ω_g (t − t0) multiplies it by ω_g).
+    assert np.all(err_t.max(axis=1) <= 2e-13 * k)
+    assert np.all(err_g.max(axis=1) <= 2e-13 * scale)
 
 
 @pytest.mark.parametrize(("name", "regime"), REPRESENTATIVE)
