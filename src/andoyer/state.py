@@ -296,6 +296,96 @@ class State:
         dt = np.asarray(epoch, dtype=float) - np.asarray(t, dtype=float)
         return FreeRotation(_check_body(body)).propagate(self, dt).as_andoyer()
 
+    @classmethod
+    def from_initial_andoyer(
+        cls,
+        body: RigidBody,
+        l0: ArrayLike,
+        g0: ArrayLike,
+        h: ArrayLike,
+        L0: ArrayLike,
+        G: ArrayLike,
+        H: ArrayLike,
+        epoch: ArrayLike,
+        t: ArrayLike = 0.0,
+    ) -> State:
+        """State at time ``t`` of the free motion whose Andoyer variables at ``epoch`` are given.
+
+        The inverse of :meth:`as_initial_andoyer` (Gurfil §4.1's modified Andoyer set
+        ``(l0, g0, h, L0, G, H)``): the free flow carries ``from_andoyer(l0, …, H)`` from
+        ``epoch`` to ``t``. All arguments broadcast.
+
+        Examples
+        --------
+        >>> from andoyer import RigidBody
+        >>> body = RigidBody(1.0, 2.0, 3.0)
+        >>> s = State.from_initial_andoyer(body, 0.3, 0.4, 0.5, 0.9, 1.0, 0.2, epoch=1.0, t=2.5)
+        >>> a = s.as_initial_andoyer(body, 1.0, t=2.5)
+        >>> [round(float(x), 12) for x in a]
+        [0.3, 0.4, 0.5, 0.9, 1.0, 0.2]
+        """
+        from andoyer.free import FreeRotation
+
+        dt = np.asarray(t, dtype=float) - np.asarray(epoch, dtype=float)
+        return FreeRotation(_check_body(body)).propagate(cls.from_andoyer(l0, g0, h, L0, G, H), dt)
+
+    def as_serret(self, body: RigidBody, t: ArrayLike = 0.0, *, epoch: ArrayLike | None = None):
+        r"""Serret's elements ``(g0, h, t0, G, H, T, sign)`` of the state taken at time ``t``.
+
+        ``(g0, h, -t0)`` are conjugate to ``(G, H, T)``, ``T`` the kinetic energy; ``t0`` is
+        the last passage at or before ``epoch`` (default ``t``) of the body momentum through the
+        reference point ``φ_ℓ = 0`` of its polhode, ``t - t0 ≡ φ_ℓ/ω_ℓ (mod P_ℓ)``, and ``g0``
+        is ``g`` at ``t0``. See :mod:`andoyer.charts.serret` for the definitions and the
+        states where the chart is undefined (``ValueError``).
+
+        Examples
+        --------
+        >>> from andoyer import RigidBody, FreeRotation
+        >>> body = RigidBody(1.0, 2.0, 3.0)
+        >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.9, 1.0, 0.2)
+        >>> later = FreeRotation(body).propagate(s, 7.0)
+        >>> a, b = s.as_serret(body), later.as_serret(body, t=7.0, epoch=0.0)
+        >>> bool(max(abs(x - y) for x, y in zip(a, b)) < 1e-12)
+        True
+        """
+        from andoyer.charts.andoyer import hub_to_andoyer
+        from andoyer.charts.serret import andoyer_to_serret
+
+        a = hub_to_andoyer(self._q, self._m, stacklevel=2)
+        return andoyer_to_serret(_check_body(body), *a, t=t, epoch=epoch, stacklevel=3)
+
+    @classmethod
+    def from_serret(
+        cls,
+        body: RigidBody,
+        g0: ArrayLike,
+        h: ArrayLike,
+        t0: ArrayLike,
+        G: ArrayLike,
+        H: ArrayLike,
+        T: ArrayLike,
+        sign: ArrayLike = 1.0,
+        *,
+        t: ArrayLike = 0.0,
+    ) -> State:
+        """State at time ``t`` from Serret's elements; inverse of :meth:`as_serret`.
+
+        ``sign`` (``±1``) picks the orbit among the two with the same ``(G, T)``: the sign
+        of ``L`` in circulation, the lobe ``±b_e`` in libration.
+
+        Examples
+        --------
+        >>> from andoyer import RigidBody
+        >>> body = RigidBody(1.0, 2.0, 3.0)
+        >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.9, 1.0, 0.2)
+        >>> back = State.from_serret(body, *s.as_serret(body, t=2.0), t=2.0)
+        >>> bool(abs(back.m_body - s.m_body).max() < 1e-13)
+        True
+        """
+        from andoyer.charts.serret import serret_to_andoyer
+
+        return cls.from_andoyer(*serret_to_andoyer(_check_body(body), g0, h, t0, G, H, T, sign, t))
+
     def as_sam(self, body: RigidBody, mode: str = "SAM"):
         """Lara's SAM (or LAM) action–angle chart ``(sam_l, sam_g, h, sam_L, sam_G, H, sign)``.
 

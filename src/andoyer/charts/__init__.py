@@ -14,15 +14,19 @@ from andoyer.charts.andoyer import (
     inclinations,
 )
 from andoyer.charts.euler import Euler, euler_matrix
+from andoyer.charts.serret import Serret, andoyer_to_serret, serret_to_andoyer
 from andoyer.charts.singular import SingularChartWarning
 
 __all__ = [
     "Andoyer",
     "Euler",
+    "Serret",
     "SingularChartWarning",
     "andoyer_from_euler",
     "andoyer_matrix",
+    "andoyer_to_serret",
     "euler_from_andoyer",
     "euler_matrix",
     "inclinations",
+    "serret_to_andoyer",
 ]

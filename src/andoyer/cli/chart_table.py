@@ -51,6 +51,14 @@ CHARTS: dict[str, ChartColumns] = {
         lambda s, body: tuple(s.as_sadov(body)),
         needs_body=True,
     ),
+    # Serret's t0 is measured from each row's own instant (the state is taken at t = 0).
+    "serret": ChartColumns(
+        ("g0", "h", "t0", "G", "H", "T", "sign"),
+        ("g0", "h"),
+        lambda v, body: State.from_serret(body, *v),
+        lambda s, body: tuple(s.as_serret(body)),
+        needs_body=True,
+    ),
 }
 
 
