@@ -88,3 +88,18 @@ def test_cli_convert_serret_bad_sign_is_one_line_error(capsys):
     assert code == 2
     assert "expected sign = +1 or -1, got 0.5" in err
     assert len(err.strip().splitlines()) == 1
+
+
+def test_cli_propagate_to_serret_elements_are_constant(capsys):
+    code = main(
+        [
+            "propagate", "--moments", "1", "2", "3",
+            "--values", "0.1", "0.2", "0.3", "0.9", "1.0", "0.5",
+            "--range", "0", "40", "9", "--to", "serret", "--format", "csv",
+        ]
+    )  # fmt: skip
+    out = capsys.readouterr().out
+    assert code == 0
+    rows = np.loadtxt(out.splitlines()[1:], delimiter=",")
+    elements = rows[:, 2:8]  # g0, h, t0, G, H, T
+    assert np.ptp(elements, axis=0).max() <= 1e-11

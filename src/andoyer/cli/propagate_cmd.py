@@ -91,7 +91,12 @@ def run(args: argparse.Namespace) -> int:
         out = FreeRotation(body).propagate(state.reshape(1, -1), times[:, None])
     else:
         out = propagate(model, state.reshape(1, -1), times[:, None], method=method, **options)
-    values = [np.asarray(v, dtype=float) for v in target.from_state(out, body)]
+    if target is CHARTS["serret"]:
+        # Serret's t0 is a time: referred to the rows' own times with the start (t = 0) as the
+        # epoch of the period branch, so the elements stay constant down the table.
+        values = [np.asarray(v, dtype=float) for v in out.as_serret(body, t=times[:, None], epoch=0.0)]
+    else:
+        values = [np.asarray(v, dtype=float) for v in target.from_state(out, body)]
     n_states = state.size
     rows = [
         [float(times[i]), j, *(float(v[i, j]) for v in values)]
