@@ -44,9 +44,13 @@ def rng() -> np.random.Generator:
 # --- ensembles (tests/ensemble) ---
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope="module")
 def loopback_cluster():
-    """Two single-threaded workers in this process, scheduler on 127.0.0.1 at a random port (TCP)."""
+    """Two single-threaded workers in this process, scheduler on 127.0.0.1 at a random port (TCP).
+
+    Module-scoped: the cluster's threads draw from the global ``random`` module, which
+    hypothesis (rightly) reports as flaky data generation if they outlive the ensemble tests.
+    """
     from distributed import LocalCluster
 
     with LocalCluster(
