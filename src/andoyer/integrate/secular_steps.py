@@ -11,21 +11,26 @@ constant rate ``c_p (M·k_p)``, by the angle ``θ = c_p (M·k_p) h`` in a time `
 (Rodrigues: ``M cos θ + k×M sin θ + k (k·M)(1 − cos θ)``, with
 ``1 − cos θ = 2 sin²(θ/2)`` for accuracy at small angles). Time is split off as a
 flow of its own, ``t → t + h`` at fixed ``M``. The perturbers whose normal does not
-move (no node drift, or no inclination) and all share one normal ``k₀`` commute with
-that time flow and with each other; together with it they form the *outer* flow
-``A``, a rotation about ``k₀`` at the rate ``(Σ c_p)(M·k₀)``. The others ``B_1 … B_m``
-are rotations about their normals at the current time. The symmetric Strang step
+move (no node drift, or no inclination) and equals that of the first such perturber,
+``k₀``, commute with that time flow and with each other; together with it they form the
+*outer* flow ``A``, a rotation about ``k₀`` at the rate ``(Σ c_p)(M·k₀)``. The others
+``B_1 … B_m`` (drifting, or fixed about another normal) are rotations about their
+normals at the current time. The symmetric Strang step
 
 .. math:: S(h) = A(\tfrac h2)\,B_1(\tfrac h2)\cdots B_{m-1}(\tfrac h2)\,B_m(h)\,
    B_{m-1}(\tfrac h2)\cdots B_1(\tfrac h2)\,A(\tfrac h2)
 
 is of order 2; the palindromic compositions ``S(γ_s h)⋯S(γ_1 h)`` of
 :data:`COMPOSITIONS` raise it to 4, 6 or 8. Consecutive ``A`` halves merge (``A`` is
-a one-parameter group), so a step of ``s`` stages costs ``s (2m) `` rotations about
-the drifting normals and ``s`` about ``k₀``. Every rotation conserves ``|M|``; the
-kernel also rescales ``M`` to ``G`` after each step so that round-off cannot
-accumulate in it. With no drifting normal (Mars and the Sun) the outer flow is the
-whole flow and one rotation per output interval is exact.
+a one-parameter group), so a step of ``s`` stages costs ``s (2m − 1)`` rotations about
+the ``B`` normals and ``s`` about ``k₀``. Every rotation conserves ``|M|``; the kernel
+also rescales ``M`` to ``G`` after each step so that round-off cannot accumulate in it.
+With no ``B`` (Mars and the Sun) the outer flow is the whole flow and one rotation to
+each output is exact.
+
+The steps are equal and span ``[0, t_K]``; every output time is reached by one partial
+step off the grid (order ``p`` accurate, and not fed back), so dense outputs cost one
+step each and do not shorten the grid's step.
 
 The loop is compiled by :func:`andoyer.free.lean.jit` when numba is installed; the
 same source runs interpreted on arrays of states (one Python loop over the steps).
