@@ -37,6 +37,7 @@ from scipy.integrate import solve_ivp
 from andoyer import _quaternion as quat
 from andoyer._validation import as_finite, as_vectors
 from andoyer.body import RigidBody
+from andoyer.integrate.secular_steps import COMPOSITIONS, propagate_controlled
 from andoyer.perturbations.gravity import PointMass
 from andoyer.perturbations.orbits import KeplerOrbit
 
@@ -141,10 +142,55 @@ class SecularGravityGradient:
             total = total + 2 * self._strength(p, L, G) * nk * dnk_dH
         return total
 
-    def propagate_momentum(self, M0: ArrayLike, L: ArrayLike, t: ArrayLike, rtol: float = 1e-12) -> Array:
+    def propagate_momentum(
+        self,
+        M0: ArrayLike,
+        L: ArrayLike,
+        t: ArrayLike,
+        rtol: float = 1e-12,
+        method: str = "rotations",
+        order: int = 8,
+        max_step: float | None = None,
+    ) -> Array:
         """Integrate ``dM/dt`` from ``t = 0`` to the times ``t`` (1-D, increasing), shape (len(t), ..., 3).
 
-        DOP853 steps over years: the model has no fast angle left.
+        Parameters
+        ----------
+        M0 : array_like, shape (..., 3)
+            Reference-frame angular momenta at ``t = 0``.
+        L : array_like, shape (...)
+            ``L = M·b3`` (constant in the averaged model).
+        t : array_like, shape (K,)
+            Output times, non-negative and increasing.
+        rtol : float
+            Relative tolerance: DOP853's (per step), or for ``"rotations"`` the target
+            relative global error of ``M``, met by Richardson's estimate
+            (:func:`~andoyer.integrate.secular_steps.propagate_controlled`).
+        method : {"rotations", "dop853"}
+            ``"rotations"`` (default): palindromic composition of the exact rotations
+            about each ``k_p`` (:mod:`andoyer.integrate.secular_steps`), fixed steps of
+            up to two radians of the fastest rate (years for the planets), ``|M|``
+            conserved to round-off. ``"dop853"``: scipy's adaptive DOP853.
+        order : {2, 4, 6, 8}
+            Order of the composition (``"rotations"`` only).
+        max_step : float, optional
+            Upper bound on the step (``"rotations"`` only; same units as ``t``).
+
+        Returns
+        -------
+        numpy.ndarray, shape (K, ..., 3)
+
+        Examples
+        --------
+        >>> from andoyer import bodies
+        >>> from andoyer.perturbations.solar_system import JULIAN_YEAR, OBLIQUITY, mean_perturbers
+        >>> earth = bodies.get("earth")
+        >>> model = SecularGravityGradient(earth, mean_perturbers("earth"))
+        >>> G = earth.C * 2 * np.pi / 86164.0905
+        >>> M0 = G * np.array([0.0, -np.sin(OBLIQUITY["earth"]), np.cos(OBLIQUITY["earth"])])
+        >>> M = model.propagate_momentum(M0, G, [100 * JULIAN_YEAR])
+        >>> round(float(np.arctan2(M[0, 0], -M[0, 1]) * 206264.806 / 100), 2)  # arcsec per year
+        -50.35
         """
         M0 = as_vectors(M0, "M0")
         L = np.broadcast_to(as_finite(L, "L"), M0.shape[:-1])
@@ -152,6 +198,54 @@ class SecularGravityGradient:
         if times.ndim != 1 or np.any(np.diff(times) < 0) or times[0] < 0:
             msg = "expected increasing, non-negative output times (1-D), got another array"
             raise ValueError(msg)
+        if method == "dop853":
+            return self._propagate_dop853(M0, L, times, rtol)
+        if method != "rotations":
+            msg = f"expected method 'rotations' or 'dop853', got {method!r}"
+            raise ValueError(msg)
+        if order not in COMPOSITIONS:
+            msg = f"expected order in {sorted(COMPOSITIONS)}, got {order!r}"
+            raise ValueError(msg)
+        if not rtol > 0 or (max_step is not None and not max_step > 0):
+            msg = f"expected positive rtol and max_step, got {rtol!r} and {max_step!r}"
+            raise ValueError(msg)
+        shape = M0.shape
+        M = M0.reshape(-1, 3)
+        G = np.linalg.norm(M, axis=-1)
+        coef = np.array([2 * self._strength(p, L.reshape(-1), G) / G**2 for p in self.perturbers])
+        outer, inner = self._split_normals()
+        k0 = self._normal(self.perturbers[outer[0]], 0.0) if outer else np.array([0.0, 0.0, 1.0])
+        c0 = coef[outer].sum(axis=0) if outer else np.zeros(len(M))
+        orbits = [self.perturbers[i].orbit for i in inner]
+        normals = (
+            np.array([np.sin(o.inclination) for o in orbits]),
+            np.array([np.cos(o.inclination) for o in orbits]),
+            np.array([o.node - o.node_rate * o.epoch for o in orbits]),
+            np.array([o.node_rate for o in orbits]),
+        )
+        fastest = max([float(np.max(np.abs(coef) * G, initial=0.0)), *np.abs(normals[3])], default=0.0)
+        drifting = coef[inner].reshape(len(inner), len(M))
+        bound = np.inf if max_step is None else float(max_step)
+        out, _ = propagate_controlled(M, c0, k0, drifting, normals, times, fastest, rtol, order, bound)
+        return out.reshape((len(times), *shape))
+
+    def _split_normals(self) -> tuple[list[int], list[int]]:
+        """Perturbers about one fixed normal (the outer flow) and the rest (drifting or not)."""
+        outer: list[int] = []
+        inner: list[int] = []
+        first = None
+        for i, p in enumerate(self.perturbers):
+            fixed = p.orbit.node_rate == 0 or np.sin(p.orbit.inclination) == 0
+            k = self._normal(p, 0.0)
+            if fixed and (first is None or np.array_equal(k, first)):
+                first = k
+                outer.append(i)
+            else:
+                inner.append(i)
+        return outer, inner
+
+    def _propagate_dop853(self, M0: Array, L: Array, times: Array, rtol: float) -> Array:
+        """DOP853 steps over years: the model has no fast angle left."""
         shape = M0.shape
 
         def rhs(time: float, y: Array) -> Array:
