@@ -31,7 +31,7 @@ if TYPE_CHECKING:
 
 __all__ = ["PoissonRing"]
 
-_FLINT_ORDER = "deglex"
+_FLINT_ORDER = "lex"
 
 
 def _check_names(kind: str, names: Iterable[str]) -> tuple[str, ...]:
