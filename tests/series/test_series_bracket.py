@@ -179,12 +179,10 @@ def naive_bracket(f, g):
     merged: dict = {}
     for c, e, kind, k in out:  # canonical harmonic: first nonzero entry positive
         sign = next((1 if v > 0 else -1 for v in k if v), 0)
-        if sign < 0:
-            k = tuple(-v for v in k)
-            c = -c if kind == "sin" else c
         if kind == "sin" and sign == 0:
             continue
-        merged[(e, kind, k)] = merged.get((e, kind, k), 0) + c
+        key = (e, kind, tuple(-v for v in k) if sign < 0 else k)
+        merged[key] = merged.get(key, 0) + (-c if sign < 0 and kind == "sin" else c)
     return ring.from_terms([(c, e, kind, k) for (e, kind, k), c in merged.items() if c])
 
 
