@@ -2,15 +2,10 @@
 
 from __future__ import annotations
 
+from functools import lru_cache
 from typing import TYPE_CHECKING, Any
 
-from andoyer.series.algebra import (
-    Comps,
-    accumulate_products,
-    reduce_overlaps,
-    scaled,
-    times_i,
-)
+from andoyer.series.algebra import Comps, Shift, times_i
 
 if TYPE_CHECKING:
     from andoyer.series.poisson import PoissonSeries
@@ -27,14 +22,14 @@ def _relation_variables(ring: PoissonRing) -> set[str]:
     return names
 
 
-def _euler(f: PoissonSeries, name: str) -> Comps:
+def _euler_index(f: PoissonSeries, i: int) -> Comps:
     """Shift-preserving derivative: ``x ∂f/∂x`` for a polynomial variable, ``∂f/∂θ`` for an angle.
 
     On ``x^a P`` the Euler operator gives ``x^a (a P + x ∂P/∂x)`` and on ``z^a P``
     (``z = e^{iθ}``) the angle derivative gives ``i z^a (a P + z ∂P/∂z)``: the shift stays.
+    ``i`` indexes the flint variables (free polynomial variables, then one ``z`` per angle).
     """
     ring = f.ring
-    i = ring._index[name]
     a = f._shift[i]
     gen = ring._ctx.gens()[i]
     comps = {}
@@ -88,12 +83,46 @@ def derivative(f: PoissonSeries, name: str) -> PoissonSeries:
     if not f._comps:
         return f
     i = ring._index[name]
-    comps = _euler(f, name)
+    comps = _euler_index(f, i)
     if i >= ring._nfree:
         return f._new(f._shift, comps)
     shift = list(f._shift)
     shift[i] -= 1
     return f._new(tuple(shift), comps)
+
+
+@lru_cache(maxsize=64)
+def _bracket_layout(ring: PoissonRing) -> tuple[Shift, tuple[tuple[Shift, int, int], ...]]:
+    """Common denominator monomial and, per canonical pair, ``(rest, index of q, index of p)``.
+
+    With shift-preserving derivatives (``∂/∂θ``, or ``x ∂/∂x``) the pair ``(q, p)`` contributes
+    ``(D_q f D_p g − D_p f D_q g) / (p q)`` (``q`` only for a polynomial coordinate); over the
+    common denominator ``M = Π p q`` its numerator is multiplied by ``rest = M / (p q)``.
+    """
+    nvars = len(ring._zero_shift)
+    denoms = []
+    for q, p in ring.pairs:
+        d = [0] * nvars
+        d[ring._index[p]] += 1
+        if q not in ring.angles:
+            d[ring._index[q]] += 1
+        denoms.append(d)
+    total = tuple(sum(col) for col in zip(*denoms, strict=True)) if denoms else ring._zero_shift
+    layout = tuple(
+        (tuple(t - x for t, x in zip(total, d, strict=True)), ring._index[q], ring._index[p])
+        for d, (q, p) in zip(denoms, ring.pairs, strict=True)
+    )
+    return total, layout
+
+
+def _pairwise_sum(polys: list[Any]) -> Any:
+    """Sum by halving rounds: each term is merged about log2(len) times, not len/2 times."""
+    while len(polys) > 1:
+        merged = [polys[i] + polys[i + 1] for i in range(0, len(polys) - 1, 2)]
+        if len(polys) % 2:
+            merged.append(polys[-1])
+        polys = merged
+    return polys[0]
 
 
 def poisson_bracket(f: PoissonSeries, g: PoissonSeries) -> PoissonSeries:
@@ -122,27 +151,33 @@ def poisson_bracket(f: PoissonSeries, g: PoissonSeries) -> PoissonSeries:
     ring.check(g)
     if not f._comps or not g._comps:
         return ring.zero
-    # With shift-preserving derivatives D (∂/∂θ, or x ∂/∂x = x · ∂/∂x) every product has the
-    # shift of f·g; the division by the momenta (and polynomial coordinates) is one monomial
-    # M, folded into the left factors so that all products land in one accumulator.
-    nvars = len(ring._zero_shift)
-    denom = [[0] * nvars for _ in ring.pairs]
-    for j, (q, p) in enumerate(ring.pairs):
-        denom[j][ring._index[p]] += 1
-        if q not in ring.angles:
-            denom[j][ring._index[q]] += 1
-    total = [sum(col) for col in zip(*denom, strict=True)] if denom else [0] * nvars
-    acc: dict[tuple[int, int], Any] = {}
-    for j, (q, p) in enumerate(ring.pairs):
-        fq, gp = _euler(f, q), _euler(g, p)
-        fp, gq = _euler(f, p), _euler(g, q)
-        rest = tuple(t - d for t, d in zip(total, denom[j], strict=True))
-        if fq and gp:
-            accumulate_products(acc, scaled(ring, fq, rest), gp)
-        if fp and gq:
-            minus = {m: -poly for m, poly in fp.items()}
-            accumulate_products(acc, scaled(ring, minus, rest), gq)
-    if not acc:
+    total, layout = _bracket_layout(ring)
+    # Every product of shift-preserving derivatives has the shift of f·g, so all products of all
+    # pairs are summed in flint over the common denominator monomial.  The cost is in the large
+    # products and their sums: the sign, the overlap factor of the basis (i² = −1, g_j² = D_j)
+    # and the monomial ``rest`` are folded into the short left factors, each product goes
+    # straight to its result component, and each component is summed pairwise.
+    by_mask: dict[int, list[Any]] = {}
+    for rest, iq, ip in layout:
+        for left, right, sign in (
+            (_euler_index(f, iq), _euler_index(g, ip), 1),
+            (_euler_index(f, ip), _euler_index(g, iq), -1),
+        ):
+            if not left or not right:
+                continue
+            mono = ring._ctx.term(exp_vec=rest) * sign if any(rest) or sign < 0 else None
+            for ma, pa in left.items():
+                scaled_a = pa * mono if mono is not None else pa
+                for mb, pb in right.items():
+                    overlap = ma & mb
+                    factor = scaled_a
+                    if overlap == 1:
+                        factor = -scaled_a
+                    elif overlap:
+                        factor = scaled_a * ring.overlap_factor(overlap)
+                    by_mask.setdefault(ma ^ mb, []).append(factor * pb)
+    if not by_mask:
         return ring.zero
+    comps = {m: _pairwise_sum(ps) for m, ps in by_mask.items()}
     shift = tuple(a + b - t for a, b, t in zip(f._shift, g._shift, total, strict=True))
-    return f._new(shift, reduce_overlaps(ring, acc))
+    return f._new(shift, comps)
