@@ -1,10 +1,13 @@
-r"""Reference integration: DOP853 on the attitude quaternion and the body angular momentum.
+r"""Reference integration: DOP853 or heyoka on the attitude quaternion and the body angular momentum.
 
-The state vector of ``N`` bodies is integrated as one system of ``7N``
-equations (:func:`andoyer.perturbations.perturbed_rates`, free part written
-without cancellation), with dense output to reach every requested time. The
-quaternion is renormalised on output only: the flow preserves ``|q|`` and
-DOP853's error control keeps the drift at the tolerance.
+The hub equations (:func:`andoyer.perturbations.perturbed_rates`, free part
+``ṁ_1 = c_1 m_2 m_3`` written without cancellation, ``q̇ = ½ q ⊗ (ω, 0)``
+scalar last). With DOP853 the state vector of ``N`` bodies is integrated as
+one system of ``7N`` equations with dense output to reach every requested
+time. With heyoka (:mod:`andoyer.integrate.reference_heyoka`) each body has
+its own Taylor integration, compiled once per model structure, in SIMD
+batches. The quaternion is renormalised on output only: the flow preserves
+``|q|`` and the error control keeps the drift at the tolerance.
 """
 
 from __future__ import annotations
@@ -46,7 +49,7 @@ def integrate_reference(
     atol: float | None = None,
     method: str = "dop853",
 ) -> State:
-    """Propagate ``state`` (at time ``t0``) under ``model`` to times ``t`` with DOP853.
+    """Propagate ``state`` (at time ``t0``) under ``model`` to times ``t`` with DOP853 or heyoka.
 
     Parameters
     ----------
@@ -56,13 +59,25 @@ def integrate_reference(
         Output times; they broadcast with the state's shape.
     t0 : float
         Time of ``state``.
-    rtol, atol : float
-        DOP853 tolerances; ``atol`` applies to quaternion components and,
-        scaled by the largest ``|m|``, to the momenta.
+    rtol, atol : float, optional
+        DOP853 tolerances, default ``1e-12`` and ``1e-14``; ``atol`` applies to
+        quaternion components and, scaled by the largest ``|m|``, to the
+        momenta. For heyoka, ``rtol`` is its single tolerance (default: machine
+        epsilon; quaternion and ``m/max|m|`` alike) and ``atol`` must be ``None``.
+    method : {"dop853", "heyoka"}
+        scipy's DOP853 (any model), or heyoka's Taylor integrator (optional
+        dependency; gravity gradients of Kepler and circular orbits,
+        constant-rate precessing frames, heavy tops and linear damping).
 
     Returns
     -------
     State, shape broadcast(S..., T...)
+
+    Raises
+    ------
+    ValueError
+        For bad input, an unknown method, heyoka missing, a model heyoka cannot
+        express, or a failed integration.
 
     Examples
     --------
