@@ -310,10 +310,10 @@ def _propagate_heyoka(
     -------
     q, m : numpy.ndarray, shapes (T, N, 4) and (T, N, 3)
     """
-    hy = _heyoka_module()
     n = q0.shape[0]
     scale = max(float(np.max(np.linalg.norm(m0, axis=-1), initial=0.0)), np.finfo(float).tiny)
-    system, pars = heyoka_system(model, scale)
+    system, pars = heyoka_system(model, scale)  # refuses unsupported models before needing heyoka
+    hy = _heyoka_module()
     y0 = np.concatenate([q0, m0 / scale], axis=-1)
     grid = np.concatenate([[t0], targets])
     batch = hy.recommended_simd_size() if n > 1 else 1
