@@ -51,6 +51,7 @@ sys.path.insert(0, str(ROOT / "src"))
 from andoyer import State, bodies  # noqa: E402
 from andoyer.free.lean import NUMBA  # noqa: E402
 from andoyer.integrate import integrate_reference  # noqa: E402
+from andoyer.integrate.reference_heyoka import heyoka_system  # noqa: E402
 from andoyer.integrate.secular import SecularGravityGradient  # noqa: E402
 from andoyer.integrate.splitting import integrate_splitting  # noqa: E402
 from andoyer.perturbations import GravityGradient, Model  # noqa: E402
@@ -110,57 +111,14 @@ def secular_h(years, rtol=1e-12, method="rotations"):
 
 
 def heyoka_integrator(tol):  # pragma: no cover - optional
-    """Quaternion + body momentum under Sun and Moon, time in days (compiled once per tol)."""
-    qx, qy, qz, qw, m1, m2, m3 = hy.make_vars("qx", "qy", "qz", "qw", "m1", "m2", "m3")
-    I1, I2, I3 = (float(v) for v in EARTH.moments)
-    w = m1 / I1, m2 / I2, m3 / I3
-    t = hy.time
-    torque = [0.0, 0.0, 0.0]
-    for p in PERTURBERS:
-        o = p.orbit
-        mean = o.mean_anomaly + o.mean_motion * DAY * (t - o.epoch / DAY)
-        E = hy.kepE(o.eccentricity, mean)
-        a, e = o.semi_major_axis, o.eccentricity
-        x = a * (hy.cos(E) - e)
-        y = a * np.sqrt((1 - e) * (1 + e)) * hy.sin(E)
-        Om = o.node + o.node_rate * DAY * t
-        om = o.periapsis + o.periapsis_rate * DAY * t
-        cO, sO, cw, sw = hy.cos(Om), hy.sin(Om), hy.cos(om), hy.sin(om)
-        ci, si = np.cos(o.inclination), np.sin(o.inclination)
-        r = [
-            (cO * cw - sO * ci * sw) * x + (-cO * sw - sO * ci * cw) * y,
-            (sO * cw + cO * ci * sw) * x + (-sO * sw + cO * ci * cw) * y,
-            si * sw * x + si * cw * y,
-        ]
-        # ρ = Rᵀ r with R the rotation of q
-        u = (-qx, -qy, -qz)
-        tt = [
-            2 * (u[1] * r[2] - u[2] * r[1]),
-            2 * (u[2] * r[0] - u[0] * r[2]),
-            2 * (u[0] * r[1] - u[1] * r[0]),
-        ]
-        rho = [
-            r[0] + qw * tt[0] + (u[1] * tt[2] - u[2] * tt[1]),
-            r[1] + qw * tt[1] + (u[2] * tt[0] - u[0] * tt[2]),
-            r[2] + qw * tt[2] + (u[0] * tt[1] - u[1] * tt[0]),
-        ]
-        r2 = rho[0] ** 2 + rho[1] ** 2 + rho[2] ** 2
-        scale = 3 * p.gm * DAY**2 * r2 ** (-2.5)
-        torque[0] = torque[0] + scale * (I3 - I2) * rho[1] * rho[2]
-        torque[1] = torque[1] + scale * (I1 - I3) * rho[2] * rho[0]
-        torque[2] = torque[2] + scale * (I2 - I1) * rho[0] * rho[1]
-    c1, c2, c3 = (I2 - I3) / (I2 * I3), (I3 - I1) / (I3 * I1), (I1 - I2) / (I1 * I2)
-    sys_ = [
-        (qx, 0.5 * (qw * w[0] + qy * w[2] - qz * w[1])),
-        (qy, 0.5 * (qw * w[1] + qz * w[0] - qx * w[2])),
-        (qz, 0.5 * (qw * w[2] + qx * w[1] - qy * w[0])),
-        (qw, -0.5 * (qx * w[0] + qy * w[1] + qz * w[2])),
-        (m1, c1 * m2 * m3 + torque[0]),
-        (m2, c2 * m3 * m1 + torque[1]),
-        (m3, c3 * m1 * m2 + torque[2]),
-    ]
+    """Quaternion + body momentum under Sun and Moon, time in days (compiled once per tol).
+
+    The library's formulation (:func:`andoyer.integrate.reference_heyoka.heyoka_system`,
+    orbits through ``kepE``), with momenta held as ``m·DAY``.
+    """
+    system, pars = heyoka_system(MODEL, scale=1 / DAY, time_unit=DAY)
     y0 = [*START.quaternion.tolist(), *(START.m_body * DAY).tolist()]
-    return hy.taylor_adaptive(sys_, y0, tol=tol, compact_mode=True)
+    return hy.taylor_adaptive(system, y0, pars=pars, tol=tol, compact_mode=True)
 
 
 def heyoka_h(ta, years):  # pragma: no cover - optional

@@ -139,7 +139,7 @@ BAD_CALLS = {
     "unknown method": ({"method": "rk4"}, "expected method 'reference', 'splitting' or 'secular', got 'rk4'"),
     "option of another method": (
         {"method": "reference", "step": 0.1},
-        "expected options of method='reference' among t0, rtol, atol, got step",
+        "expected options of method='reference' among t0, rtol, atol, integrator, got step",
     ),
     "secular order": ({"method": "secular", "order": 4}, "among t0, rtol, got order"),
     "missing step": ({"method": "splitting"}, "expected a step for method='splitting'"),

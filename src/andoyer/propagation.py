@@ -2,10 +2,12 @@ r"""One entry point for perturbed propagation: ``andoyer.propagate(model, state,
 
 Three integrators, one call:
 
-* ``"reference"`` (options ``t0``, ``rtol``, ``atol``): the full equations
-  ``q̇ = ½ q ⊗ (∂K/∂m, 0)``, ``ṁ = m × ∂K/∂m + τ`` with adaptive DOP853
-  (:func:`~andoyer.integrate.integrate_reference`); every model, dissipative
-  torques included.
+* ``"reference"`` (options ``t0``, ``rtol``, ``atol``, ``integrator``): the
+  full equations ``q̇ = ½ q ⊗ (∂K/∂m, 0)``, ``ṁ = m × ∂K/∂m + τ`` with adaptive
+  DOP853 (:func:`~andoyer.integrate.integrate_reference`); every model,
+  dissipative torques included. ``integrator="heyoka"`` uses heyoka's Taylor
+  integrator instead (optional dependency) for gravity gradients on Kepler
+  orbits, constant-rate precessing frames, heavy tops and linear damping.
 * ``"splitting"`` (options ``step``, required, ``order``, ``t0``): the
   symplectic splitting ``K = T + V + F`` of exact free flow, momentum kicks
   and frame rotations (:func:`~andoyer.integrate.splitting.integrate_splitting`);
@@ -42,7 +44,7 @@ __all__ = ["METHODS", "propagate"]
 
 #: The options each method accepts (``step`` is required by ``"splitting"``).
 METHODS: dict[str, tuple[str, ...]] = {
-    "reference": ("t0", "rtol", "atol"),
+    "reference": ("t0", "rtol", "atol", "integrator"),
     "splitting": ("step", "order", "t0"),
     "secular": ("t0", "rtol"),
 }
@@ -82,7 +84,9 @@ def propagate(model: Model, state: State, t: ArrayLike, method: str = "reference
         See :mod:`andoyer.propagation`.
     **options
         ``t0`` (float, default 0) for every method; ``rtol``, ``atol`` for
-        ``"reference"`` (DOP853, defaults 1e-12, 1e-14); ``step`` (required,
+        ``"reference"`` (DOP853, defaults 1e-12, 1e-14) and ``integrator``
+        (``"dop853"``, default, or ``"heyoka"``: ``rtol`` is then heyoka's
+        tolerance, default machine epsilon, and ``atol`` is not taken); ``step`` (required,
         > 0) and ``order`` (2, 4 or 6, default 4) for ``"splitting"``;
         ``rtol`` (default 1e-12) for ``"secular"``.
 
@@ -132,7 +136,8 @@ def propagate(model: Model, state: State, t: ArrayLike, method: str = "reference
         msg = f"expected an andoyer State, got {type(state).__name__}"
         raise ValueError(msg)
     if method == "reference":
-        return integrate_reference(model, state, t, **options)
+        integrator = options.pop("integrator", "dop853")
+        return integrate_reference(model, state, t, **options, method=integrator)
     if method == "splitting":
         if "step" not in options:
             msg = "expected a step for method='splitting' (e.g. step=0.01), got none"
