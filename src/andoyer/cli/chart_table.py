@@ -77,3 +77,26 @@ def body_from_args(args: argparse.Namespace) -> RigidBody:
         return bodies.get(args.body)
     msg = "expected --body NAME or --moments I1 I2 I3 for this chart, got neither"
     raise CliError(msg)
+
+
+def add_time_arguments(parser: argparse.ArgumentParser) -> None:
+    """``--times T ...`` or ``--range START STOP COUNT`` (one of them required)."""
+    when = parser.add_mutually_exclusive_group(required=True)
+    when.add_argument("--times", nargs="+", type=float, metavar="T")
+    when.add_argument("--range", nargs=3, type=float, metavar=("START", "STOP", "COUNT"))
+
+
+def times_from_args(args: argparse.Namespace) -> np.ndarray:
+    """The output times of :func:`add_time_arguments`, checked finite."""
+    if args.range is not None:
+        start, stop, count = args.range
+        if count < 1 or count != int(count):
+            msg = f"expected a positive integer COUNT in --range, got {count!r}"
+            raise CliError(msg)
+        times = np.linspace(start, stop, int(count))
+    else:
+        times = np.asarray(args.times, dtype=float)
+    if not np.all(np.isfinite(times)):
+        msg = f"expected finite times, got {times.tolist()!r}"
+        raise CliError(msg)
+    return times

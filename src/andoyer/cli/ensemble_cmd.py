@@ -4,9 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-import numpy as np
-
-from andoyer.cli.chart_table import add_body_arguments, body_from_args
+from andoyer.cli.chart_table import add_body_arguments, add_time_arguments, body_from_args, times_from_args
 from andoyer.cli.output import CliError
 
 EXAMPLES = """examples:
@@ -31,9 +29,7 @@ def register(commands: argparse._SubParsersAction) -> None:
     )
     add_body_arguments(parser)
     parser.add_argument("--samples", type=int, required=True, metavar="N", help="number of initial states")
-    when = parser.add_mutually_exclusive_group(required=True)
-    when.add_argument("--times", nargs="+", type=float, metavar="T")
-    when.add_argument("--range", nargs=3, type=float, metavar=("START", "STOP", "COUNT"))
+    add_time_arguments(parser)
     parser.add_argument("--out", required=True, metavar="FILE", help="FILE.zarr or FILE.nc")
     parser.add_argument("--chunk", type=int, metavar="K", help="samples per chunk (default ~2^20 pairs)")
     parser.add_argument("--workers", type=int, default=2, metavar="W", help="local cluster workers")
@@ -48,21 +44,6 @@ def register(commands: argparse._SubParsersAction) -> None:
     parser.add_argument("--m-high", nargs=3, type=float, default=(1.0, 1.0, 1.0), metavar="M")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.set_defaults(run=run)
-
-
-def _times(args: argparse.Namespace) -> np.ndarray:
-    if args.range is not None:
-        start, stop, count = args.range
-        if count < 1 or count != int(count):
-            msg = f"expected a positive integer COUNT in --range, got {count!r}"
-            raise CliError(msg)
-        times = np.linspace(start, stop, int(count))
-    else:
-        times = np.asarray(args.times, dtype=float)
-    if not np.all(np.isfinite(times)):
-        msg = f"expected finite times, got {times.tolist()!r}"
-        raise CliError(msg)
-    return times
 
 
 def run(args: argparse.Namespace) -> int:
@@ -83,7 +64,7 @@ def run(args: argparse.Namespace) -> int:
     run_ensemble(
         sampler,
         args.samples,
-        _times(args),
+        times_from_args(args),
         body=body,
         out=args.out,
         chunk=args.chunk,

@@ -6,7 +6,13 @@ import argparse
 
 import numpy as np
 
-from andoyer.cli.chart_table import CHARTS, add_body_arguments, body_from_args
+from andoyer.cli.chart_table import (
+    CHARTS,
+    add_body_arguments,
+    add_time_arguments,
+    body_from_args,
+    times_from_args,
+)
 from andoyer.cli.named_models import MODELS, add_model_arguments, model_from_args
 from andoyer.cli.output import CliError, atomic_output, format_rows, read_csv_columns
 from andoyer.free import FreeRotation
@@ -47,9 +53,7 @@ def register(commands: argparse._SubParsersAction) -> None:
     given = parser.add_mutually_exclusive_group(required=True)
     given.add_argument("--values", nargs="+", type=float, metavar="X", help="one state, in column order")
     given.add_argument("--input", metavar="CSV", help="CSV file with a header naming the columns")
-    when = parser.add_mutually_exclusive_group(required=True)
-    when.add_argument("--times", nargs="+", type=float, metavar="T")
-    when.add_argument("--range", nargs=3, type=float, metavar=("START", "STOP", "COUNT"))
+    add_time_arguments(parser)
     parser.add_argument("--format", choices=("table", "csv"), default="table")
     parser.add_argument("--output", metavar="FILE")
     parser.set_defaults(run=run)
@@ -75,17 +79,7 @@ def run(args: argparse.Namespace) -> int:
         columns = {c: np.array([v]) for c, v in zip(source.columns, args.values, strict=True)}
     else:
         columns = read_csv_columns(args.input, source.columns)
-    if args.range is not None:
-        start, stop, count = args.range
-        if count < 1 or count != int(count):
-            msg = f"expected a positive integer COUNT in --range, got {count!r}"
-            raise CliError(msg)
-        times = np.linspace(start, stop, int(count))
-    else:
-        times = np.asarray(args.times, dtype=float)
-    if not np.all(np.isfinite(times)):
-        msg = f"expected finite times, got {times.tolist()!r}"
-        raise CliError(msg)
+    times = times_from_args(args)
     state = source.to_state([columns[c] for c in source.columns], body)
     if method == "exact":
         out = FreeRotation(body).propagate(state.reshape(1, -1), times[:, None])
