@@ -28,6 +28,8 @@ from andoyer.free import series
 from andoyer.free import triaxial as _tri
 from andoyer.free import uniform as _uni
 from andoyer.free.blocks import Group, evaluate_blocks
+from andoyer.free.compiled_setup import triaxial_constants
+from andoyer.free.lean import NUMBA
 from andoyer.free.regime import Regime, check_inputs, classify, normalise, polhode_frame
 
 __all__ = ["FreeMotion", "FreePeriods", "attitude", "momentum", "periods", "propagate"]
@@ -125,20 +127,26 @@ class FreeMotion:
         spin = triax & (zeros >= 2)
         sep = (regime == Regime.SEPARATRIX) & ~spin
         tri = triax & ~sep & ~spin
-        frame = None
+        const = None
         if np.any(tri):
             idx = np.nonzero(tri)[0]
-            frame = polhode_frame(moments[idx], m0[idx], regime[idx] == Regime.LAM)
-            flat = frame.P1[0] == 0
+            qi = None if q0 is None else q0[idx]
+            if NUMBA:  # the same constants, one compiled loop over the bodies
+                const, flat = triaxial_constants(moments[idx], m0[idx], regime[idx] == Regime.LAM, qi)
+            else:
+                frame = polhode_frame(moments[idx], m0[idx], regime[idx] == Regime.LAM)
+                flat = frame.P1[0] == 0
             if np.any(flat):  # a wobble whose square underflows (|m⊥| < 1e-154 |m|)
                 spin[idx[flat]] = True  # is a steady spin
                 tri[idx[flat]] = False
                 idx = idx[~flat]
-                frame = polhode_frame(moments[idx], m0[idx], regime[idx] == Regime.LAM)
+                if not NUMBA:
+                    frame = polhode_frame(moments[idx], m0[idx], regime[idx] == Regime.LAM)
+            if not NUMBA:
+                const = _tri.triaxial(frame, None if q0 is None else q0[idx])
         uni = ~triax | spin
 
         if np.any(tri):
-            const = _tri.triaxial(frame, None if q0 is None else q0[idx])
             period[idx] = const.period
             rate[idx] = const.precession_rate
             for kind in (True, False):

@@ -1,0 +1,348 @@
+"""The constants of the triaxial solution, built body by body in one compiled loop.
+
+:func:`andoyer.free.triaxial.triaxial` forms the constants of many bodies with numpy:
+a few hundred passes over the arrays, most of them double-double arithmetic (the working
+frame and invariants of :func:`andoyer.free.regime.polhode_frame`, ``K`` and ``Π`` by the
+AGM, the frequencies), about 10 µs a body.  Here the same formulas, in the same order
+and the same double-double arithmetic (:mod:`andoyer.free.scalar_dd`), run per body in
+a numba kernel; ``K`` is taken from the AGM sequence of ``Π`` (the same sequence), the
+``ψ`` offset from the series at ``τ₀`` directly.  The result is a
+:class:`andoyer.free.triaxial.Triaxial` equal to the numpy one to a few ulps, for the
+numpy evaluation kernels.  :class:`andoyer.free.FreeMotion` uses it when numba is
+installed (:data:`andoyer.free.lean.NUMBA`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from andoyer.free.lean import carlson_rf, jit
+from andoyer.free.phase import Frequency
+from andoyer.free.scalar_dd import dd_add, dd_div, dd_mul, dd_sqrt, ellippi_dd, split, two_prod, two_sum
+from andoyer.free.triaxial import Triaxial
+
+__all__ = ["triaxial_constants"]
+
+_PI_HI, _PI_LO = 3.141592653589793, 1.2246467991473532e-16
+_NEGLIGIBLE = 1e-18  # as andoyer.free.series: series terms below this are dropped
+_ROWS = 58  # rows of the output table, laid out in triaxial_constants
+
+
+@jit
+def _terms_max(x, powers):
+    n = 0
+    for p in powers:
+        if p == 0 or x**p > _NEGLIGIBLE:
+            n += 1
+    return n
+
+
+@jit
+def _inv_diff(s, Ii, Ij):
+    dh, dl = two_sum(Ij, -Ii)
+    ph, pl = two_prod(Ii, Ij)
+    return dd_div(s * dh, s * dl, ph, pl)
+
+
+@jit
+def _ellipk(m):
+    """``K(1 − m)`` in float64 by the AGM: ``K'`` enters only reduced phases."""
+    a, g = 1.0, math.sqrt(m)
+    while abs(a - g) > 1e-15 * a:
+        a, g = 0.5 * (a + g), math.sqrt(a * g)
+    return 0.5 * math.pi / (0.5 * (a + g))
+
+
+@jit
+def _nome(p, pc):
+    kc = math.sqrt(pc)
+    eps = p / (2.0 * (1.0 + kc) * (1.0 + math.sqrt(kc)) ** 2)
+    e4 = eps**4
+    return eps * (1.0 + e4 * (2.0 + e4 * (15.0 + e4 * (150.0 + e4 * (1707.0 + e4 * 20910.0)))))
+
+
+@jit
+def _qmul(a, b):
+    ax, ay, az, aw = a
+    bx, by, bz, bw = b
+    return (
+        aw * bx + ax * bw + ay * bz - az * by,
+        aw * by - ax * bz + ay * bw + az * bx,
+        aw * bz + ax * by - ay * bx + az * bw,
+        aw * bw - ax * bx - ay * by - az * bz,
+    )
+
+
+@jit
+def _entry(perm, sign, a, b):
+    return sign[a] if perm[a] == b else 0.0
+
+
+@jit
+def _perm_quat(perm, sign):
+    """Quaternion of the rotation whose matrix has rows ``sign[j] e_{perm[j]}`` (Shepperd)."""
+    d0, d1, d2 = _entry(perm, sign, 0, 0), _entry(perm, sign, 1, 1), _entry(perm, sign, 2, 2)
+    tr = d0 + d1 + d2
+    big = max(d0, d1, d2)
+    if tr >= big:
+        q = (
+            _entry(perm, sign, 2, 1) - _entry(perm, sign, 1, 2),
+            _entry(perm, sign, 0, 2) - _entry(perm, sign, 2, 0),
+            _entry(perm, sign, 1, 0) - _entry(perm, sign, 0, 1),
+            1.0 + tr,
+        )
+    else:
+        i = 0 if d0 == big else (1 if d1 == big else 2)
+        j, k = (i + 1) % 3, (i + 2) % 3
+        vi = 1.0 - tr + 2.0 * big
+        vj = _entry(perm, sign, j, i) + _entry(perm, sign, i, j)
+        vk = _entry(perm, sign, k, i) + _entry(perm, sign, i, k)
+        w = _entry(perm, sign, k, j) - _entry(perm, sign, j, k)
+        if i == 0:
+            q = (vi, vj, vk, w)
+        elif i == 1:
+            q = (vk, vi, vj, w)
+        else:
+            q = (vj, vk, vi, w)
+    r = 1.0 / math.sqrt(q[0] ** 2 + q[1] ** 2 + q[2] ** 2 + q[3] ** 2)
+    return q[0] * r, q[1] * r, q[2] * r, q[3] * r
+
+
+@jit
+def _psi_offset(circ, f0, q, wa, wb, kk, slope):
+    """``ψ`` offset (cycles) that makes ``Δψ(0) = 0``: minus the series' phase at ``τ₀``."""
+    f = f0 - np.rint(f0)
+    if circ:
+        lin = f
+        n_w = _terms_max(q, (0, 2, 8))
+        re = im = 0.0
+        sn, cs = math.sin(2.0 * math.pi * f), math.cos(2.0 * math.pi * f)
+        s2, c2 = 2.0 * sn * cs, (cs - sn) * (cs + sn)
+        for n in range(n_w):  # sin, cos((2n+1)x) by turns of 2x
+            re += wa[n] * sn
+            im += wb[n] * cs
+            sn, cs = sn * c2 + cs * s2, cs * c2 - sn * s2
+    else:
+        lin = f - 0.5 * np.rint(2.0 * f)
+        zi = math.exp(-kk * abs(lin))
+        n_w = _terms_max(math.sqrt(q), (0, 2, 6, 12, 20, 30))
+        re, im = wa[0] * (1.0 + zi), wb[0] * (1.0 - zi)
+        up, down = 1.0, zi
+        for n in range(1, n_w):
+            up /= zi
+            down *= zi
+            re += wa[n] * (up + down)
+            im += wb[n] * (up - down)
+        if lin < 0:
+            im = -im
+    a = 2.0 * slope * lin + math.atan2(im, re) / math.pi  # half-turns
+    return -(a - 2.0 * np.rint(0.5 * a))
+
+
+@jit
+def _body(Ib, mb, lam, q0, out, i):
+    """Constants of body ``i`` into column ``i`` of ``out`` (see :func:`triaxial_constants`)."""
+    # working frame: axis 3 the polhode axis (C for SAM, A for LAM), axis 2 the middle one
+    o0, o1, o2 = 0, 1, 2  # stable sort of three moments
+    if Ib[o1] < Ib[o0]:
+        o0, o1 = o1, o0
+    if Ib[o2] < Ib[o1]:
+        o1, o2 = o2, o1
+        if Ib[o1] < Ib[o0]:
+            o0, o1 = o1, o0
+    perm = (o2, o1, o0) if lam else (o0, o1, o2)
+    inv = int(perm[0] > perm[1]) + int(perm[0] > perm[2]) + int(perm[1] > perm[2])
+    parity = 1.0 - 2.0 * (inv % 2)
+    s3 = -1.0 if mb[perm[2]] < 0 else 1.0
+    sign = (1.0, parity * s3, s3)
+    I1, I2, I3 = Ib[perm[0]], Ib[perm[1]], Ib[perm[2]]
+    mw = (mb[perm[0]], mb[perm[1]] * sign[1], mb[perm[2]] * s3)
+    s = -1.0 if lam else 1.0
+    e12h, e12l = _inv_diff(s, I1, I2)
+    e13h, e13l = _inv_diff(s, I1, I3)
+    e23h, e23l = _inv_diff(s, I2, I3)
+    x0h, x0l = two_prod(mw[0], mw[0])
+    x1h, x1l = two_prod(mw[1], mw[1])
+    x2h, x2l = two_prod(mw[2], mw[2])
+    P1h, P1l = dd_add(*dd_mul(x0h, x0l, e13h, e13l), *dd_mul(x1h, x1l, e23h, e23l))
+    out[57, i] = 1.0 if P1h == 0.0 else 0.0
+    if P1h == 0.0:  # a steady spin: FreeMotion routes it elsewhere
+        return
+    P3h, P3l = dd_add(*dd_mul(x1h, x1l, e12h, e12l), *dd_mul(x2h, x2l, e13h, e13l))
+    th, tl = dd_mul(x0h, x0l, e12h, e12l)
+    P2h, P2l = dd_add(*dd_mul(x2h, x2l, e23h, e23l), -th, -tl)
+    Gh, Gl = dd_sqrt(*dd_add(*dd_add(x0h, x0l, x1h, x1l), x2h, x2l))
+    w3h, w3l = dd_div(1.0, 0.0, I3, 0.0)
+    # amplitudes, modulus, K, Π (andoyer.free.triaxial)
+    a1, a2, a3 = math.sqrt(P1h / e13h), math.sqrt(P1h / e23h), math.sqrt(P3h / e13h)
+    dnh, dnl = dd_mul(e23h, e23l, P3h, P3l)
+    m = dd_div(*dd_mul(e12h, e12l, P1h, P1l), dnh, dnl)[0]
+    mch, mcl = dd_div(*dd_mul(e13h, e13l, P2h, P2l), dnh, dnl)
+    k2h, k2l = dd_div(e12h, e12l, e23h, e23l)
+    p3h, p3l, Kh, Kl = ellippi_dd(-k2h, -k2l, mch, mcl)
+    Kp = _ellipk(m)
+    circ = m <= 0.5
+    q = _nome(min(m, 0.5), max(mch, 0.5)) if circ else _nome(min(mch, 0.5), max(m, 0.5))
+    q2 = q * q
+    q4 = q2 * q2
+    q9 = q4 * q4 * q
+    t2 = 1.0 + q2 * (1.0 + q4 * (1.0 + q2 * q4))
+    th3 = 1.0 + 2.0 * (q + q4 + q9)
+    th4 = 1.0 - 2.0 * (q - q4 + q9)
+    c_sn = th3 / t2 if circ else th3 / th4
+    c_cn = th4 / t2 if circ else 2.0 * t2 / th4
+    c_dn = th4 / th3 if circ else 2.0 * t2 / th3
+    nuh, nul = dd_div(*dd_sqrt(dnh, dnl), 4.0 * Kh, 4.0 * Kl)
+    # initial phase τ₀ = F(am τ₀ | m) from the measured cn, sn, dn
+    cn0, sn0, dn0 = mw[0] / a1, mw[1] / (s * a2), mw[2] / a3
+    rf = carlson_rf(cn0 * cn0, dn0 * dn0, 1.0)
+    tau0 = sn0 * rf if cn0 >= 0 else math.copysign(2.0 * Kh, sn0) - sn0 * rf
+    kappa2 = e12h / e23h
+    v1 = carlson_rf(kappa2, kappa2 + m, 1.0 + kappa2)
+    wa = out[25:31, i]  # views into the table: no allocation per body
+    wb = out[31:37, i]
+    if circ:
+        eta = math.exp(-math.pi * v1 / Kh)
+        head, tail = 1.0, q2 / eta  # q^{2n²} ηⁿ and q^{2(n+1)²} η^{−n−1}
+        for n in range(3):
+            sgn = 1.0 - 2.0 * (n % 2)
+            wa[n] = sgn * (head + tail)
+            wb[n] = sgn * (head - tail) * s
+            head *= q2 ** (2 * n + 1) * eta
+            tail *= q2 ** (2 * n + 3) / eta
+    else:
+        qs = math.sqrt(q)
+        ang = -0.5 * math.pi + 0.25 * math.pi * v1 / Kp
+        sn, cs = math.sin(ang), math.cos(ang)
+        s2, c2 = 2.0 * sn * cs, (cs - sn) * (cs + sn)
+        amp = 1.0
+        for n in range(6):  # (−1)ⁿ q*^{n²+n} times sin, cos((2n+1)a), by turns of 2a
+            wa[n] = amp * sn
+            wb[n] = amp * cs * s
+            sn, cs = sn * c2 + cs * s2, cs * c2 - sn * s2
+            amp *= -(qs ** (2 * n + 2))
+    # secular rate of ψ (andoyer.free.triaxial._secular_rate)
+    ch, cl = dd_div(*dd_sqrt(*dd_div(P3h, P3l, e13h, e13l)), Gh, Gl)
+    rh, rl = dd_sqrt(*dd_div(e23h, e23l, e13h, e13l))
+    th, tl = dd_mul(*dd_mul(ch, cl, rh, rl), 0.5 * _PI_HI, 0.5 * _PI_LO)
+    bh, bl = dd_add(p3h, p3l, -th, -tl)
+    crh, crl = dd_div(*dd_mul(*dd_mul(Gh, Gl, e13h, e13l), bh, bl), Kh, Kl)
+    rate_h, rate_l = dd_add(*dd_mul(Gh, Gl, w3h, w3l), s * crh, s * crl)
+    psh, psl = dd_div(rate_h, rate_l, 2.0 * _PI_HI, 2.0 * _PI_LO)
+    slope = s if circ else s * 0.5 * v1 / Kp
+    kk = 2.0 * math.pi * Kh / Kp
+    period = 1.0 / nuh
+    frac0 = tau0 / (4.0 * Kh)
+    nhh, nhl = split(nuh)
+    head = (1.0 if circ else 0.0, nuh, nul, nhh, nhl, frac0, q, c_sn, c_cn, c_dn, kk)
+    for r in range(11):
+        out[r, i] = head[r]
+    # working axis j is sign[j] times body axis perm[j]
+    out[11 + perm[0], i] = a1 * c_cn
+    out[14 + perm[1], i] = s * a2 * c_sn * sign[1]
+    out[17 + perm[2], i] = a3 * c_dn * s3
+    out[47 + perm[0], i] = s * a2
+    out[50 + perm[1], i] = -a1 * sign[1]
+    phh, phl = split(psh)
+    tail = (s, psh, psl, phh, phl)
+    for r in range(5):
+        out[20 + r, i] = tail[r]
+    out[37, i] = slope
+    out[53, i] = Gh
+    out[54, i] = a3
+    out[55, i] = period
+    out[56, i] = rate_h + 2.0 * math.pi * s / period
+    if q0.shape[0] == 0:
+        return
+    out[38, i] = _psi_offset(circ, frac0, q, wa, wb, kk, slope)
+    # U = Q₀ ⊗ P, V = Q₀ ⊗ e_z ⊗ P (andoyer.free.regime.attitude_anchor)
+    pq = _perm_quat(perm, sign)
+    q_rw = _qmul((q0[i, 0], q0[i, 1], q0[i, 2], q0[i, 3]), (-pq[0], -pq[1], -pq[2], pq[3]))
+    w = Gh + mw[2]
+    nrm = math.sqrt(2.0 * Gh * w)
+    q_0 = _qmul(q_rw, (-mw[1] / nrm, mw[0] / nrm, 0.0, w / nrm))
+    U = _qmul(q_0, pq)
+    V = _qmul(_qmul(q_0, (0.0, 0.0, 1.0, 0.0)), pq)
+    for k in range(4):
+        out[39 + k, i] = U[k]
+        out[43 + k, i] = V[k]
+
+
+@jit
+def _all(moments, m0, lam, q0, out):
+    for i in range(moments.shape[0]):
+        _body(moments[i], m0[i], lam[i], q0, out, i)
+
+
+def triaxial_constants(moments, m0, lam, q0=None):
+    """Constants of the triaxial solution (as :func:`andoyer.free.triaxial.triaxial`).
+
+    Parameters
+    ----------
+    moments, m0 : ndarray, shape (N, 3)
+        Strictly triaxial moments and body angular momenta, off the separatrix, scaled
+        by :func:`andoyer.free.regime.normalise`.
+    lam : ndarray of bool, shape (N,)
+        True for LAM states.
+    q0 : ndarray, shape (N, 4), optional
+        Initial attitude quaternions (unit, scalar last, body → reference).
+
+    Returns
+    -------
+    const : Triaxial
+        The constants of the states that are not a steady spin.
+    flat : ndarray of bool, shape (N,)
+        States whose wobble ``P₁`` underflows to zero: steady spins about the polhode
+        axis, for which ``const`` has no entry.
+
+    Examples
+    --------
+    >>> c, flat = triaxial_constants(np.array([[1.0, 2.0, 3.0]]) / 4, np.array([[0.3, 0.2, 1.0]]),
+    ...                              np.array([False]))
+    >>> round(float(c.period[0]) * 4, 10), flat.tolist()  # time scales with the moments
+    (20.2049347381, [False])
+    """
+    n = moments.shape[0]
+    out = np.zeros((_ROWS, n))
+    q = np.zeros((0, 4)) if q0 is None else np.ascontiguousarray(q0, dtype=np.float64)
+    _all(
+        np.ascontiguousarray(moments, dtype=np.float64),
+        np.ascontiguousarray(m0, dtype=np.float64),
+        np.ascontiguousarray(lam, dtype=np.bool_),
+        q,
+        out,
+    )
+    flat = out[57] > 0
+    if np.any(flat):
+        out = out[:, ~flat]
+    freq = lambda r: Frequency(out[r], out[r + 1], out[r + 2], out[r + 3])  # noqa: E731
+    const = Triaxial(
+        circular=out[0] > 0,
+        nu=freq(1),
+        frac0=out[5],
+        q=out[6],
+        c_sn=out[7],
+        c_cn=out[8],
+        c_dn=out[9],
+        kk=out[10],
+        mu_cn=out[11:14],
+        mu_sn=out[14:17],
+        mu_dn=out[17:20],
+        s=out[20],
+        nu_psi=freq(21),
+        wa=out[25:31],
+        wb=out[31:37],
+        slope=out[37],
+        psi0=out[38],
+        quat_u=out[39:43],
+        quat_v=out[43:47],
+        v_sn=out[47:50],
+        v_cn=out[50:53],
+        G=out[53],
+        a3=out[54],
+        period=out[55],
+        precession_rate=out[56],
+    )
+    return const, flat
