@@ -18,25 +18,16 @@ import math
 
 import numpy as np
 
+from andoyer.free.compiled_eval import _count
 from andoyer.free.lean import carlson_rf, jit
 from andoyer.free.phase import Frequency
 from andoyer.free.scalar_dd import dd_add, dd_div, dd_mul, dd_sqrt, ellippi_dd, split, two_prod, two_sum
 from andoyer.free.triaxial import Triaxial
 
-__all__ = ["triaxial_constants"]
+__all__ = ["as_triaxial", "triaxial_table"]
 
 _PI_HI, _PI_LO = 3.141592653589793, 1.2246467991473532e-16
-_NEGLIGIBLE = 1e-18  # as andoyer.free.series: series terms below this are dropped
-_ROWS = 58  # rows of the output table, laid out in triaxial_constants
-
-
-@jit
-def _terms_max(x, powers):
-    n = 0
-    for p in powers:
-        if p == 0 or x**p > _NEGLIGIBLE:
-            n += 1
-    return n
+_ROWS = 58  # rows of the output table, laid out in triaxial_table
 
 
 @jit
@@ -116,7 +107,8 @@ def _psi_offset(circ, f0, q, wa, wb, kk, slope):
     f = f0 - np.rint(f0)
     if circ:
         lin = f
-        n_w = _terms_max(q, (0, 2, 8))
+        q2 = q * q
+        n_w = _count((1.0, q2, q2 * q2 * q2 * q2))  # as andoyer.free.series
         re = im = 0.0
         sn, cs = math.sin(2.0 * math.pi * f), math.cos(2.0 * math.pi * f)
         s2, c2 = 2.0 * sn * cs, (cs - sn) * (cs + sn)
@@ -127,7 +119,8 @@ def _psi_offset(circ, f0, q, wa, wb, kk, slope):
     else:
         lin = f - 0.5 * np.rint(2.0 * f)
         zi = math.exp(-kk * abs(lin))
-        n_w = _terms_max(math.sqrt(q), (0, 2, 6, 12, 20, 30))
+        q3 = q * q * q
+        n_w = _count((1.0, q, q3, q3 * q3, q3 * q3 * q3 * q, q3 * q3 * q3 * q3 * q3))  # q*^{n² + n}
         re, im = wa[0] * (1.0 + zi), wb[0] * (1.0 - zi)
         up, down = 1.0, zi
         for n in range(1, n_w):
@@ -143,7 +136,7 @@ def _psi_offset(circ, f0, q, wa, wb, kk, slope):
 
 @jit
 def _body(Ib, mb, lam, q0, out, i):
-    """Constants of body ``i`` into column ``i`` of ``out`` (see :func:`triaxial_constants`)."""
+    """Constants of body ``i`` into column ``i`` of ``out`` (see :func:`triaxial_table`)."""
     # working frame: axis 3 the polhode axis (C for SAM, A for LAM), axis 2 the middle one
     o0, o1, o2 = 0, 1, 2  # stable sort of three moments
     if Ib[o1] < Ib[o0]:
@@ -167,7 +160,7 @@ def _body(Ib, mb, lam, q0, out, i):
     x1h, x1l = two_prod(mw[1], mw[1])
     x2h, x2l = two_prod(mw[2], mw[2])
     P1h, P1l = dd_add(*dd_mul(x0h, x0l, e13h, e13l), *dd_mul(x1h, x1l, e23h, e23l))
-    out[57, i] = 1.0 if P1h == 0.0 else 0.0
+    out[i, 57] = 1.0 if P1h == 0.0 else 0.0
     if P1h == 0.0:  # a steady spin: FreeMotion routes it elsewhere
         return
     P3h, P3l = dd_add(*dd_mul(x1h, x1l, e12h, e12l), *dd_mul(x2h, x2l, e13h, e13l))
@@ -201,28 +194,31 @@ def _body(Ib, mb, lam, q0, out, i):
     tau0 = sn0 * rf if cn0 >= 0 else math.copysign(2.0 * Kh, sn0) - sn0 * rf
     kappa2 = e12h / e23h
     v1 = carlson_rf(kappa2, kappa2 + m, 1.0 + kappa2)
-    wa = out[25:31, i]  # views into the table: no allocation per body
-    wb = out[31:37, i]
+    wa = out[i, 25:31]  # views into the table: no allocation per body
+    wb = out[i, 31:37]
     if circ:
         eta = math.exp(-math.pi * v1 / Kh)
         head, tail = 1.0, q2 / eta  # q^{2n²} ηⁿ and q^{2(n+1)²} η^{−n−1}
+        up, down = q2, q2 * q2 * q2  # their ratios q^{2(2n+1)}, q^{2(2n+3)} (but η)
         for n in range(3):
             sgn = 1.0 - 2.0 * (n % 2)
             wa[n] = sgn * (head + tail)
             wb[n] = sgn * (head - tail) * s
-            head *= q2 ** (2 * n + 1) * eta
-            tail *= q2 ** (2 * n + 3) / eta
+            head *= up * eta
+            tail *= down / eta
+            up *= q2 * q2
+            down *= q2 * q2
     else:
-        qs = math.sqrt(q)
         ang = -0.5 * math.pi + 0.25 * math.pi * v1 / Kp
         sn, cs = math.sin(ang), math.cos(ang)
         s2, c2 = 2.0 * sn * cs, (cs - sn) * (cs + sn)
-        amp = 1.0
+        amp, step = 1.0, 1.0  # (−1)ⁿ q*^{n² + n}; ratio q*^{2n+2} = q^{n+1}
         for n in range(6):  # (−1)ⁿ q*^{n²+n} times sin, cos((2n+1)a), by turns of 2a
             wa[n] = amp * sn
             wb[n] = amp * cs * s
             sn, cs = sn * c2 + cs * s2, cs * c2 - sn * s2
-            amp *= -(qs ** (2 * n + 2))
+            step *= q
+            amp *= -step
     # secular rate of ψ (andoyer.free.triaxial._secular_rate)
     ch, cl = dd_div(*dd_sqrt(*dd_div(P3h, P3l, e13h, e13l)), Gh, Gl)
     rh, rl = dd_sqrt(*dd_div(e23h, e23l, e13h, e13l))
@@ -238,25 +234,25 @@ def _body(Ib, mb, lam, q0, out, i):
     nhh, nhl = split(nuh)
     head = (1.0 if circ else 0.0, nuh, nul, nhh, nhl, frac0, q, c_sn, c_cn, c_dn, kk)
     for r in range(11):
-        out[r, i] = head[r]
+        out[i, r] = head[r]
     # working axis j is sign[j] times body axis perm[j]
-    out[11 + perm[0], i] = a1 * c_cn
-    out[14 + perm[1], i] = s * a2 * c_sn * sign[1]
-    out[17 + perm[2], i] = a3 * c_dn * s3
-    out[47 + perm[0], i] = s * a2
-    out[50 + perm[1], i] = -a1 * sign[1]
+    out[i, 11 + perm[0]] = a1 * c_cn
+    out[i, 14 + perm[1]] = s * a2 * c_sn * sign[1]
+    out[i, 17 + perm[2]] = a3 * c_dn * s3
+    out[i, 47 + perm[0]] = s * a2
+    out[i, 50 + perm[1]] = -a1 * sign[1]
     phh, phl = split(psh)
     tail = (s, psh, psl, phh, phl)
     for r in range(5):
-        out[20 + r, i] = tail[r]
-    out[37, i] = slope
-    out[53, i] = Gh
-    out[54, i] = a3
-    out[55, i] = period
-    out[56, i] = rate_h + 2.0 * math.pi * s / period
+        out[i, 20 + r] = tail[r]
+    out[i, 37] = slope
+    out[i, 53] = Gh
+    out[i, 54] = a3
+    out[i, 55] = period
+    out[i, 56] = rate_h + 2.0 * math.pi * s / period
     if q0.shape[0] == 0:
         return
-    out[38, i] = _psi_offset(circ, frac0, q, wa, wb, kk, slope)
+    out[i, 38] = _psi_offset(circ, frac0, q, wa, wb, kk, slope)
     # U = Q₀ ⊗ P, V = Q₀ ⊗ e_z ⊗ P (andoyer.free.regime.attitude_anchor)
     pq = _perm_quat(perm, sign)
     q_rw = _qmul((q0[i, 0], q0[i, 1], q0[i, 2], q0[i, 3]), (-pq[0], -pq[1], -pq[2], pq[3]))
@@ -266,8 +262,8 @@ def _body(Ib, mb, lam, q0, out, i):
     U = _qmul(q_0, pq)
     V = _qmul(_qmul(q_0, (0.0, 0.0, 1.0, 0.0)), pq)
     for k in range(4):
-        out[39 + k, i] = U[k]
-        out[43 + k, i] = V[k]
+        out[i, 39 + k] = U[k]
+        out[i, 43 + k] = V[k]
 
 
 @jit
@@ -276,8 +272,8 @@ def _all(moments, m0, lam, q0, out):
         _body(moments[i], m0[i], lam[i], q0, out, i)
 
 
-def triaxial_constants(moments, m0, lam, q0=None):
-    """Constants of the triaxial solution (as :func:`andoyer.free.triaxial.triaxial`).
+def triaxial_table(moments, m0, lam, q0=None):
+    """Constants of the triaxial solution as one table, rows in the order of :class:`Triaxial`.
 
     Parameters
     ----------
@@ -291,21 +287,26 @@ def triaxial_constants(moments, m0, lam, q0=None):
 
     Returns
     -------
-    const : Triaxial
-        The constants of the states that are not a steady spin.
+    table : ndarray, shape (M, 58)
+        One row per state that is not a steady spin (the constants of a state lie
+        together in memory, as the compiled evaluation reads them); columns: ``circular`` (1 or 0),
+        ``nu`` (hi, lo, hh, hl), ``frac0``, ``q``, ``c_sn``, ``c_cn``, ``c_dn``, ``kk``,
+        ``mu_cn``, ``mu_sn``, ``mu_dn`` (3 each), ``s``, ``nu_psi`` (4), ``wa``, ``wb``
+        (6 each), ``slope``, ``psi0``, ``quat_u``, ``quat_v`` (4 each), ``v_sn``, ``v_cn``
+        (3 each), ``G``, ``a3``, ``period``, ``precession_rate``, and a last column of zeros.
     flat : ndarray of bool, shape (N,)
         States whose wobble ``P₁`` underflows to zero: steady spins about the polhode
-        axis, for which ``const`` has no entry.
+        axis, which have no column.
 
     Examples
     --------
-    >>> c, flat = triaxial_constants(np.array([[1.0, 2.0, 3.0]]) / 4, np.array([[0.3, 0.2, 1.0]]),
+    >>> table, flat = triaxial_table(np.array([[0.25, 0.5, 0.75]]), np.array([[0.3, 0.2, 1.0]]),
     ...                              np.array([False]))
-    >>> round(float(c.period[0]) * 4, 10), flat.tolist()  # time scales with the moments
-    (20.2049347381, [False])
+    >>> table.shape, round(float(table[0, 55]) * 4, 10), flat.tolist()  # time scales as I
+    ((1, 58), 20.2049347381, [False])
     """
     n = moments.shape[0]
-    out = np.zeros((_ROWS, n))
+    out = np.zeros((n, _ROWS))
     q = np.zeros((0, 4)) if q0 is None else np.ascontiguousarray(q0, dtype=np.float64)
     _all(
         np.ascontiguousarray(moments, dtype=np.float64),
@@ -314,11 +315,33 @@ def triaxial_constants(moments, m0, lam, q0=None):
         q,
         out,
     )
-    flat = out[57] > 0
+    flat = out[:, 57] > 0
     if np.any(flat):
-        out = out[:, ~flat]
+        out = out[~flat]
+    return out, flat
+
+
+def as_triaxial(table):
+    """The :class:`Triaxial` constants of a table from :func:`triaxial_table` (views).
+
+    Parameters
+    ----------
+    table : ndarray, shape (N, 58)
+
+    Returns
+    -------
+    Triaxial
+
+    Examples
+    --------
+    >>> table, _ = triaxial_table(np.array([[0.25, 0.5, 0.75]]), np.array([[0.3, 0.2, 1.0]]),
+    ...                           np.array([False]))
+    >>> as_triaxial(table).mu_cn.shape
+    (3, 1)
+    """
+    out = table.T
     freq = lambda r: Frequency(out[r], out[r + 1], out[r + 2], out[r + 3])  # noqa: E731
-    const = Triaxial(
+    return Triaxial(
         circular=out[0] > 0,
         nu=freq(1),
         frac0=out[5],
@@ -345,4 +368,3 @@ def triaxial_constants(moments, m0, lam, q0=None):
         period=out[55],
         precession_rate=out[56],
     )
-    return const, flat

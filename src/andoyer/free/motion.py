@@ -22,13 +22,14 @@ from typing import NamedTuple
 
 import numpy as np
 
+from andoyer.free import compiled_eval as _ceval
 from andoyer.free import constants as _const
 from andoyer.free import separatrix as _sep
 from andoyer.free import series
 from andoyer.free import triaxial as _tri
 from andoyer.free import uniform as _uni
 from andoyer.free.blocks import Group, evaluate_blocks
-from andoyer.free.compiled_setup import triaxial_constants
+from andoyer.free.compiled_setup import as_triaxial, triaxial_table
 from andoyer.free.lean import NUMBA
 from andoyer.free.regime import Regime, check_inputs, classify, normalise, polhode_frame
 
@@ -127,32 +128,18 @@ class FreeMotion:
         spin = triax & (zeros >= 2)
         sep = (regime == Regime.SEPARATRIX) & ~spin
         tri = triax & ~sep & ~spin
-        const = None
         if np.any(tri):
             idx = np.nonzero(tri)[0]
-            qi = None if q0 is None else q0[idx]
-            if NUMBA:  # the same constants, one compiled loop over the bodies
-                const, flat = triaxial_constants(moments[idx], m0[idx], regime[idx] == Regime.LAM, qi)
-            else:
-                frame = polhode_frame(moments[idx], m0[idx], regime[idx] == Regime.LAM)
-                flat = frame.P1[0] == 0
-            if np.any(flat):  # a wobble whose square underflows (|m⊥| < 1e-154 |m|)
-                spin[idx[flat]] = True  # is a steady spin
-                tri[idx[flat]] = False
-                idx = idx[~flat]
-                if not NUMBA:
-                    frame = polhode_frame(moments[idx], m0[idx], regime[idx] == Regime.LAM)
-            if not NUMBA:
-                const = _tri.triaxial(frame, None if q0 is None else q0[idx])
-        uni = ~triax | spin
-
-        if np.any(tri):
+            idx, flat, tri_groups, const = _triaxial_groups(
+                moments[idx], m0[idx], regime[idx] == Regime.LAM, None if q0 is None else q0[idx], idx
+            )
+            spin[flat] = True  # a wobble whose square underflows (|m⊥| < 1e-154 |m|)
+            tri[flat] = False  # is a steady spin
             period[idx] = const.period
             rate[idx] = const.precession_rate
-            for kind in (True, False):
-                sel = np.nonzero(const.circular == kind)[0]
-                if sel.size:
-                    groups.append((series.evaluate, idx[sel], _const.subset(const, sel)))
+            groups += tri_groups
+        uni = ~triax | spin
+
         if np.any(sep):
             idx = np.nonzero(sep)[0]
             frame = polhode_frame(moments[idx], m0[idx], np.zeros(idx.size, dtype=bool))
@@ -254,6 +241,34 @@ class FreeMotion:
         if not np.all(np.isfinite(t)):
             raise ValueError(f"expected finite times t, got {t[~np.isfinite(t)].ravel()[:3]}")
         return evaluate_blocks(self._groups, self.shape, t, attitude)
+
+
+def _triaxial_groups(moments, m0, lam, q0, idx):
+    """Constants and evaluation groups of triaxial states (SAM, LAM) with flat indices ``idx``.
+
+    With numba, one compiled loop builds the constants and a compiled kernel evaluates
+    them (:mod:`andoyer.free.compiled_setup`, :mod:`andoyer.free.compiled_eval`); without,
+    the vectorised :mod:`andoyer.free.triaxial` and :mod:`andoyer.free.series`.  Returns
+    the indices kept, those found to be steady spins (a wobble ``P₁`` that underflows),
+    the ``(kernel, indices, constants)`` groups and the :class:`Triaxial` constants.
+    """
+    if NUMBA:
+        table, flat = triaxial_table(moments, m0, lam, q0)
+        keep = idx[~flat]
+        return keep, idx[flat], [(_ceval.evaluate, keep, table)], as_triaxial(table)
+    frame = polhode_frame(moments, m0, lam)
+    flat = frame.P1[0] == 0
+    if np.any(flat):
+        frame = polhode_frame(moments[~flat], m0[~flat], lam[~flat])
+        q0 = None if q0 is None else q0[~flat]
+    const = _tri.triaxial(frame, q0)
+    keep = idx[~flat]
+    groups = []
+    for kind in (True, False):
+        sel = np.nonzero(const.circular == kind)[0]
+        if sel.size:
+            groups.append((series.evaluate, keep[sel], _const.subset(const, sel)))
+    return keep, idx[flat], groups, const
 
 
 def periods(moments, m0):
