@@ -14,6 +14,7 @@ from free_cases import cases, with_k2
 from scipy.spatial.transform import Rotation
 
 from andoyer.free import FreeMotion, motion
+from andoyer.free.compiled_regime import classify_scaled
 from andoyer.free.compiled_setup import as_triaxial, triaxial_table
 from andoyer.free.regime import Regime, check_inputs, classify, normalise, polhode_frame
 from andoyer.free.triaxial import triaxial
@@ -103,3 +104,34 @@ def test_compiled_freemotion_equals_numpy_freemotion(case, monkeypatch):
     rel = Rotation.from_quat(q_c).inv() * Rotation.from_quat(q_n)
     assert np.max(err_m) <= 1e-13
     assert np.max(rel.magnitude()) <= 1e-12
+
+
+def test_compiled_classification_equals_classify_and_normalise():
+    rng = np.random.default_rng(11)
+    moments = rng.uniform(1.0, 2.0, (400, 3))
+    moments[:, 2] = np.minimum(moments[:, 2], moments[:, 0] + moments[:, 1])
+    moments *= np.exp(rng.uniform(-30, 30, (400, 1)))
+    m0 = rng.normal(size=(400, 3)) * np.exp(rng.uniform(-30, 30, (400, 1)))
+    m0[::7, rng.integers(3)] = 0.0
+    m0[::11, :2] = 0.0
+    edge = [
+        ([3.0, 4.0, 6.0], [1.0, 0.5, 1.0]),  # exactly on the separatrix
+        ([6.0, 3.0, 4.0], [1.0, 1.0, -0.5]),  # the same, axes permuted
+        ([1.0, 2.0, 2.0], [0.3, 0.2, 1.0]),  # axisymmetric
+        ([2.0, 2.0, 2.0], [0.3, 0.2, 1.0]),  # sphere
+        ([1.0, 2.0, 3.0], [0.0, 0.0, 0.0]),  # rest
+        ([1.0, 1.7, 2.3], list(with_k2(np.array([1.0, 1.7, 2.3]), 1 - 1e-15))),
+        ([1.0, 2.0, 3.0], [1e-170, 0.0, 1e-160]),
+        ([1e300, 1.5e300, 2e300], [1e-300, 2e-300, 3e-300]),
+    ]
+    moments = np.vstack([moments, [e[0] for e in edge]])
+    m0 = np.vstack([m0, [e[1] for e in edge]])
+    moments, m0 = check_inputs(moments, m0)
+    regime, Is, ms, a, b = classify_scaled(moments, m0)
+    Iw, mw, aw, bw = normalise(moments, m0)
+    assert np.array_equal(regime, classify(moments, m0))
+    assert set(regime.tolist()) == {int(r) for r in Regime}
+    assert np.array_equal(Is, Iw)
+    assert np.array_equal(ms, mw)
+    assert np.array_equal(a, aw)
+    assert np.array_equal(b, bw)

@@ -38,15 +38,6 @@ def _inv_diff(s, Ii, Ij):
 
 
 @jit
-def _ellipk(m):
-    """``K(1 − m)`` in float64 by the AGM: ``K'`` enters only reduced phases."""
-    a, g = 1.0, math.sqrt(m)
-    while abs(a - g) > 1e-15 * a:
-        a, g = 0.5 * (a + g), math.sqrt(a * g)
-    return 0.5 * math.pi / (0.5 * (a + g))
-
-
-@jit
 def _nome(p, pc):
     kc = math.sqrt(pc)
     eps = p / (2.0 * (1.0 + kc) * (1.0 + math.sqrt(kc)) ** 2)
@@ -175,9 +166,11 @@ def _body(Ib, mb, lam, q0, out, i):
     mch, mcl = dd_div(*dd_mul(e13h, e13l, P2h, P2l), dnh, dnl)
     k2h, k2l = dd_div(e12h, e12l, e23h, e23l)
     p3h, p3l, Kh, Kl = ellippi_dd(-k2h, -k2l, mch, mcl)
-    Kp = _ellipk(m)
     circ = m <= 0.5
     q = _nome(min(m, 0.5), max(mch, 0.5)) if circ else _nome(min(mch, 0.5), max(m, 0.5))
+    # K' from the nome q = exp(−πK'/K) (circular) or q' = exp(−πK/K') (hyperbolic), no
+    # second AGM: K' enters only reduced phases
+    Kp = -Kh * math.log(q) / math.pi if circ else -math.pi * Kh / math.log(q)
     q2 = q * q
     q4 = q2 * q2
     q9 = q4 * q4 * q

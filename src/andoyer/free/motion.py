@@ -29,6 +29,7 @@ from andoyer.free import series
 from andoyer.free import triaxial as _tri
 from andoyer.free import uniform as _uni
 from andoyer.free.blocks import Group, evaluate_blocks
+from andoyer.free.compiled_regime import classify_scaled
 from andoyer.free.compiled_setup import as_triaxial, triaxial_table
 from andoyer.free.lean import NUMBA
 from andoyer.free.regime import Regime, check_inputs, classify, normalise, polhode_frame
@@ -113,9 +114,12 @@ class FreeMotion:
         moments = np.broadcast_to(moments, (*shape, 3)).reshape(-1, 3)
         m0 = np.broadcast_to(m0, (*shape, 3)).reshape(-1, 3)
         n = moments.shape[0]
-        regime = classify(moments, m0)
         # solve the scaled problem (powers of two, exact): internal time 2^(b−a) t
-        moments, m0, a, b = normalise(moments, m0)
+        if NUMBA:
+            regime, moments, m0, a, b = classify_scaled(moments, m0)
+        else:
+            regime = classify(moments, m0)
+            moments, m0, a, b = normalise(moments, m0)
         tshift = b - a
         self.regime = regime.reshape(shape)
         self._has_attitude = q0 is not None

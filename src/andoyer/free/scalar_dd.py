@@ -242,8 +242,12 @@ def ellippi_dd(n_hi, n_lo, mc_hi, mc_lo):
         gh, gl = dd_sqrt(agh, agl)
         ah, al = 0.5 * nah, 0.5 * nal
         dh, _ = dd_add(ah, al, -gh, -gl)
-        if abs(qh) <= 1e-33 * abs(sh) and abs(dh) <= 1e-31 * abs(ah):
+        # |a − g| ≤ 2⁻⁵² a: M = (a + g)/2 − (a − g)²/(16a) + …, the mean is M to 2⁻¹⁰⁸,
+        # and εₖ = O(a − g) makes the rest of Σ Q below 2⁻¹⁰⁸ once Q is below 1e-17
+        if abs(qh) <= 1e-17 * abs(sh) and abs(dh) <= 2.220446049250313e-16 * abs(ah):
             break
+    ah, al = dd_add(ah, al, gh, gl)
+    ah, al = 0.5 * ah, 0.5 * al
     # π/(4M) (2 + n/(1 − n) Σ Q) and K = π/(2M)
     oh, ol = dd_add(1.0, 0.0, -n_hi, -n_lo)
     rh, rl = dd_div(n_hi, n_lo, oh, ol)
