@@ -98,8 +98,14 @@ def test_compiled_freemotion_equals_numpy_freemotion(case, monkeypatch):
     _name, moments, m0, q0, t_unit = case
     t = np.array([0.0, 0.37, 9.71, 100.0]) * t_unit
     m_c, q_c = FreeMotion(moments, m0, q0).propagate(t)
+    lazy = FreeMotion(moments, m0)  # the compiled set-up skips the precession rate here
+    m_l, p_l = lazy.momentum(t), lazy.periods
     monkeypatch.setattr(motion, "NUMBA", False)
     m_n, q_n = FreeMotion(moments, m0, q0).propagate(t)
+    p_n = FreeMotion(moments, m0).periods
+    for got, want in zip(p_l, p_n, strict=True):
+        np.testing.assert_allclose(got, want, rtol=1e-14, atol=0)
+    assert np.max(np.abs(m_l - m_c)) <= 4 * EPS * np.linalg.norm(m0)
     err_m = np.linalg.norm(m_c - m_n, axis=-1) / np.linalg.norm(m0)
     rel = Rotation.from_quat(q_c).inv() * Rotation.from_quat(q_n)
     assert np.max(err_m) <= 1e-13

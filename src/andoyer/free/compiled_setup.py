@@ -21,7 +21,17 @@ import numpy as np
 from andoyer.free.compiled_eval import _count
 from andoyer.free.lean import carlson_rf, jit
 from andoyer.free.phase import Frequency
-from andoyer.free.scalar_dd import dd_add, dd_div, dd_mul, dd_sqrt, ellippi_dd, split, two_prod, two_sum
+from andoyer.free.scalar_dd import (
+    dd_add,
+    dd_div,
+    dd_mul,
+    dd_sqrt,
+    ellipk_dd,
+    ellippi_dd,
+    split,
+    two_prod,
+    two_sum,
+)
 from andoyer.free.triaxial import Triaxial
 
 __all__ = ["as_triaxial", "triaxial_table"]
@@ -126,7 +136,7 @@ def _psi_offset(circ, f0, q, wa, wb, kk, slope):
 
 
 @jit
-def _body(Ib, mb, lam, q0, out, i):
+def _body(Ib, mb, lam, q0, out, i, full):
     """Constants of body ``i`` into column ``i`` of ``out`` (see :func:`triaxial_table`)."""
     # working frame: axis 3 the polhode axis (C for SAM, A for LAM), axis 2 the middle one
     o0, o1, o2 = 0, 1, 2  # stable sort of three moments
@@ -164,8 +174,12 @@ def _body(Ib, mb, lam, q0, out, i):
     dnh, dnl = dd_mul(e23h, e23l, P3h, P3l)
     m = dd_div(*dd_mul(e12h, e12l, P1h, P1l), dnh, dnl)[0]
     mch, mcl = dd_div(*dd_mul(e13h, e13l, P2h, P2l), dnh, dnl)
-    k2h, k2l = dd_div(e12h, e12l, e23h, e23l)
-    p3h, p3l, Kh, Kl = ellippi_dd(-k2h, -k2l, mch, mcl)
+    if full:  # Π(−κ²|m) for the secular rate of ψ, and K from the same AGM
+        k2h, k2l = dd_div(e12h, e12l, e23h, e23l)
+        p3h, p3l, Kh, Kl = ellippi_dd(-k2h, -k2l, mch, mcl)
+    else:  # the momentum needs K only
+        p3h = p3l = 0.0
+        Kh, Kl = ellipk_dd(mch, mcl)
     circ = m <= 0.5
     q = _nome(min(m, 0.5), max(mch, 0.5)) if circ else _nome(min(mch, 0.5), max(m, 0.5))
     # K' from the nome q = exp(−πK'/K) (circular) or q' = exp(−πK/K') (hyperbolic), no
@@ -185,6 +199,26 @@ def _body(Ib, mb, lam, q0, out, i):
     cn0, sn0, dn0 = mw[0] / a1, mw[1] / (s * a2), mw[2] / a3
     rf = carlson_rf(cn0 * cn0, dn0 * dn0, 1.0)
     tau0 = sn0 * rf if cn0 >= 0 else math.copysign(2.0 * Kh, sn0) - sn0 * rf
+    kk = 2.0 * math.pi * Kh / Kp
+    period = 1.0 / nuh
+    frac0 = tau0 / (4.0 * Kh)
+    nhh, nhl = split(nuh)
+    row = (1.0 if circ else 0.0, nuh, nul, nhh, nhl, frac0, q, c_sn, c_cn, c_dn, kk)
+    for r in range(11):
+        out[i, r] = row[r]
+    # working axis j is sign[j] times body axis perm[j]
+    out[i, 11 + perm[0]] = a1 * c_cn
+    out[i, 14 + perm[1]] = s * a2 * c_sn * sign[1]
+    out[i, 17 + perm[2]] = a3 * c_dn * s3
+    out[i, 47 + perm[0]] = s * a2
+    out[i, 50 + perm[1]] = -a1 * sign[1]
+    out[i, 53] = Gh
+    out[i, 54] = a3
+    out[i, 55] = period
+    out[i, 20] = s
+    if not full:
+        out[i, 56] = math.nan  # the precession rate needs Π
+        return
     kappa2 = e12h / e23h
     v1 = carlson_rf(kappa2, kappa2 + m, 1.0 + kappa2)
     wa = out[i, 25:31]  # views into the table: no allocation per body
@@ -221,27 +255,11 @@ def _body(Ib, mb, lam, q0, out, i):
     rate_h, rate_l = dd_add(*dd_mul(Gh, Gl, w3h, w3l), s * crh, s * crl)
     psh, psl = dd_div(rate_h, rate_l, 2.0 * _PI_HI, 2.0 * _PI_LO)
     slope = s if circ else s * 0.5 * v1 / Kp
-    kk = 2.0 * math.pi * Kh / Kp
-    period = 1.0 / nuh
-    frac0 = tau0 / (4.0 * Kh)
-    nhh, nhl = split(nuh)
-    head = (1.0 if circ else 0.0, nuh, nul, nhh, nhl, frac0, q, c_sn, c_cn, c_dn, kk)
-    for r in range(11):
-        out[i, r] = head[r]
-    # working axis j is sign[j] times body axis perm[j]
-    out[i, 11 + perm[0]] = a1 * c_cn
-    out[i, 14 + perm[1]] = s * a2 * c_sn * sign[1]
-    out[i, 17 + perm[2]] = a3 * c_dn * s3
-    out[i, 47 + perm[0]] = s * a2
-    out[i, 50 + perm[1]] = -a1 * sign[1]
     phh, phl = split(psh)
-    tail = (s, psh, psl, phh, phl)
-    for r in range(5):
-        out[i, 20 + r] = tail[r]
+    row4 = (psh, psl, phh, phl)
+    for r in range(4):
+        out[i, 21 + r] = row4[r]
     out[i, 37] = slope
-    out[i, 53] = Gh
-    out[i, 54] = a3
-    out[i, 55] = period
     out[i, 56] = rate_h + 2.0 * math.pi * s / period
     if q0.shape[0] == 0:
         return
@@ -260,12 +278,12 @@ def _body(Ib, mb, lam, q0, out, i):
 
 
 @jit
-def _all(moments, m0, lam, q0, out):
+def _all(moments, m0, lam, q0, out, full):
     for i in range(moments.shape[0]):
-        _body(moments[i], m0[i], lam[i], q0, out, i)
+        _body(moments[i], m0[i], lam[i], q0, out, i, full)
 
 
-def triaxial_table(moments, m0, lam, q0=None):
+def triaxial_table(moments, m0, lam, q0=None, rate=True):
     """Constants of the triaxial solution as one table, rows in the order of :class:`Triaxial`.
 
     Parameters
@@ -277,6 +295,11 @@ def triaxial_table(moments, m0, lam, q0=None):
         True for LAM states.
     q0 : ndarray, shape (N, 4), optional
         Initial attitude quaternions (unit, scalar last, body → reference).
+    rate : bool, optional
+        Compute the secular rate of ``ψ`` (the precession rate) even without ``q0``.
+        ``False`` without ``q0`` skips the quantities only the attitude needs (``Π``,
+        the ``ϑ₁`` series; about half the cost): the table is good for the momentum, its
+        precession rate is ``nan``.
 
     Returns
     -------
@@ -307,6 +330,7 @@ def triaxial_table(moments, m0, lam, q0=None):
         np.ascontiguousarray(lam, dtype=np.bool_),
         q,
         out,
+        bool(rate or q0 is not None),
     )
     flat = out[:, 57] > 0
     if np.any(flat):

@@ -126,6 +126,7 @@ class FreeMotion:
         period = np.empty(n)
         rate = np.empty(n)
         groups = []
+        self._pending = None
 
         zeros = np.sum(m0 == 0, axis=-1)
         triax = regime <= Regime.SEPARATRIX
@@ -134,7 +135,7 @@ class FreeMotion:
         tri = triax & ~sep & ~spin
         if np.any(tri):
             idx = np.nonzero(tri)[0]
-            idx, flat, tri_groups, const = _triaxial_groups(
+            idx, flat, tri_groups, const, self._pending = _triaxial_groups(
                 moments[idx], m0[idx], regime[idx] == Regime.LAM, None if q0 is None else q0[idx], idx
             )
             spin[flat] = True  # a wobble whose square underflows (|m⊥| < 1e-154 |m|)
@@ -167,11 +168,29 @@ class FreeMotion:
                 rate[j] = G * w3 + frame.s * om
             groups.append((_uni.evaluate, idx, const))
         self._groups = [Group(k, idx, c, tshift[idx], b[idx]) for k, idx, c in groups]
-        period = np.ldexp(period, -tshift)
-        rate = np.ldexp(rate, tshift)
-        with np.errstate(invalid="ignore"):
-            prec = np.where(rate == 0, 0.0, rate * period)
-        self.periods = FreePeriods(period.reshape(shape), prec.reshape(shape), rate.reshape(shape))
+        self._scaled_periods = (period, rate, tshift)
+        self._periods = None
+
+    @property
+    def periods(self):
+        """Period of ``m(t)`` and precession of the attitude per period (:class:`FreePeriods`).
+
+        Computed on first use where the set-up skipped the precession rate (compiled
+        set-up, no attitude asked).
+        """
+        if self._periods is None:
+            period, rate, tshift = self._scaled_periods
+            if self._pending is not None:
+                idx, args = self._pending
+                rate[idx] = triaxial_table(*args, rate=True)[0][:, 56]
+                self._pending = None
+            period = np.ldexp(period, -tshift)
+            rate = np.ldexp(rate, tshift)
+            with np.errstate(invalid="ignore"):
+                prec = np.where(rate == 0, 0.0, rate * period)
+            shape = self.shape
+            self._periods = FreePeriods(period.reshape(shape), prec.reshape(shape), rate.reshape(shape))
+        return self._periods
 
     def momentum(self, t):
         """Body angular momentum at times ``t`` after the initial state.
@@ -254,12 +273,17 @@ def _triaxial_groups(moments, m0, lam, q0, idx):
     them (:mod:`andoyer.free.compiled_setup`, :mod:`andoyer.free.compiled_eval`); without,
     the vectorised :mod:`andoyer.free.triaxial` and :mod:`andoyer.free.series`.  Returns
     the indices kept, those found to be steady spins (a wobble ``P₁`` that underflows),
-    the ``(kernel, indices, constants)`` groups and the :class:`Triaxial` constants.
+    the ``(kernel, indices, constants)`` groups, the :class:`Triaxial` constants and, where
+    the compiled set-up skipped the precession rate (no attitude), what it needs to
+    compute it later: ``(positions, (moments, m0, lam))``.
     """
     if NUMBA:
-        table, flat = triaxial_table(moments, m0, lam, q0)
+        table, flat = triaxial_table(moments, m0, lam, q0, rate=False)
         keep = idx[~flat]
-        return keep, idx[flat], [(_ceval.evaluate, keep, table)], as_triaxial(table)
+        pending = None
+        if q0 is None:
+            pending = (keep, (moments[~flat], m0[~flat], lam[~flat]))
+        return keep, idx[flat], [(_ceval.evaluate, keep, table)], as_triaxial(table), pending
     frame = polhode_frame(moments, m0, lam)
     flat = frame.P1[0] == 0
     if np.any(flat):
@@ -272,7 +296,7 @@ def _triaxial_groups(moments, m0, lam, q0, idx):
         sel = np.nonzero(const.circular == kind)[0]
         if sel.size:
             groups.append((series.evaluate, keep[sel], _const.subset(const, sel)))
-    return keep, idx[flat], groups, const
+    return keep, idx[flat], groups, const, None
 
 
 def periods(moments, m0):
