@@ -14,7 +14,7 @@ from free_cases import cases, with_k2
 from scipy.spatial.transform import Rotation
 
 from andoyer.free import FreeMotion, motion
-from andoyer.free.compiled_regime import classify_scaled
+from andoyer.free.compiled_regime import classify_and_scale
 from andoyer.free.compiled_setup import as_triaxial, triaxial_table
 from andoyer.free.regime import Regime, check_inputs, classify, normalise, polhode_frame
 from andoyer.free.triaxial import triaxial
@@ -133,7 +133,7 @@ def test_compiled_classification_equals_classify_and_normalise():
     moments = np.vstack([moments, [e[0] for e in edge]])
     m0 = np.vstack([m0, [e[1] for e in edge]])
     moments, m0 = check_inputs(moments, m0)
-    regime, Is, ms, a, b = classify_scaled(moments, m0)
+    regime, Is, ms, a, b = classify_and_scale(moments, m0)
     Iw, mw, aw, bw = normalise(moments, m0)
     assert np.array_equal(regime, classify(moments, m0))
     assert set(regime.tolist()) == {int(r) for r in Regime}

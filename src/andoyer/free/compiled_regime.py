@@ -17,7 +17,7 @@ from andoyer.free.lean import jit
 from andoyer.free.regime import Regime
 from andoyer.free.scalar_dd import dd_add, dd_mul, two_prod, two_sum
 
-__all__ = ["classify_scaled"]
+__all__ = ["classify_and_scale"]
 
 _SAM, _LAM, _SEP = int(Regime.SAM), int(Regime.LAM), int(Regime.SEPARATRIX)
 _AXI, _SPHERE, _REST = int(Regime.AXISYMMETRIC), int(Regime.SPHERE), int(Regime.REST)
@@ -60,7 +60,7 @@ def _all(moments, m0, Is, ms, regime, a, b):
         regime[i], a[i], b[i] = _state(moments[i], m0[i], Is[i], ms[i])
 
 
-def classify_scaled(moments, m0):
+def classify_and_scale(moments, m0):
     """Regimes, scaled states and exponents (as ``classify`` and ``normalise``).
 
     Parameters
@@ -80,7 +80,7 @@ def classify_scaled(moments, m0):
 
     Examples
     --------
-    >>> r, i, m, a, b = classify_scaled(np.array([[3.0, 4.0, 6.0]]), np.array([[0.0, 48.0, 0.0]]))
+    >>> r, i, m, a, b = classify_and_scale(np.array([[3.0, 4.0, 6.0]]), np.array([[0.0, 48.0, 0.0]]))
     >>> r.tolist(), i.tolist(), m.tolist(), a.tolist(), b.tolist()
     ([2], [[0.375, 0.5, 0.75]], [[0.0, 0.75, 0.0]], [3], [6])
     """

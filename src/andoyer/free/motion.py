@@ -29,10 +29,10 @@ from andoyer.free import series
 from andoyer.free import triaxial as _tri
 from andoyer.free import uniform as _uni
 from andoyer.free.blocks import Group, evaluate_blocks
-from andoyer.free.compiled_regime import classify_scaled
+from andoyer.free.compiled_regime import classify_and_scale
 from andoyer.free.compiled_setup import as_triaxial, triaxial_table
 from andoyer.free.lean import NUMBA
-from andoyer.free.regime import Regime, check_inputs, classify, normalise, polhode_frame
+from andoyer.free.regime import Regime, check_inputs, classify_scaled, normalise, polhode_frame
 
 __all__ = ["FreeMotion", "FreePeriods", "attitude", "momentum", "periods", "propagate"]
 
@@ -116,10 +116,10 @@ class FreeMotion:
         n = moments.shape[0]
         # solve the scaled problem (powers of two, exact): internal time 2^(b−a) t
         if NUMBA:
-            regime, moments, m0, a, b = classify_scaled(moments, m0)
+            regime, moments, m0, a, b = classify_and_scale(moments, m0)
         else:
-            regime = classify(moments, m0)
             moments, m0, a, b = normalise(moments, m0)
+            regime = classify_scaled(moments, m0)
         tshift = b - a
         self.regime = regime.reshape(shape)
         self._has_attitude = q0 is not None

@@ -34,7 +34,6 @@ from enum import IntEnum
 from typing import NamedTuple
 
 import numpy as np
-from scipy.spatial.transform import Rotation
 
 from andoyer.free.quaternion import qmul, shortest_arc
 from andoyer.special.compensated import dd_add, dd_div, dd_mul, dd_sqrt, two_prod, two_sum
@@ -45,6 +44,7 @@ __all__ = [
     "attitude_anchor",
     "check_inputs",
     "classify",
+    "classify_scaled",
     "normalise",
     "polhode_frame",
     "working_axes",
@@ -194,6 +194,27 @@ def classify(moments, m0):
     """
     moments, m0 = check_inputs(moments, m0)
     moments, m0, _, _ = normalise(moments, m0)
+    return classify_scaled(moments, m0)
+
+
+def classify_scaled(moments, m0):
+    """:func:`classify` for validated states already scaled by :func:`normalise`.
+
+    Parameters
+    ----------
+    moments, m0 : ndarray, shape (..., 3)
+        Output of :func:`normalise`.
+
+    Returns
+    -------
+    ndarray of int8, shape (...)
+        :class:`Regime` codes.
+
+    Examples
+    --------
+    >>> Regime(int(classify_scaled(np.array([0.375, 0.5, 0.75]), np.array([0.0, 0.75, 0.0])))).name
+    'SEPARATRIX'
+    """
     s = np.sort(moments, axis=-1)
     sign = _separatrix_sign(moments, m0)
     regime = np.where(sign > 0, Regime.SAM, np.where(sign < 0, Regime.LAM, Regime.SEPARATRIX))
@@ -355,10 +376,38 @@ def attitude_anchor(frame: PolhodeFrame, cols, q0):
     >>> U[:, 0].tolist(), V[:, 0].tolist()
     ([0.0, 0.0, 0.0, 1.0], [0.0, 0.0, 1.0, 0.0])
     """
-    pq = Rotation.from_matrix(np.moveaxis(cols, -1, 0)).as_quat()
-    q_rw = (Rotation.from_quat(q0) * Rotation.from_quat(pq).inv()).as_quat()
-    s0 = shortest_arc(frame.mw)
-    s0[:, :3] *= -1.0
-    q_0 = qmul(tuple(q_rw.T), tuple(s0.T))
-    pqt = tuple(pq.T)
+    pq = _matrix_quat(cols)
+    q_0 = qmul(qmul(tuple(q0.T), (-pq[0], -pq[1], -pq[2], pq[3])), tuple(shortest_arc(frame.mw).T * _CONJ))
+    pqt = tuple(pq)
     return np.stack(qmul(q_0, pqt)), np.stack(qmul(qmul(q_0, (0.0, 0.0, 1.0, 0.0)), pqt))
+
+
+_CONJ = np.array([-1.0, -1.0, -1.0, 1.0])[:, None]
+
+
+def _matrix_quat(cols):
+    """Quaternions ``(4, N)`` of the rotations with rows ``cols[j]`` (Shepperd's largest pivot).
+
+    The algorithm of ``scipy.spatial.transform.Rotation.from_matrix`` for exact rotation
+    matrices, without its per-call overhead (these are signed permutations).
+    """
+    M = np.moveaxis(cols, -1, 0)  # (N, 3, 3), M[:, j] = cols[j]
+    diag = np.stack([M[:, 0, 0], M[:, 1, 1], M[:, 2, 2]])
+    tr = diag.sum(axis=0)
+    choice = np.argmax(np.vstack([diag, tr]), axis=0)
+    q = np.empty((4, M.shape[0]))
+    for i in range(3):
+        sel = choice == i
+        j, k = (i + 1) % 3, (i + 2) % 3
+        Ms = M[sel]
+        q[i, sel] = 1.0 - tr[sel] + 2.0 * Ms[:, i, i]
+        q[j, sel] = Ms[:, j, i] + Ms[:, i, j]
+        q[k, sel] = Ms[:, k, i] + Ms[:, i, k]
+        q[3, sel] = Ms[:, k, j] - Ms[:, j, k]
+    sel = choice == 3
+    Ms = M[sel]
+    q[0, sel] = Ms[:, 2, 1] - Ms[:, 1, 2]
+    q[1, sel] = Ms[:, 0, 2] - Ms[:, 2, 0]
+    q[2, sel] = Ms[:, 1, 0] - Ms[:, 0, 1]
+    q[3, sel] = 1.0 + tr[sel]
+    return q / np.sqrt(np.sum(q * q, axis=0))
