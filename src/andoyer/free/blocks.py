@@ -31,9 +31,10 @@ class Group(NamedTuple):
     ----------
     kernel : callable
         ``kernel(constants, t, attitude) -> (m, q)`` on component tuples, the constants
-        of the block's states shaped as rows; or, for a kernel with the attribute
-        ``indexed = True``, ``kernel(const, positions, t, attitude)`` given the whole
-        table and the positions of the block's states in it (no gather).
+        of the block's states shaped as rows.  A kernel with an attribute ``fill``
+        (compiled, :func:`andoyer.free.compiled_eval.fill`) is instead handed the whole
+        table, the positions, the output rows, the unscaled times, the exponents and the
+        output arrays, and fills them itself.
     members : ndarray of int
         Flat indices of the states.
     const : NamedTuple
@@ -125,27 +126,27 @@ def _scale(x, exponent):
 
 def _run(group, rows, pos, t2, outs):
     """Evaluate one group on output rows ``rows`` (constants at ``pos``), block by block."""
+    fill = getattr(group.kernel, "fill", None)
+    if fill is not None:  # a compiled kernel that writes the outputs itself
+        fill(group.const, pos, rows, t2, (group.tshift, group.mshift), outs)
+        return
     m_out, q_out = outs
     ncols = t2.shape[1]
     cstep = min(ncols, _CHUNK)
     rstep = max(1, _CHUNK // cstep)
     per_row_t = t2.shape[0] > 1
     contiguous = rows.size > 0 and rows[-1] - rows[0] == rows.size - 1
-    indexed = getattr(group.kernel, "indexed", False)
     for r0 in range(0, rows.size, rstep):
         r_idx = rows[r0 : r0 + rstep]
         # a slice keeps the writes below in place; fancy indices would copy
         r_sel = slice(r_idx[0], r_idx[-1] + 1) if contiguous else r_idx
         p_rows = pos[r0 : r0 + rstep]
-        c_rows = None if indexed else _const.rows(group.const, p_rows)
+        c_rows = _const.rows(group.const, p_rows)
         tsh, msh = group.tshift[p_rows][:, None], group.mshift[p_rows][:, None]
         for c0 in range(0, ncols, cstep):
             cols = slice(c0, c0 + cstep)
             tc = _scale(t2[r_sel, cols] if per_row_t else t2[:, cols], tsh)
-            if indexed:
-                m, q = group.kernel(group.const, p_rows, tc, q_out is not None)
-            else:
-                m, q = group.kernel(c_rows, tc, q_out is not None)
+            m, q = group.kernel(c_rows, tc, q_out is not None)
             m = [_scale(comp, msh) for comp in m]
             for out, comps in ((m_out, m), (q_out, q)):
                 if out is None:

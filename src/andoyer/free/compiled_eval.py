@@ -20,7 +20,7 @@ from andoyer.free.lean import jit
 from andoyer.free.phase import _COS, _SIN
 from andoyer.free.scalar_dd import two_prod
 
-__all__ = ["evaluate"]
+__all__ = ["evaluate", "fill"]
 
 _NEGLIGIBLE = 1e-18
 
@@ -196,6 +196,70 @@ def _block(c, rows, t, m, q, attitude):
                     q[k, i, e] = qk[k]
 
 
+@jit
+def _fill(c, pos, rows, t, tshift, mshift, m_out, q_out, attitude):
+    per_row = t.shape[0] > 1
+    for i in range(rows.size):
+        r, o = pos[i], rows[i]
+        ts, ms = tshift[r], mshift[r]
+        exact = abs(ts) < 1000 and abs(ms) < 1000  # then products by the powers are exact
+        ft, fm = (2.0**ts, 2.0**ms) if exact else (1.0, 1.0)
+        for e in range(t.shape[1]):
+            m = m_out[o, e]
+            tk = t[o if per_row else 0, e]
+            _state(c, r, tk * ft if exact else math.ldexp(tk, ts), m, q_out[o, e], attitude)
+            for k in range(3):
+                m[k] = m[k] * fm if exact else math.ldexp(m[k], ms)
+
+
+def fill(c, pos, rows, t, scale, outs):
+    """Evaluate states straight into the output arrays of :func:`andoyer.free.blocks.evaluate_blocks`.
+
+    One compiled loop over states and epochs: the times scaled, the kernel, the momentum
+    scaled and stored, with no block temporaries.
+
+    Parameters
+    ----------
+    c : ndarray, shape (N, 58)
+        The table of :func:`andoyer.free.compiled_setup.triaxial_table`.
+    pos, rows : ndarray of int, shape (r,)
+        Rows of ``c`` and the output rows they fill.
+    t : ndarray, shape (rows_out, e) or (1, e)
+        Unscaled times, per output row or shared.
+    scale : tuple of ndarray, shape (N,)
+        Exponents ``(tshift, mshift)``: kernel time ``2^tshift t``, momentum ``2^mshift m``.
+    outs : tuple of ndarray
+        ``m_out`` of shape ``(rows_out, e, 3)`` and ``q_out`` of shape ``(rows_out, e, 4)``
+        or None.
+
+    Examples
+    --------
+    >>> from andoyer.free.compiled_setup import triaxial_table
+    >>> table, _ = triaxial_table(np.array([[0.25, 0.5, 0.75]]), np.array([[0.3, 0.2, 1.0]]),
+    ...                           np.array([False]))
+    >>> m = np.empty((1, 1, 3))
+    >>> one = np.array([0])
+    >>> fill(table, one, one, np.zeros((1, 1)), (one, np.array([1])), (m, None))
+    >>> m.round(14).tolist()
+    [[[0.6, 0.4, 2.0]]]
+    """
+    m_out, q_out = outs
+    attitude = q_out is not None
+    q = q_out if attitude else np.empty((m_out.shape[0], m_out.shape[1], 4))
+    tshift, mshift = (np.asarray(x, dtype=np.int64) for x in scale)
+    _fill(
+        c,
+        np.asarray(pos, dtype=np.intp),
+        np.asarray(rows, dtype=np.intp),
+        t,
+        tshift,
+        mshift,
+        m_out,
+        q,
+        attitude,
+    )
+
+
 def evaluate(c, rows, t, attitude=True):
     """Body angular momentum and attitude of triaxial states at times ``t`` (compiled).
 
@@ -233,4 +297,4 @@ def evaluate(c, rows, t, attitude=True):
     return tuple(m), (tuple(q) if attitude else None)
 
 
-evaluate.indexed = True  # andoyer.free.blocks passes the table and row indices, no gather
+evaluate.fill = fill  # andoyer.free.blocks fills its outputs through this, no blocks

@@ -3,13 +3,16 @@
 :func:`andoyer.free.triaxial.triaxial` forms the constants of many bodies with numpy:
 a few hundred passes over the arrays, most of them double-double arithmetic (the working
 frame and invariants of :func:`andoyer.free.regime.polhode_frame`, ``K`` and ``Π`` by the
-AGM, the frequencies), about 10 µs a body.  Here the same formulas, in the same order
-and the same double-double arithmetic (:mod:`andoyer.free.scalar_dd`), run per body in
-a numba kernel; ``K`` is taken from the AGM sequence of ``Π`` (the same sequence), the
-``ψ`` offset from the series at ``τ₀`` directly.  The result is a
-:class:`andoyer.free.triaxial.Triaxial` equal to the numpy one to a few ulps, for the
-numpy evaluation kernels.  :class:`andoyer.free.FreeMotion` uses it when numba is
-installed (:data:`andoyer.free.lean.NUMBA`).
+AGM, the frequencies), 6–10 µs a body.  Here the same formulas in the same double-double
+arithmetic (:mod:`andoyer.free.scalar_dd`: error-free products by fused multiply-add,
+one-correction division) run per body in a numba kernel, about 1 µs a body: ``K`` is
+taken from the AGM sequence of ``Π`` (the same sequence), ``K'`` from the nome, the ``ψ``
+offset from the series at ``τ₀`` directly, and without an attitude the quantities only
+the attitude needs (``Π``, the ``ϑ₁`` series) can be skipped.  The constants agree with
+the numpy ones to a few ulps (``tests/free/test_free_compiled.py``); they are stored one
+row per body, as :mod:`andoyer.free.compiled_eval` reads them.
+:class:`andoyer.free.FreeMotion` uses both when numba is installed
+(:data:`andoyer.free.lean.NUMBA`).
 """
 
 from __future__ import annotations
