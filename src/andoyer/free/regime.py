@@ -35,7 +35,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from andoyer.free.quaternion import qmul, shortest_arc
+from andoyer.free.quaternion import matrix_quat, qmul, shortest_arc
 from andoyer.special.compensated import dd_add, dd_div, dd_mul, dd_sqrt, two_prod, two_sum
 
 __all__ = [
@@ -376,38 +376,8 @@ def attitude_anchor(frame: PolhodeFrame, cols, q0):
     >>> U[:, 0].tolist(), V[:, 0].tolist()
     ([0.0, 0.0, 0.0, 1.0], [0.0, 0.0, 1.0, 0.0])
     """
-    pq = _matrix_quat(cols)
-    q_0 = qmul(qmul(tuple(q0.T), (-pq[0], -pq[1], -pq[2], pq[3])), tuple(shortest_arc(frame.mw).T * _CONJ))
+    pq = matrix_quat(cols)
+    arc = shortest_arc(frame.mw).T
+    q_0 = qmul(qmul(tuple(q0.T), (-pq[0], -pq[1], -pq[2], pq[3])), (-arc[0], -arc[1], -arc[2], arc[3]))
     pqt = tuple(pq)
     return np.stack(qmul(q_0, pqt)), np.stack(qmul(qmul(q_0, (0.0, 0.0, 1.0, 0.0)), pqt))
-
-
-_CONJ = np.array([-1.0, -1.0, -1.0, 1.0])[:, None]
-
-
-def _matrix_quat(cols):
-    """Quaternions ``(4, N)`` of the rotations with rows ``cols[j]`` (Shepperd's largest pivot).
-
-    The algorithm of ``scipy.spatial.transform.Rotation.from_matrix`` for exact rotation
-    matrices, without its per-call overhead (these are signed permutations).
-    """
-    M = np.moveaxis(cols, -1, 0)  # (N, 3, 3), M[:, j] = cols[j]
-    diag = np.stack([M[:, 0, 0], M[:, 1, 1], M[:, 2, 2]])
-    tr = diag.sum(axis=0)
-    choice = np.argmax(np.vstack([diag, tr]), axis=0)
-    q = np.empty((4, M.shape[0]))
-    for i in range(3):
-        sel = choice == i
-        j, k = (i + 1) % 3, (i + 2) % 3
-        Ms = M[sel]
-        q[i, sel] = 1.0 - tr[sel] + 2.0 * Ms[:, i, i]
-        q[j, sel] = Ms[:, j, i] + Ms[:, i, j]
-        q[k, sel] = Ms[:, k, i] + Ms[:, i, k]
-        q[3, sel] = Ms[:, k, j] - Ms[:, j, k]
-    sel = choice == 3
-    Ms = M[sel]
-    q[0, sel] = Ms[:, 2, 1] - Ms[:, 1, 2]
-    q[1, sel] = Ms[:, 0, 2] - Ms[:, 2, 0]
-    q[2, sel] = Ms[:, 1, 0] - Ms[:, 0, 1]
-    q[3, sel] = 1.0 + tr[sel]
-    return q / np.sqrt(np.sum(q * q, axis=0))
