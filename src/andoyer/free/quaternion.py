@@ -194,8 +194,8 @@ def matrix_quat(cols):
     Examples
     --------
     >>> cols = np.array([[0.0, 1.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])[..., None]
-    >>> matrix_quat(cols)[:, 0].round(12).tolist()  # a quarter turn about z
-    [0.0, 0.0, -0.707106781187, 0.707106781187]
+    >>> matrix_quat(cols)[:, 0].round(12).tolist()  # a quarter turn about -z (sign free)
+    [0.0, 0.0, 0.707106781187, -0.707106781187]
     """
     M = np.moveaxis(cols, -1, 0)  # (N, 3, 3), M[:, j] = cols[j]
     diag = np.stack([M[:, 0, 0], M[:, 1, 1], M[:, 2, 2]])
