@@ -14,6 +14,12 @@ Throughput counts (body, epoch) pairs per second including the per-body set-up.
 Accuracy is measured on a few bodies against the 57-digit Taylor-series reference of
 ``tests/free/free_reference.py`` at 100 periods.
 
+The "1 epoch per body" rows build the solution for every body and evaluate it once (at
+the body's last epoch, up to 100 periods), against heyoka's batch mode integrating each
+body from 0 to that epoch: the set-up is not amortised.  With numba installed
+:class:`andoyer.free.FreeMotion` builds and evaluates the triaxial solution in compiled
+loops; ``ANDOYER_NUMBA=0`` in the environment measures the numpy path.
+
 Run: ``python3 benchmarks/bench_free.py [--quick]``  (pins numpy to one thread; rates are
 per CPU second of this process, so they do not depend on other load on the machine).
 """
