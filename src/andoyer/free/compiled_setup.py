@@ -187,7 +187,10 @@ def _body(Ib, mb, lam, q0, out, i, full):
     q = _nome(min(m, 0.5), max(mch, 0.5)) if circ else _nome(min(mch, 0.5), max(m, 0.5))
     # K' from the nome q = exp(−πK'/K) (circular) or q' = exp(−πK/K') (hyperbolic), no
     # second AGM: K' enters only reduced phases
-    Kp = -Kh * math.log(q) / math.pi if circ else -math.pi * Kh / math.log(q)
+    if circ:
+        Kp = -Kh * math.log(q) / math.pi
+    else:  # (K' = K(m') → π/2 (1 + m'/4) where q' would underflow)
+        Kp = -math.pi * Kh / math.log(q) if q > 1e-300 else 0.5 * math.pi * (1.0 + 0.25 * mch)
     q2 = q * q
     q4 = q2 * q2
     q9 = q4 * q4 * q
