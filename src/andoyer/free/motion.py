@@ -11,11 +11,10 @@ Each state is routed to one kernel:
 * :mod:`andoyer.free.uniform` — axisymmetric bodies, spheres, steady spins about a
   principal axis and bodies at rest.
 
-With numba installed (:data:`andoyer.free.lean.NUMBA`) the triaxial states are
-classified, prepared and evaluated in compiled loops instead
-(:mod:`andoyer.free.compiled_regime`, :mod:`andoyer.free.compiled_setup`,
-:mod:`andoyer.free.compiled_eval`: the same formulas, ~1.5 µs a body to set up and
-evaluate once, against ~10 µs), to the same accuracy.
+With numba installed (:data:`andoyer.free.lean.NUMBA`) states are classified, and the
+triaxial ones prepared and evaluated, in compiled loops (:mod:`~andoyer.free.compiled_regime`,
+:mod:`~andoyer.free.compiled_setup`, :mod:`~andoyer.free.compiled_eval`: the same formulas
+and accuracy, ~1.5 µs a body to set up and evaluate once, against ~10 µs).
 
 Times are measured from the initial state.  Conventions (as the rest of ``andoyer``):
 moments ``I`` along body axes b1, b2, b3 in any order; body angular momentum ``m``;
