@@ -30,7 +30,11 @@ class Group(NamedTuple):
     Attributes
     ----------
     kernel : callable
-        ``kernel(constants, t, attitude) -> (m, q)`` on component tuples.
+        ``kernel(constants, t, attitude) -> (m, q)`` on component tuples, the constants
+        of the block's states shaped as rows.  A kernel with an attribute ``fill``
+        (compiled, :func:`andoyer.free.compiled_eval.fill`) is instead handed the whole
+        table, the positions, the output rows, the unscaled times, the exponents and the
+        output arrays, and fills them itself.
     members : ndarray of int
         Flat indices of the states.
     const : NamedTuple
@@ -122,6 +126,10 @@ def _scale(x, exponent):
 
 def _run(group, rows, pos, t2, outs):
     """Evaluate one group on output rows ``rows`` (constants at ``pos``), block by block."""
+    fill = getattr(group.kernel, "fill", None)
+    if fill is not None:  # a compiled kernel that writes the outputs itself
+        fill(group.const, pos, rows, t2, (group.tshift, group.mshift), outs)
+        return
     m_out, q_out = outs
     ncols = t2.shape[1]
     cstep = min(ncols, _CHUNK)

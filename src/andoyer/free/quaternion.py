@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["anchored_attitude", "qmul", "qmul_array", "shortest_arc"]
+__all__ = ["anchored_attitude", "matrix_quat", "qmul", "qmul_array", "shortest_arc"]
 
 
 def qmul(a, b):
@@ -173,3 +173,47 @@ def _qmul_accumulate(a, b, tmp):
                 r -= tmp
         out.append(r)
     return tuple(out)
+
+
+def matrix_quat(cols):
+    """Quaternions of rotations given by the rows of their matrices (Shepperd's largest pivot).
+
+    The algorithm of ``scipy.spatial.transform.Rotation.from_matrix`` for exact rotation
+    matrices (here signed permutations), without its per-call overhead.
+
+    Parameters
+    ----------
+    cols : ndarray, shape (3, 3, N)
+        ``cols[j][:, i]`` is row ``j`` of matrix ``i``.
+
+    Returns
+    -------
+    ndarray, shape (4, N)
+        Unit quaternions (scalar last).
+
+    Examples
+    --------
+    >>> cols = np.array([[0.0, 1.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])[..., None]
+    >>> matrix_quat(cols)[:, 0].round(12).tolist()  # a quarter turn about -z (sign free)
+    [0.0, 0.0, 0.707106781187, -0.707106781187]
+    """
+    M = np.moveaxis(cols, -1, 0)  # (N, 3, 3), M[:, j] = cols[j]
+    diag = np.stack([M[:, 0, 0], M[:, 1, 1], M[:, 2, 2]])
+    tr = diag.sum(axis=0)
+    choice = np.argmax(np.vstack([diag, tr]), axis=0)
+    q = np.empty((4, M.shape[0]))
+    for i in range(3):
+        sel = choice == i
+        j, k = (i + 1) % 3, (i + 2) % 3
+        Ms = M[sel]
+        q[i, sel] = 1.0 - tr[sel] + 2.0 * Ms[:, i, i]
+        q[j, sel] = Ms[:, j, i] + Ms[:, i, j]
+        q[k, sel] = Ms[:, k, i] + Ms[:, i, k]
+        q[3, sel] = Ms[:, k, j] - Ms[:, j, k]
+    sel = choice == 3
+    Ms = M[sel]
+    q[0, sel] = Ms[:, 2, 1] - Ms[:, 1, 2]
+    q[1, sel] = Ms[:, 0, 2] - Ms[:, 2, 0]
+    q[2, sel] = Ms[:, 1, 0] - Ms[:, 0, 1]
+    q[3, sel] = 1.0 + tr[sel]
+    return q / np.sqrt(np.sum(q * q, axis=0))

@@ -34,9 +34,8 @@ from enum import IntEnum
 from typing import NamedTuple
 
 import numpy as np
-from scipy.spatial.transform import Rotation
 
-from andoyer.free.quaternion import qmul, shortest_arc
+from andoyer.free.quaternion import matrix_quat, qmul, shortest_arc
 from andoyer.special.compensated import dd_add, dd_div, dd_mul, dd_sqrt, two_prod, two_sum
 
 __all__ = [
@@ -45,6 +44,7 @@ __all__ = [
     "attitude_anchor",
     "check_inputs",
     "classify",
+    "classify_scaled",
     "normalise",
     "polhode_frame",
     "working_axes",
@@ -194,6 +194,27 @@ def classify(moments, m0):
     """
     moments, m0 = check_inputs(moments, m0)
     moments, m0, _, _ = normalise(moments, m0)
+    return classify_scaled(moments, m0)
+
+
+def classify_scaled(moments, m0):
+    """:func:`classify` for validated states already scaled by :func:`normalise`.
+
+    Parameters
+    ----------
+    moments, m0 : ndarray, shape (..., 3)
+        Output of :func:`normalise`.
+
+    Returns
+    -------
+    ndarray of int8, shape (...)
+        :class:`Regime` codes.
+
+    Examples
+    --------
+    >>> Regime(int(classify_scaled(np.array([0.375, 0.5, 0.75]), np.array([0.0, 0.75, 0.0])))).name
+    'SEPARATRIX'
+    """
     s = np.sort(moments, axis=-1)
     sign = _separatrix_sign(moments, m0)
     regime = np.where(sign > 0, Regime.SAM, np.where(sign < 0, Regime.LAM, Regime.SEPARATRIX))
@@ -355,10 +376,8 @@ def attitude_anchor(frame: PolhodeFrame, cols, q0):
     >>> U[:, 0].tolist(), V[:, 0].tolist()
     ([0.0, 0.0, 0.0, 1.0], [0.0, 0.0, 1.0, 0.0])
     """
-    pq = Rotation.from_matrix(np.moveaxis(cols, -1, 0)).as_quat()
-    q_rw = (Rotation.from_quat(q0) * Rotation.from_quat(pq).inv()).as_quat()
-    s0 = shortest_arc(frame.mw)
-    s0[:, :3] *= -1.0
-    q_0 = qmul(tuple(q_rw.T), tuple(s0.T))
-    pqt = tuple(pq.T)
+    pq = matrix_quat(cols)
+    arc = shortest_arc(frame.mw).T
+    q_0 = qmul(qmul(tuple(q0.T), (-pq[0], -pq[1], -pq[2], pq[3])), (-arc[0], -arc[1], -arc[2], arc[3]))
+    pqt = tuple(pq)
     return np.stack(qmul(q_0, pqt)), np.stack(qmul(qmul(q_0, (0.0, 0.0, 1.0, 0.0)), pqt))

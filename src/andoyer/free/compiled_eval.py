@@ -1,0 +1,300 @@
+"""Per-epoch evaluation of the triaxial solution from its constant table, compiled by numba.
+
+The formulas of :mod:`andoyer.free.series` (double-double polhode and ``ψ`` phases,
+polynomial ``sin``/``cos`` of the reduced phases, Chebyshev multiples, the theta series of
+``sn, cn, dn`` and of ``ϑ₁``, the anchored attitude of
+:func:`andoyer.free.quaternion.anchored_attitude`), written for one state and one epoch
+at a time and looped over a block of states × epochs: no array temporaries, the circular
+and hyperbolic series chosen per state, the number of series terms per state (terms
+below 1e-18 dropped, as there).  The constants are the table of
+:func:`andoyer.free.compiled_setup.triaxial_table`.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from andoyer.free.lean import jit
+from andoyer.free.phase import _COS, _SIN
+from andoyer.free.scalar_dd import two_prod
+
+__all__ = ["evaluate", "fill"]
+
+_NEGLIGIBLE = 1e-18
+
+
+@jit
+def _count(powers):
+    """Number of leading series terms: the first, and those whose power of the nome is not negligible."""
+    n = 1
+    while n < len(powers) and powers[n] > _NEGLIGIBLE:
+        n += 1
+    return n
+
+
+@jit
+def _cycles(c, r, row, t):
+    """``offset + ν t`` reduced to ``[-1/2, 1/2]`` cycles, ``ν`` the double-double at ``row``."""
+    p, e = two_prod(c[r, row], t)
+    e += c[r, row + 1] * t
+    f = p - np.rint(p)
+    return f + e
+
+
+@jit
+def _sincos(f):
+    """``sin, cos(2πf)`` for ``|f| ≤ 1/2`` (the polynomials of :mod:`andoyer.free.phase`)."""
+    u = f * f
+    sh = _SIN[8]
+    ch = _COS[8]
+    for k in range(7, -1, -1):
+        sh = sh * u + _SIN[k]
+        ch = ch * u + _COS[k]
+    sh *= f
+    return 2.0 * sh * ch, (ch - sh) * (ch + sh)
+
+
+@jit
+def _circular(c, r, f, out_m):
+    """Momentum and ``(sn, cn, dn, f, x, y)`` by the circular series (``k² ≤ 1/2``).
+
+    All terms up to ``q¹⁶`` (``< 10⁻²¹`` at ``k² = 1/2``) and three of ``ϑ₁``, unrolled:
+    those the numpy kernel drops below 1e-18 change nothing at double precision.
+    """
+    q = c[r, 6]
+    s1, c1 = _sincos(f)
+    q2 = q * q
+    q4 = q2 * q2
+    q6 = q4 * q2
+    q8 = q4 * q4
+    c2 = 1.0 - 2.0 * s1 * s1
+    tc2 = c2 + c2
+    # sin, cos((2n+1)x) and cos(2nx) by the Chebyshev recurrence in 2 cos 2x
+    s3, c3 = s1 * (tc2 + 1.0), c1 * (tc2 - 1.0)
+    s5, c5 = tc2 * s3 - s1, tc2 * c3 - c1
+    s7, c7 = tc2 * s5 - s3, tc2 * c5 - c3
+    c4 = tc2 * c2 - 1.0
+    c6 = tc2 * c4 - c2
+    c8 = tc2 * c6 - c4
+    num_s = s1 - q2 * s3 + q6 * s5 - q6 * q6 * s7
+    num_c = c1 + q2 * c3 + q6 * c5 + q6 * q6 * c7
+    odd = q * c2 + q8 * q * c6
+    even = q4 * c4 + q8 * q8 * c8
+    inv = 1.0 / (1.0 + 2.0 * (even - odd))
+    th3 = 1.0 + 2.0 * (even + odd)
+    for k in range(3):
+        out_m[k] = inv * (c[r, 11 + k] * num_c + c[r, 14 + k] * num_s + c[r, 17 + k] * th3)
+    x = c[r, 25] * s1 + c[r, 26] * s3 + c[r, 27] * s5
+    y = c[r, 31] * c1 + c[r, 32] * c3 + c[r, 33] * c5
+    return c[r, 7] * inv * num_s, c[r, 8] * inv * num_c, c[r, 9] * inv * th3, f, x, y
+
+
+@jit
+def _hyperbolic(c, r, f, out_m, attitude):
+    """Momentum and ``(sn, cn, dn, f_w, x, y)`` by the hyperbolic series (``k² > 1/2``).
+
+    All terms up to ``q'¹⁶`` (``z = q'e^{2y} ≤ 1`` and ``ρ = e^{−2y} ≤ 1`` keep them
+    bounded), unrolled; the ``ϑ₁`` series grows like ``e^{2ny}`` and is cut where its
+    coefficients ``q*^{n²+n}`` fall below 1e-18, as in the numpy kernel.
+    """
+    q = c[r, 6]
+    j = np.rint(2.0 * f)
+    fw = f - 0.5 * j
+    zi = math.exp(-c[r, 10] * abs(fw))
+    rho = zi * zi
+    z = q / rho
+    q2 = q * q
+    q3 = q2 * q
+    q4 = q2 * q2
+    q6 = q3 * q3
+    q10 = q6 * q4
+    q12 = q6 * q6
+    z2, r2 = z * z, rho * rho
+    z3, r3 = z2 * z, r2 * rho
+    z4, r4 = z2 * z2, r2 * r2
+    # n-th terms: a = q^{n²} zⁿ, b = q^{n²+n} ρ^{n+1} (sh, ch); q^{n²−n} zⁿ + q^{n²} ρⁿ (t4, t3)
+    a1, a2, a3, a4 = q * z, q4 * z2, q6 * q3 * z3, q12 * q4 * z4
+    b1, b2, b3, b4 = q2 * r2, q6 * r3, q12 * r4, q10 * q10 * r4 * rho
+    sh = 1.0 - rho + (b1 - a1) + (a2 - b2) + (b3 - a3) + (a4 - b4)
+    ch = 1.0 + rho + (a1 + b1) + (a2 + b2) + (a3 + b3) + (a4 + b4)
+    e1, e2, e3, e4 = z + q * rho, q2 * z2 + q4 * r2, q6 * z3 + q6 * q3 * r3, q12 * z4 + q12 * q4 * r4
+    t4 = 1.0 - e1 + e2 - e3 + e4
+    t3 = 1.0 + e1 + e2 + e3 + e4
+    inv = 1.0 / ch
+    sgn = 1.0 - 2.0 * abs(j)  # (−1)^j for sn and cn
+    sh = math.copysign(sh, fw) * (sgn * inv)
+    t4 *= sgn * inv * zi
+    t3 *= inv * zi
+    for k in range(3):
+        out_m[k] = c[r, 11 + k] * t4 + c[r, 14 + k] * sh + c[r, 17 + k] * t3
+    if not attitude:
+        return 0.0, 0.0, 0.0, fw, 0.0, 0.0
+    n_w = _count((1.0, q, q3, q6, q10, q12 * q3))  # q*^{n² + n}, q* = √q
+    up, down = 1.0, zi
+    x = c[r, 25] * (1.0 + zi)
+    y = c[r, 31] * (1.0 - zi)
+    for n in range(1, n_w):
+        up /= zi
+        down *= zi
+        x += c[r, 25 + n] * (up + down)
+        y += c[r, 31 + n] * (up - down)
+    return c[r, 7] * sh, c[r, 8] * t4, c[r, 9] * t3, fw, x, -y if fw < 0 else y
+
+
+@jit
+def _state(c, r, t, out_m, out_q, attitude):
+    """Momentum (and attitude) of the state in column ``r`` at the scaled time ``t``."""
+    f = _cycles(c, r, 1, t) + c[r, 5]
+    f -= np.rint(f)
+    if c[r, 0] > 0:
+        sn, cn, dn, f_lin, x, y = _circular(c, r, f, out_m)
+    else:
+        sn, cn, dn, f_lin, x, y = _hyperbolic(c, r, f, out_m, attitude)
+    if not attitude:
+        return
+    g = _cycles(c, r, 21, t) + c[r, 38]
+    g = 0.5 * (g - np.rint(g)) + c[r, 37] * f_lin
+    g -= np.rint(g)
+    sb, cb = _sincos(g)
+    inv = 1.0 / math.sqrt(x * x + y * y)
+    x *= inv
+    y *= inv
+    cz, sz = cb * x - sb * y, cb * y + sb * x
+    G = c[r, 53]
+    w = c[r, 54] * dn + G
+    inv = 1.0 / math.sqrt(2.0 * G * w)
+    xa, xb = sn * inv, cn * inv
+    bx = c[r, 47] * xa + c[r, 50] * xb
+    by = c[r, 48] * xa + c[r, 51] * xb
+    bz = c[r, 49] * xa + c[r, 52] * xb
+    bw = w * inv
+    ax = c[r, 39] * cz + c[r, 43] * sz
+    ay = c[r, 40] * cz + c[r, 44] * sz
+    az = c[r, 41] * cz + c[r, 45] * sz
+    aw = c[r, 42] * cz + c[r, 46] * sz
+    out_q[0] = aw * bx + ax * bw + ay * bz - az * by
+    out_q[1] = aw * by - ax * bz + ay * bw + az * bx
+    out_q[2] = aw * bz + ax * by - ay * bx + az * bw
+    out_q[3] = aw * bw - ax * bx - ay * by - az * bz
+
+
+@jit
+def _block(c, rows, t, m, q, attitude):
+    mk = np.empty(3)
+    qk = np.empty(4)
+    per_row = t.shape[0] > 1
+    for i in range(rows.size):
+        r = rows[i]
+        for e in range(t.shape[1]):
+            _state(c, r, t[i if per_row else 0, e], mk, qk, attitude)
+            for k in range(3):
+                m[k, i, e] = mk[k]
+            if attitude:
+                for k in range(4):
+                    q[k, i, e] = qk[k]
+
+
+@jit
+def _fill(c, pos, rows, t, tshift, mshift, m_out, q_out, attitude):
+    per_row = t.shape[0] > 1
+    for i in range(rows.size):
+        r, o = pos[i], rows[i]
+        ts, ms = tshift[r], mshift[r]
+        exact = abs(ts) < 1000 and abs(ms) < 1000  # then products by the powers are exact
+        ft, fm = (2.0**ts, 2.0**ms) if exact else (1.0, 1.0)
+        for e in range(t.shape[1]):
+            m = m_out[o, e]
+            tk = t[o if per_row else 0, e]
+            _state(c, r, tk * ft if exact else math.ldexp(tk, ts), m, q_out[o, e], attitude)
+            for k in range(3):
+                m[k] = m[k] * fm if exact else math.ldexp(m[k], ms)
+
+
+def fill(c, pos, rows, t, scale, outs):
+    """Evaluate states straight into the output arrays of :func:`andoyer.free.blocks.evaluate_blocks`.
+
+    One compiled loop over states and epochs: the times scaled, the kernel, the momentum
+    scaled and stored, with no block temporaries.
+
+    Parameters
+    ----------
+    c : ndarray, shape (N, 58)
+        The table of :func:`andoyer.free.compiled_setup.triaxial_table`.
+    pos, rows : ndarray of int, shape (r,)
+        Rows of ``c`` and the output rows they fill.
+    t : ndarray, shape (rows_out, e) or (1, e)
+        Unscaled times, per output row or shared.
+    scale : tuple of ndarray, shape (N,)
+        Exponents ``(tshift, mshift)``: kernel time ``2^tshift t``, momentum ``2^mshift m``.
+    outs : tuple of ndarray
+        ``m_out`` of shape ``(rows_out, e, 3)`` and ``q_out`` of shape ``(rows_out, e, 4)``
+        or None.
+
+    Examples
+    --------
+    >>> from andoyer.free.compiled_setup import triaxial_table
+    >>> table, _ = triaxial_table(np.array([[0.25, 0.5, 0.75]]), np.array([[0.3, 0.2, 1.0]]),
+    ...                           np.array([False]))
+    >>> m = np.empty((1, 1, 3))
+    >>> one = np.array([0])
+    >>> fill(table, one, one, np.zeros((1, 1)), (one, np.array([1])), (m, None))
+    >>> m.round(14).tolist()
+    [[[0.6, 0.4, 2.0]]]
+    """
+    m_out, q_out = outs
+    attitude = q_out is not None
+    q = q_out if attitude else np.empty((m_out.shape[0], m_out.shape[1], 4))
+    tshift, mshift = (np.asarray(x, dtype=np.int64) for x in scale)
+    _fill(
+        c,
+        np.asarray(pos, dtype=np.intp),
+        np.asarray(rows, dtype=np.intp),
+        t,
+        tshift,
+        mshift,
+        m_out,
+        q,
+        attitude,
+    )
+
+
+def evaluate(c, rows, t, attitude=True):
+    """Body angular momentum and attitude of triaxial states at times ``t`` (compiled).
+
+    Parameters
+    ----------
+    c : ndarray, shape (N, 58)
+        The table of :func:`andoyer.free.compiled_setup.triaxial_table`.
+    rows : ndarray of int, shape (r,)
+        The states to evaluate (rows of ``c``).
+    t : ndarray, shape (r, e) or (1, e)
+        Scaled times: per state or shared.
+    attitude : bool, optional
+        Also return the attitude quaternion components.
+
+    Returns
+    -------
+    m : tuple of 3 ndarray, shape (r, e)
+    q : tuple of 4 ndarray, shape (r, e), or None
+
+    Examples
+    --------
+    >>> from andoyer.free.compiled_setup import triaxial_table
+    >>> table, _ = triaxial_table(np.array([[0.25, 0.5, 0.75]]), np.array([[0.3, 0.2, 1.0]]),
+    ...                           np.array([False]), np.array([[0.0, 0.0, 0.0, 1.0]]))
+    >>> m, q = evaluate(table, np.array([0]), np.zeros((1, 2)))
+    >>> np.round(m, 14).tolist(), np.round(q, 14)[:, 0, 0].tolist()
+    ([[[0.3, 0.3]], [[0.2, 0.2]], [[1.0, 1.0]]], [0.0, 0.0, 0.0, 1.0])
+    """
+    rows = np.asarray(rows, dtype=np.intp)
+    t = np.asarray(t, dtype=np.float64)
+    shape = (rows.size, t.shape[1])
+    m = np.empty((3, *shape))
+    q = np.empty((4, *shape)) if attitude else np.empty((4, 0, 0))
+    _block(c, rows, t, m, q, attitude)
+    return tuple(m), (tuple(q) if attitude else None)
+
+
+evaluate.fill = fill  # andoyer.free.blocks fills its outputs through this, no blocks

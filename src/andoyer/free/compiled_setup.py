@@ -1,0 +1,393 @@
+"""The constants of the triaxial solution, built body by body in one compiled loop.
+
+:func:`andoyer.free.triaxial.triaxial` forms the constants of many bodies with numpy:
+a few hundred passes over the arrays, most of them double-double arithmetic (the working
+frame and invariants of :func:`andoyer.free.regime.polhode_frame`, ``K`` and ``Π`` by the
+AGM, the frequencies), 6–10 µs a body.  Here the same formulas in the same double-double
+arithmetic (:mod:`andoyer.free.scalar_dd`: error-free products by fused multiply-add,
+one-correction division) run per body in a numba kernel, about 1 µs a body: ``K`` is
+taken from the AGM sequence of ``Π`` (the same sequence), ``K'`` from the nome, the ``ψ``
+offset from the series at ``τ₀`` directly, and without an attitude the quantities only
+the attitude needs (``Π``, the ``ϑ₁`` series) can be skipped.  The constants agree with
+the numpy ones to a few ulps (``tests/free/test_free_compiled.py``); they are stored one
+row per body, as :mod:`andoyer.free.compiled_eval` reads them.
+:class:`andoyer.free.FreeMotion` uses both when numba is installed
+(:data:`andoyer.free.lean.NUMBA`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from andoyer.free.compiled_eval import _count
+from andoyer.free.lean import carlson_rf, jit
+from andoyer.free.phase import Frequency
+from andoyer.free.scalar_dd import (
+    dd_add,
+    dd_div,
+    dd_mul,
+    dd_sqrt,
+    ellipk_dd,
+    ellippi_dd,
+    split,
+    two_prod,
+    two_sum,
+)
+from andoyer.free.triaxial import Triaxial
+
+__all__ = ["as_triaxial", "triaxial_table"]
+
+_PI_HI, _PI_LO = 3.141592653589793, 1.2246467991473532e-16
+_ROWS = 58  # rows of the output table, laid out in triaxial_table
+
+
+@jit
+def _inv_diff(s, Ii, Ij):
+    dh, dl = two_sum(Ij, -Ii)
+    ph, pl = two_prod(Ii, Ij)
+    return dd_div(s * dh, s * dl, ph, pl)
+
+
+@jit
+def _nome(p, pc):
+    kc = math.sqrt(pc)
+    eps = p / (2.0 * (1.0 + kc) * (1.0 + math.sqrt(kc)) ** 2)
+    e4 = eps**4
+    return eps * (1.0 + e4 * (2.0 + e4 * (15.0 + e4 * (150.0 + e4 * (1707.0 + e4 * 20910.0)))))
+
+
+@jit
+def _qmul(a, b):
+    ax, ay, az, aw = a
+    bx, by, bz, bw = b
+    return (
+        aw * bx + ax * bw + ay * bz - az * by,
+        aw * by - ax * bz + ay * bw + az * bx,
+        aw * bz + ax * by - ay * bx + az * bw,
+        aw * bw - ax * bx - ay * by - az * bz,
+    )
+
+
+@jit
+def _entry(perm, sign, a, b):
+    return sign[a] if perm[a] == b else 0.0
+
+
+@jit
+def _perm_quat(perm, sign):
+    """Quaternion of the rotation whose matrix has rows ``sign[j] e_{perm[j]}`` (Shepperd)."""
+    d0, d1, d2 = _entry(perm, sign, 0, 0), _entry(perm, sign, 1, 1), _entry(perm, sign, 2, 2)
+    tr = d0 + d1 + d2
+    big = max(d0, d1, d2)
+    if tr >= big:
+        q = (
+            _entry(perm, sign, 2, 1) - _entry(perm, sign, 1, 2),
+            _entry(perm, sign, 0, 2) - _entry(perm, sign, 2, 0),
+            _entry(perm, sign, 1, 0) - _entry(perm, sign, 0, 1),
+            1.0 + tr,
+        )
+    else:
+        i = 0 if d0 == big else (1 if d1 == big else 2)
+        j, k = (i + 1) % 3, (i + 2) % 3
+        vi = 1.0 - tr + 2.0 * big
+        vj = _entry(perm, sign, j, i) + _entry(perm, sign, i, j)
+        vk = _entry(perm, sign, k, i) + _entry(perm, sign, i, k)
+        w = _entry(perm, sign, k, j) - _entry(perm, sign, j, k)
+        if i == 0:
+            q = (vi, vj, vk, w)
+        elif i == 1:
+            q = (vk, vi, vj, w)
+        else:
+            q = (vj, vk, vi, w)
+    r = 1.0 / math.sqrt(q[0] ** 2 + q[1] ** 2 + q[2] ** 2 + q[3] ** 2)
+    return q[0] * r, q[1] * r, q[2] * r, q[3] * r
+
+
+@jit
+def _psi_offset(circ, f0, q, wa, wb, kk, slope):
+    """``ψ`` offset (cycles) that makes ``Δψ(0) = 0``: minus the series' phase at ``τ₀``."""
+    f = f0 - np.rint(f0)
+    if circ:
+        lin = f
+        q2 = q * q
+        n_w = _count((1.0, q2, q2 * q2 * q2 * q2))  # as andoyer.free.series
+        re = im = 0.0
+        sn, cs = math.sin(2.0 * math.pi * f), math.cos(2.0 * math.pi * f)
+        s2, c2 = 2.0 * sn * cs, (cs - sn) * (cs + sn)
+        for n in range(n_w):  # sin, cos((2n+1)x) by turns of 2x
+            re += wa[n] * sn
+            im += wb[n] * cs
+            sn, cs = sn * c2 + cs * s2, cs * c2 - sn * s2
+    else:
+        lin = f - 0.5 * np.rint(2.0 * f)
+        zi = math.exp(-kk * abs(lin))
+        q3 = q * q * q
+        n_w = _count((1.0, q, q3, q3 * q3, q3 * q3 * q3 * q, q3 * q3 * q3 * q3 * q3))  # q*^{n² + n}
+        re, im = wa[0] * (1.0 + zi), wb[0] * (1.0 - zi)
+        up, down = 1.0, zi
+        for n in range(1, n_w):
+            up /= zi
+            down *= zi
+            re += wa[n] * (up + down)
+            im += wb[n] * (up - down)
+        if lin < 0:
+            im = -im
+    a = 2.0 * slope * lin + math.atan2(im, re) / math.pi  # half-turns
+    return -(a - 2.0 * np.rint(0.5 * a))
+
+
+@jit
+def _body(Ib, mb, lam, q0, out, i, full):
+    """Constants of body ``i`` into column ``i`` of ``out`` (see :func:`triaxial_table`)."""
+    # working frame: axis 3 the polhode axis (C for SAM, A for LAM), axis 2 the middle one
+    o0, o1, o2 = 0, 1, 2  # stable sort of three moments
+    if Ib[o1] < Ib[o0]:
+        o0, o1 = o1, o0
+    if Ib[o2] < Ib[o1]:
+        o1, o2 = o2, o1
+        if Ib[o1] < Ib[o0]:
+            o0, o1 = o1, o0
+    perm = (o2, o1, o0) if lam else (o0, o1, o2)
+    inv = int(perm[0] > perm[1]) + int(perm[0] > perm[2]) + int(perm[1] > perm[2])
+    parity = 1.0 - 2.0 * (inv % 2)
+    s3 = -1.0 if mb[perm[2]] < 0 else 1.0
+    sign = (1.0, parity * s3, s3)
+    I1, I2, I3 = Ib[perm[0]], Ib[perm[1]], Ib[perm[2]]
+    mw = (mb[perm[0]], mb[perm[1]] * sign[1], mb[perm[2]] * s3)
+    s = -1.0 if lam else 1.0
+    e12h, e12l = _inv_diff(s, I1, I2)
+    e13h, e13l = _inv_diff(s, I1, I3)
+    e23h, e23l = _inv_diff(s, I2, I3)
+    x0h, x0l = two_prod(mw[0], mw[0])
+    x1h, x1l = two_prod(mw[1], mw[1])
+    x2h, x2l = two_prod(mw[2], mw[2])
+    P1h, P1l = dd_add(*dd_mul(x0h, x0l, e13h, e13l), *dd_mul(x1h, x1l, e23h, e23l))
+    out[i, 57] = 1.0 if P1h == 0.0 else 0.0
+    if P1h == 0.0:  # a steady spin: FreeMotion routes it elsewhere
+        return
+    P3h, P3l = dd_add(*dd_mul(x1h, x1l, e12h, e12l), *dd_mul(x2h, x2l, e13h, e13l))
+    th, tl = dd_mul(x0h, x0l, e12h, e12l)
+    P2h, P2l = dd_add(*dd_mul(x2h, x2l, e23h, e23l), -th, -tl)
+    Gh, Gl = dd_sqrt(*dd_add(*dd_add(x0h, x0l, x1h, x1l), x2h, x2l))
+    w3h, w3l = dd_div(1.0, 0.0, I3, 0.0)
+    # amplitudes, modulus, K, Π (andoyer.free.triaxial)
+    a1, a2, a3 = math.sqrt(P1h / e13h), math.sqrt(P1h / e23h), math.sqrt(P3h / e13h)
+    dnh, dnl = dd_mul(e23h, e23l, P3h, P3l)
+    m = dd_div(*dd_mul(e12h, e12l, P1h, P1l), dnh, dnl)[0]
+    mch, mcl = dd_div(*dd_mul(e13h, e13l, P2h, P2l), dnh, dnl)
+    if full:  # Π(−κ²|m) for the secular rate of ψ, and K from the same AGM
+        k2h, k2l = dd_div(e12h, e12l, e23h, e23l)
+        p3h, p3l, Kh, Kl = ellippi_dd(-k2h, -k2l, mch, mcl)
+    else:  # the momentum needs K only
+        p3h = p3l = 0.0
+        Kh, Kl = ellipk_dd(mch, mcl)
+    circ = m <= 0.5
+    q = _nome(min(m, 0.5), max(mch, 0.5)) if circ else _nome(min(mch, 0.5), max(m, 0.5))
+    # K' from the nome q = exp(−πK'/K) (circular) or q' = exp(−πK/K') (hyperbolic), no
+    # second AGM: K' enters only reduced phases
+    if circ:
+        Kp = -Kh * math.log(q) / math.pi
+    else:  # (K' = K(m') → π/2 (1 + m'/4) where q' would underflow)
+        Kp = -math.pi * Kh / math.log(q) if q > 1e-300 else 0.5 * math.pi * (1.0 + 0.25 * mch)
+    q2 = q * q
+    q4 = q2 * q2
+    q9 = q4 * q4 * q
+    t2 = 1.0 + q2 * (1.0 + q4 * (1.0 + q2 * q4))
+    th3 = 1.0 + 2.0 * (q + q4 + q9)
+    th4 = 1.0 - 2.0 * (q - q4 + q9)
+    c_sn = th3 / t2 if circ else th3 / th4
+    c_cn = th4 / t2 if circ else 2.0 * t2 / th4
+    c_dn = th4 / th3 if circ else 2.0 * t2 / th3
+    nuh, nul = dd_div(*dd_sqrt(dnh, dnl), 4.0 * Kh, 4.0 * Kl)
+    # initial phase τ₀ = F(am τ₀ | m) from the measured cn, sn, dn
+    cn0, sn0, dn0 = mw[0] / a1, mw[1] / (s * a2), mw[2] / a3
+    rf = carlson_rf(cn0 * cn0, dn0 * dn0, 1.0)
+    tau0 = sn0 * rf if cn0 >= 0 else math.copysign(2.0 * Kh, sn0) - sn0 * rf
+    kk = 2.0 * math.pi * Kh / Kp
+    period = 1.0 / nuh
+    frac0 = tau0 / (4.0 * Kh)
+    nhh, nhl = split(nuh)
+    row = (1.0 if circ else 0.0, nuh, nul, nhh, nhl, frac0, q, c_sn, c_cn, c_dn, kk)
+    for r in range(11):
+        out[i, r] = row[r]
+    # working axis j is sign[j] times body axis perm[j]
+    out[i, 11 + perm[0]] = a1 * c_cn
+    out[i, 14 + perm[1]] = s * a2 * c_sn * sign[1]
+    out[i, 17 + perm[2]] = a3 * c_dn * s3
+    out[i, 47 + perm[0]] = s * a2
+    out[i, 50 + perm[1]] = -a1 * sign[1]
+    out[i, 53] = Gh
+    out[i, 54] = a3
+    out[i, 55] = period
+    out[i, 20] = s
+    if not full:
+        out[i, 56] = math.nan  # the precession rate needs Π
+        return
+    kappa2 = e12h / e23h
+    v1 = carlson_rf(kappa2, kappa2 + m, 1.0 + kappa2)
+    wa = out[i, 25:31]  # views into the table: no allocation per body
+    wb = out[i, 31:37]
+    if circ:
+        eta = math.exp(-math.pi * v1 / Kh)
+        head, tail = 1.0, q2 / eta  # q^{2n²} ηⁿ and q^{2(n+1)²} η^{−n−1}
+        up, down = q2, q2 * q2 * q2  # their ratios q^{2(2n+1)}, q^{2(2n+3)} (but η)
+        for n in range(3):
+            sgn = 1.0 - 2.0 * (n % 2)
+            wa[n] = sgn * (head + tail)
+            wb[n] = sgn * (head - tail) * s
+            head *= up * eta
+            tail *= down / eta
+            up *= q2 * q2
+            down *= q2 * q2
+    else:
+        ang = -0.5 * math.pi + 0.25 * math.pi * v1 / Kp
+        sn, cs = math.sin(ang), math.cos(ang)
+        s2, c2 = 2.0 * sn * cs, (cs - sn) * (cs + sn)
+        amp, step = 1.0, 1.0  # (−1)ⁿ q*^{n² + n}; ratio q*^{2n+2} = q^{n+1}
+        for n in range(6):  # (−1)ⁿ q*^{n²+n} times sin, cos((2n+1)a), by turns of 2a
+            wa[n] = amp * sn
+            wb[n] = amp * cs * s
+            sn, cs = sn * c2 + cs * s2, cs * c2 - sn * s2
+            step *= q
+            amp *= -step
+    # secular rate of ψ (andoyer.free.triaxial._secular_rate)
+    ch, cl = dd_div(*dd_sqrt(*dd_div(P3h, P3l, e13h, e13l)), Gh, Gl)
+    rh, rl = dd_sqrt(*dd_div(e23h, e23l, e13h, e13l))
+    th, tl = dd_mul(*dd_mul(ch, cl, rh, rl), 0.5 * _PI_HI, 0.5 * _PI_LO)
+    bh, bl = dd_add(p3h, p3l, -th, -tl)
+    crh, crl = dd_div(*dd_mul(*dd_mul(Gh, Gl, e13h, e13l), bh, bl), Kh, Kl)
+    rate_h, rate_l = dd_add(*dd_mul(Gh, Gl, w3h, w3l), s * crh, s * crl)
+    psh, psl = dd_div(rate_h, rate_l, 2.0 * _PI_HI, 2.0 * _PI_LO)
+    slope = s if circ else s * 0.5 * v1 / Kp
+    phh, phl = split(psh)
+    row4 = (psh, psl, phh, phl)
+    for r in range(4):
+        out[i, 21 + r] = row4[r]
+    out[i, 37] = slope
+    out[i, 56] = rate_h + 2.0 * math.pi * s / period
+    if q0.shape[0] == 0:
+        return
+    out[i, 38] = _psi_offset(circ, frac0, q, wa, wb, kk, slope)
+    # U = Q₀ ⊗ P, V = Q₀ ⊗ e_z ⊗ P (andoyer.free.regime.attitude_anchor)
+    pq = _perm_quat(perm, sign)
+    q_rw = _qmul((q0[i, 0], q0[i, 1], q0[i, 2], q0[i, 3]), (-pq[0], -pq[1], -pq[2], pq[3]))
+    w = Gh + mw[2]
+    nrm = math.sqrt(2.0 * Gh * w)
+    q_0 = _qmul(q_rw, (-mw[1] / nrm, mw[0] / nrm, 0.0, w / nrm))
+    U = _qmul(q_0, pq)
+    V = _qmul(_qmul(q_0, (0.0, 0.0, 1.0, 0.0)), pq)
+    for k in range(4):
+        out[i, 39 + k] = U[k]
+        out[i, 43 + k] = V[k]
+
+
+@jit
+def _all(moments, m0, lam, q0, out, full):
+    for i in range(moments.shape[0]):
+        _body(moments[i], m0[i], lam[i], q0, out, i, full)
+
+
+def triaxial_table(moments, m0, lam, q0=None, rate=True):
+    """Constants of the triaxial solution as one table, rows in the order of :class:`Triaxial`.
+
+    Parameters
+    ----------
+    moments, m0 : ndarray, shape (N, 3)
+        Strictly triaxial moments and body angular momenta, off the separatrix, scaled
+        by :func:`andoyer.free.regime.normalise`.
+    lam : ndarray of bool, shape (N,)
+        True for LAM states.
+    q0 : ndarray, shape (N, 4), optional
+        Initial attitude quaternions (unit, scalar last, body → reference).
+    rate : bool, optional
+        Compute the secular rate of ``ψ`` (the precession rate) even without ``q0``.
+        ``False`` without ``q0`` skips the quantities only the attitude needs (``Π``,
+        the ``ϑ₁`` series; about half the cost): the table is good for the momentum, its
+        precession rate is ``nan``.
+
+    Returns
+    -------
+    table : ndarray, shape (M, 58)
+        One row per state that is not a steady spin (the constants of a state lie
+        together in memory, as the compiled evaluation reads them); columns: ``circular`` (1 or 0),
+        ``nu`` (hi, lo, hh, hl), ``frac0``, ``q``, ``c_sn``, ``c_cn``, ``c_dn``, ``kk``,
+        ``mu_cn``, ``mu_sn``, ``mu_dn`` (3 each), ``s``, ``nu_psi`` (4), ``wa``, ``wb``
+        (6 each), ``slope``, ``psi0``, ``quat_u``, ``quat_v`` (4 each), ``v_sn``, ``v_cn``
+        (3 each), ``G``, ``a3``, ``period``, ``precession_rate``, and a last column of zeros.
+    flat : ndarray of bool, shape (N,)
+        States whose wobble ``P₁`` underflows to zero: steady spins about the polhode
+        axis, which have no column.
+
+    Examples
+    --------
+    >>> table, flat = triaxial_table(np.array([[0.25, 0.5, 0.75]]), np.array([[0.3, 0.2, 1.0]]),
+    ...                              np.array([False]))
+    >>> table.shape, round(float(table[0, 55]) * 4, 10), flat.tolist()  # time scales as I
+    ((1, 58), 20.2049347381, [False])
+    """
+    n = moments.shape[0]
+    out = np.zeros((n, _ROWS))
+    q = np.zeros((0, 4)) if q0 is None else np.ascontiguousarray(q0, dtype=np.float64)
+    _all(
+        np.ascontiguousarray(moments, dtype=np.float64),
+        np.ascontiguousarray(m0, dtype=np.float64),
+        np.ascontiguousarray(lam, dtype=np.bool_),
+        q,
+        out,
+        bool(rate or q0 is not None),
+    )
+    flat = out[:, 57] > 0
+    if np.any(flat):
+        out = out[~flat]
+    return out, flat
+
+
+def as_triaxial(table):
+    """The :class:`Triaxial` constants of a table from :func:`triaxial_table` (views).
+
+    Parameters
+    ----------
+    table : ndarray, shape (N, 58)
+
+    Returns
+    -------
+    Triaxial
+
+    Examples
+    --------
+    >>> table, _ = triaxial_table(np.array([[0.25, 0.5, 0.75]]), np.array([[0.3, 0.2, 1.0]]),
+    ...                           np.array([False]))
+    >>> as_triaxial(table).mu_cn.shape
+    (3, 1)
+    """
+    out = table.T
+    freq = lambda r: Frequency(out[r], out[r + 1], out[r + 2], out[r + 3])  # noqa: E731
+    return Triaxial(
+        circular=out[0] > 0,
+        nu=freq(1),
+        frac0=out[5],
+        q=out[6],
+        c_sn=out[7],
+        c_cn=out[8],
+        c_dn=out[9],
+        kk=out[10],
+        mu_cn=out[11:14],
+        mu_sn=out[14:17],
+        mu_dn=out[17:20],
+        s=out[20],
+        nu_psi=freq(21),
+        wa=out[25:31],
+        wb=out[31:37],
+        slope=out[37],
+        psi0=out[38],
+        quat_u=out[39:43],
+        quat_v=out[43:47],
+        v_sn=out[47:50],
+        v_cn=out[50:53],
+        G=out[53],
+        a3=out[54],
+        period=out[55],
+        precession_rate=out[56],
+    )
