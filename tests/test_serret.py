@@ -203,7 +203,9 @@ def test_default_branch_is_the_last_passage_before_t(name, regime, rng):
     assert np.array_equal(np.round(n), np.floor((times - fixed.t0) / period[:, None]))
     assert np.all(np.round(n[:, -1]) >= 11)
     shift = np.round(n) * (w.omega_g * period)[:, None]
-    assert np.abs(circle(moving.g0 - fixed.g0 - shift)).max() <= 1e-9
+    # The shift is tens of thousands of radians for the Earth (ω_g P ≈ 7e3): the free flow's
+    # period and the chart's 2π/ω_ℓ agree to ~1e-14 relative, an error the shift multiplies.
+    assert np.all(np.abs(circle(moving.g0 - fixed.g0 - shift)) <= 1e-9 + 1e-13 * np.abs(shift))
 
 
 def test_relation_to_serrets_own_time_origin(rng):
