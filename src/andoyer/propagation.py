@@ -35,8 +35,6 @@ from numpy.typing import ArrayLike
 from andoyer.integrate.averaged import integrate_secular, secular_parts
 from andoyer.integrate.reference import integrate_reference
 from andoyer.integrate.splitting import integrate_splitting
-from andoyer.perturbations.base import SumOfPerturbations
-from andoyer.perturbations.frame import PrecessingFrame
 from andoyer.perturbations.model import Model
 from andoyer.state import State
 
@@ -48,24 +46,6 @@ METHODS: dict[str, tuple[str, ...]] = {
     "splitting": ("step", "order", "t0"),
     "secular": ("t0", "rtol"),
 }
-
-
-def _check_splitting_model(model: Model) -> None:
-    perturbation = model.perturbation
-    parts = (
-        []
-        if perturbation is None
-        else list(perturbation.models)
-        if isinstance(perturbation, SumOfPerturbations)
-        else [perturbation]
-    )
-    for part in parts:
-        if not isinstance(part, PrecessingFrame) and not (part.hamiltonian and part.attitude_only):
-            msg = (
-                "expected Hamiltonian attitude-only models or precessing frames for method='splitting', "
-                f"got {part!r} (use method='reference')"
-            )
-            raise ValueError(msg)
 
 
 def propagate(model: Model, state: State, t: ArrayLike, method: str = "reference", **options: Any) -> State:
@@ -142,7 +122,6 @@ def propagate(model: Model, state: State, t: ArrayLike, method: str = "reference
         if "step" not in options:
             msg = "expected a step for method='splitting' (e.g. step=0.01), got none"
             raise ValueError(msg)
-        _check_splitting_model(model)
         return integrate_splitting(model, state, t, **options)
     secular_parts(model)
     return integrate_secular(model, state, t, **options)

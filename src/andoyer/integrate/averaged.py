@@ -64,7 +64,7 @@ def secular_parts(model: Model) -> tuple[SecularGravityGradient, list[Precessing
         msg = f"expected an andoyer Model, got {type(model).__name__}"
         raise ValueError(msg)
     perturbers, frames = [], []
-    for item in model.perturbations:
+    for item in model.parts:
         if isinstance(item, PrecessingFrame):
             frames.append(item)
             continue

@@ -23,7 +23,7 @@ from scipy.integrate import solve_ivp
 from andoyer._validation import as_finite
 from andoyer.integrate.output import gather_states, output_times
 from andoyer.integrate.reference_heyoka import _propagate_heyoka
-from andoyer.perturbations.base import Perturbation, SumOfPerturbations
+from andoyer.perturbations.base import Perturbation
 from andoyer.perturbations.frame import PrecessingFrame
 from andoyer.perturbations.gravity import GravityGradient
 from andoyer.perturbations.heavy_top import HeavyTop
@@ -301,15 +301,7 @@ def _term(part: Perturbation) -> Term:
 
 def _rhs(model: Model, n: int) -> Callable[[float, Array], Array]:
     """The hub equations of ``n`` bodies on the flat state ``(q (n, 4), m (n, 3))``."""
-    perturbation = model.perturbation
-    parts = (
-        []
-        if perturbation is None
-        else list(perturbation.models)
-        if isinstance(perturbation, SumOfPerturbations)
-        else [perturbation]
-    )
-    terms = [_term(part) for part in parts]
+    terms = [_term(part) for part in model.parts]
     c1, c2, c3 = model.body.euler_coefficients.tolist()
     I1, I2, I3 = model.body.moments.tolist()
 

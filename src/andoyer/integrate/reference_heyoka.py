@@ -32,7 +32,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from andoyer.perturbations.base import Perturbation, SumOfPerturbations
+from andoyer.perturbations.base import Perturbation
 from andoyer.perturbations.frame import PrecessingFrame
 from andoyer.perturbations.gravity import GravityGradient
 from andoyer.perturbations.heavy_top import HeavyTop
@@ -149,13 +149,6 @@ def _to_body(q: Sequence[Any], v: Sequence[Any]) -> list[Any]:
     return [v[i] + q[3] * t[i] + ut[i] for i in range(3)]
 
 
-def _parts(model: Model) -> list[Perturbation]:
-    perturbation = model.perturbation
-    if perturbation is None:
-        return []
-    return list(perturbation.models) if isinstance(perturbation, SumOfPerturbations) else [perturbation]
-
-
 def _check_supported(part: Perturbation) -> None:
     ok = (
         (
@@ -210,7 +203,7 @@ def heyoka_system(
     ...
     ValueError: expected gravity gradients of Kepler/circular orbits, ...UserTorque... (use method='dop853')
     """
-    parts = _parts(model)
+    parts = list(model.parts)
     for part in parts:
         _check_supported(part)
     hy = _heyoka_module()

@@ -29,14 +29,21 @@ from andoyer import _quaternion as quat
 from andoyer.free.lean import NUMBA, free_step
 from andoyer.integrate.output import gather_states, output_times
 from andoyer.integrate.split_kernel import run_tabulated
-from andoyer.perturbations.base import Perturbation, SumOfPerturbations
+from andoyer.perturbations.base import Perturbation
 from andoyer.perturbations.frame import PrecessingFrame
 from andoyer.perturbations.gravity import GravityGradient
 from andoyer.perturbations.heavy_top import HeavyTop
 from andoyer.perturbations.model import Model
 from andoyer.state import State
 
-__all__ = ["COMPOSITIONS", "exact_free_flow", "integrate_splitting", "split_step", "splitting_coefficients"]
+__all__ = [
+    "COMPOSITIONS",
+    "exact_free_flow",
+    "integrate_splitting",
+    "split_step",
+    "splitting_coefficients",
+    "splitting_parts",
+]
 
 Array = NDArray[np.float64]
 
@@ -77,22 +84,21 @@ def splitting_coefficients(order: int) -> list[float]:
 COMPOSITIONS = {order: splitting_coefficients(order) for order in (2, 4, 6)}
 
 
-def _parts(perturbation: Perturbation | None) -> tuple[list[Perturbation], list[PrecessingFrame]]:
-    models = (
-        []
-        if perturbation is None
-        else (list(perturbation.models) if isinstance(perturbation, SumOfPerturbations) else [perturbation])
-    )
+def splitting_parts(model: Model) -> tuple[list[Perturbation], list[PrecessingFrame]]:
+    """The kicks (attitude-only Hamiltonian terms) and precessing frames of ``model``.
+
+    Raises ``ValueError`` for any other term: its flow is not a kick or a frame rotation.
+    """
     kicks, frames = [], []
-    for model in models:
-        if isinstance(model, PrecessingFrame):
-            frames.append(model)
-        elif model.hamiltonian and model.attitude_only:
-            kicks.append(model)
+    for part in model.parts:
+        if isinstance(part, PrecessingFrame):
+            frames.append(part)
+        elif part.hamiltonian and part.attitude_only:
+            kicks.append(part)
         else:
             msg = (
-                "expected Hamiltonian attitude-only models or precessing frames for splitting, "
-                f"got {model!r} (use method='reference')"
+                "expected Hamiltonian attitude-only models or precessing frames for method='splitting', "
+                f"got {part!r} (use method='reference')"
             )
             raise ValueError(msg)
     return kicks, frames
@@ -144,7 +150,7 @@ def split_step(
     [[0.0, 0.0, 1.0]]
     """
     flow = exact_free_flow if free_flow is None else free_flow
-    kicks, frames = _parts(model.perturbation)
+    kicks, frames = splitting_parts(model)
     moments = model.body.moments
     time = t
     for weight in COMPOSITIONS[order]:
@@ -321,7 +327,7 @@ def integrate_splitting(
         msg = f"expected a positive finite step, got {step!r}"
         raise ValueError(msg)
     splitting_coefficients(order)
-    kicks, frames = _parts(model.perturbation)
+    kicks, frames = splitting_parts(model)
     tables = _Tables(kicks, frames, order) if _tabulable(kicks) else None
     times, unique, shape = output_times(state, t)
     q0 = state.quaternion.reshape(-1, 4)

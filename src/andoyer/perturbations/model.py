@@ -27,10 +27,14 @@ class Model:
     >>> model = Model(RigidBody(1, 1, 1.5), HeavyTop(1.0, [0, 0, 0.2]))
     >>> model.is_free, model.perturbation.hamiltonian
     (False, True)
+    >>> len(Model(RigidBody(1, 1, 1.5), [HeavyTop(1.0, [0, 0, 1]) + HeavyTop(2.0, [0, 0, 1])]).parts)
+    2
     """
 
     body: RigidBody
     perturbations: Perturbation | Sequence[Perturbation] = field(default_factory=tuple)
+    #: The elementary perturbations, sums flattened (what integrators dispatch on).
+    parts: tuple[Perturbation, ...] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         if not isinstance(self.body, RigidBody):
@@ -46,6 +50,8 @@ class Model:
                 msg = f"expected Perturbation models, got {type(item).__name__}"
                 raise ValueError(msg)
         object.__setattr__(self, "perturbations", items)
+        flat = SumOfPerturbations(items).models if items else ()
+        object.__setattr__(self, "parts", flat)
 
     @property
     def is_free(self) -> bool:
