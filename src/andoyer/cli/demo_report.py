@@ -135,14 +135,15 @@ def section_sam(ctx: DemoContext) -> str:
     body = ctx.body
     free = FreeRotation(body)
     mode = "LAM" if body.rotation_mode(ctx.state.m_body) == RotationMode.LAM else "SAM"
+    theories = [SAMRotation(body, order=order, mode=mode) for order in SAM_ORDERS]
     rows = []
     for nutation in SAM_NUTATIONS:
         state = demo_state(ctx.name, nutation)
         t = float(free.periods(state).period)
         exact = free.propagate(state, t)
         row = [f"{nutation:g}"]
-        for order in SAM_ORDERS:
-            series = SAMRotation(body, order=order, mode=mode).propagate(state, t)
+        for theory in theories:
+            series = theory.propagate(state, t)
             err = np.linalg.norm(series.m_body - exact.m_body) / np.linalg.norm(exact.m_body)
             row.append(f"{float(err):.1e}")
         rows.append(row)
