@@ -46,8 +46,8 @@ sys.path.insert(0, str(ROOT / "tests" / "free"))
 
 from free_reference import TaylorReference, angle_between, relative_error  # noqa: E402
 
+from andoyer._jit import NUMBA  # noqa: E402
 from andoyer.free import FreeMotion  # noqa: E402
-from andoyer.free.lean import NUMBA  # noqa: E402
 
 try:  # optional peer
     import heyoka as hy

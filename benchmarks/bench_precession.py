@@ -49,7 +49,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 
 from andoyer import State, bodies  # noqa: E402
-from andoyer.free.lean import NUMBA  # noqa: E402
+from andoyer._jit import NUMBA  # noqa: E402
 from andoyer.integrate import integrate_reference  # noqa: E402
 from andoyer.integrate.reference_heyoka import heyoka_system  # noqa: E402
 from andoyer.integrate.secular import SecularGravityGradient  # noqa: E402

@@ -41,6 +41,7 @@ def random_states(rng: np.random.Generator, n: int) -> tuple[np.ndarray, np.ndar
 def rng() -> np.random.Generator:
     return np.random.default_rng(20261121)
 
+
 # --- ensembles (tests/ensemble) ---
 
 

@@ -11,6 +11,7 @@ import pytest
 from scipy.spatial.transform import Rotation
 
 from andoyer import RigidBody, State
+from andoyer import _jit as andoyer_jit
 from andoyer.free import FreeMotion, Regime, classify, lean
 from andoyer.integrate import integrate_reference, splitting
 from andoyer.integrate.splitting import integrate_splitting
@@ -104,15 +105,24 @@ def test_lean_free_step_leaves_the_separatrix_to_free_motion():
     assert dq <= 1e-15
 
 
+def _fresh_copy(monkeypatch, module, name):
+    spec = importlib.util.spec_from_file_location(name, Path(module.__file__))
+    copy = importlib.util.module_from_spec(spec)
+    monkeypatch.setitem(sys.modules, name, copy)
+    spec.loader.exec_module(copy)
+    return copy
+
+
 def _load_interpreted(monkeypatch):
-    """A fresh copy of ``andoyer.free.lean`` imported with ``ANDOYER_NUMBA=0`` (no compilation)."""
+    """A fresh copy of ``andoyer.free.lean`` imported with ``ANDOYER_NUMBA=0`` (no compilation).
+
+    Its ``jit`` decorator comes from a fresh copy of ``andoyer._jit`` read under the same
+    environment, so none of its kernels is compiled.
+    """
     monkeypatch.setenv("ANDOYER_NUMBA", "0")
-    path = Path(lean.__file__)
-    spec = importlib.util.spec_from_file_location("andoyer_lean_interpreted", path)
-    module = importlib.util.module_from_spec(spec)
-    monkeypatch.setitem(sys.modules, "andoyer_lean_interpreted", module)
-    spec.loader.exec_module(module)
-    return module
+    plain_jit = _fresh_copy(monkeypatch, andoyer_jit, "andoyer_jit_interpreted")
+    monkeypatch.setitem(sys.modules, "andoyer._jit", plain_jit)
+    return _fresh_copy(monkeypatch, lean, "andoyer_lean_interpreted")
 
 
 def test_lean_free_step_rejects_mismatched_shapes():
@@ -123,6 +133,7 @@ def test_lean_free_step_rejects_mismatched_shapes():
 def test_lean_interpreted_fallback_agrees_with_compiled(monkeypatch):
     plain = _load_interpreted(monkeypatch)
     assert not plain.NUMBA
+    assert not hasattr(plain._step_one, "py_func")  # plain Python, not a numba dispatcher
     q, m = _states(11, 8, TRIAXIAL)
     for moments in (TRIAXIAL, REGIME_BODIES["oblate"].moments):
         q1, m1 = plain.free_step(moments, q, m, 0.3)

@@ -82,8 +82,13 @@ def test_heavy_top_andoyer_flow_matches_euler_poisson(name):
     m_ref, gamma_ref = integrate_euler_poisson(body, top, M0, GAMMA0, t)
     z0 = e3_to_andoyer(M0, GAMMA0)
     sol = solve_ivp(
-        heavy_top_rhs(body, top, z0.H), (t[0], t[-1]), [z0.l, z0.g, z0.L, z0.G],
-        t_eval=t, method="DOP853", rtol=1e-13, atol=1e-14,
+        heavy_top_rhs(body, top, z0.H),
+        (t[0], t[-1]),
+        [z0.l, z0.g, z0.L, z0.G],
+        t_eval=t,
+        method="DOP853",
+        rtol=1e-13,
+        atol=1e-14,
     )
     assert sol.success
     l, g, L, G = sol.y

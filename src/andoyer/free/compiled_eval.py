@@ -16,7 +16,7 @@ import math
 
 import numpy as np
 
-from andoyer.free.lean import jit
+from andoyer._jit import jit
 from andoyer.free.phase import _COS, _SIN
 from andoyer.free.scalar_dd import two_prod
 

@@ -13,7 +13,7 @@ import math
 
 import numpy as np
 
-from andoyer.free.lean import jit
+from andoyer._jit import jit
 from andoyer.free.regime import Regime
 from andoyer.free.scalar_dd import dd_add, dd_mul, two_prod, two_sum
 

@@ -12,7 +12,7 @@ the attitude needs (``Π``, the ``ϑ₁`` series) can be skipped.  The constants
 the numpy ones to a few ulps (``tests/free/test_free_compiled.py``); they are stored one
 row per body, as :mod:`andoyer.free.compiled_eval` reads them.
 :class:`andoyer.free.FreeMotion` uses both when numba is installed
-(:data:`andoyer.free.lean.NUMBA`).
+(:data:`andoyer._jit.NUMBA`).
 """
 
 from __future__ import annotations
@@ -21,8 +21,9 @@ import math
 
 import numpy as np
 
+from andoyer._jit import jit
 from andoyer.free.compiled_eval import _count
-from andoyer.free.lean import carlson_rf, jit
+from andoyer.free.lean import carlson_rf
 from andoyer.free.phase import Frequency
 from andoyer.free.scalar_dd import (
     dd_add,

@@ -35,30 +35,12 @@ compiled. :func:`free_step` is the array entry point.
 from __future__ import annotations
 
 import math
-import os
 
 import numpy as np
 
-try:  # optional: compiled kernels (ANDOYER_NUMBA=0 turns them off)
-    import numba as _numba
-except ImportError:  # pragma: no cover - depends on the environment
-    _numba = None
-if os.environ.get("ANDOYER_NUMBA", "1") == "0":  # pragma: no cover - depends on the environment
-    _numba = None
-NUMBA = _numba is not None
+from andoyer._jit import NUMBA, jit
 
 __all__ = ["NUMBA", "am", "carlson_rf", "carlson_rj", "free_step", "jit"]
-
-
-def jit(function):
-    """``numba.njit(cache=True)`` when numba is installed, else the function itself.
-
-    ``ANDOYER_NUMBA=0`` in the environment (read at import) forces the interpreted
-    path, which the tests also run.
-    """
-    if _numba is None:  # pragma: no cover - depends on the environment
-        return function
-    return _numba.njit(cache=True, error_model="numpy")(function)
 
 
 _EPS = 2.220446049250313e-16

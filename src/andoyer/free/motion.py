@@ -11,7 +11,7 @@ Each state is routed to one kernel:
 * :mod:`andoyer.free.uniform` — axisymmetric bodies, spheres, steady spins about a
   principal axis and bodies at rest.
 
-With numba installed (:data:`andoyer.free.lean.NUMBA`) states are classified, and the
+With numba installed (:data:`andoyer._jit.NUMBA`) states are classified, and the
 triaxial ones prepared and evaluated, in compiled loops (:mod:`~andoyer.free.compiled_regime`,
 :mod:`~andoyer.free.compiled_setup`, :mod:`~andoyer.free.compiled_eval`: the same formulas
 and accuracy, ~1.5 µs a body to set up and evaluate once, against ~10 µs).
@@ -27,6 +27,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from andoyer._jit import NUMBA
 from andoyer.free import compiled_eval as _ceval
 from andoyer.free import constants as _const
 from andoyer.free import separatrix as _sep
@@ -36,7 +37,6 @@ from andoyer.free import uniform as _uni
 from andoyer.free.blocks import Group, evaluate_blocks
 from andoyer.free.compiled_regime import classify_and_scale
 from andoyer.free.compiled_setup import as_triaxial, triaxial_table
-from andoyer.free.lean import NUMBA
 from andoyer.free.regime import Regime, check_inputs, classify_scaled, normalise, polhode_frame
 
 __all__ = ["FreeMotion", "FreePeriods", "attitude", "momentum", "periods", "propagate"]

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import math
 
-from andoyer.free.lean import NUMBA, jit
+from andoyer._jit import NUMBA, jit
 
 __all__ = [
     "dd_add",

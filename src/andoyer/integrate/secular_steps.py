@@ -41,7 +41,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
-from andoyer.free.lean import NUMBA, jit
+from andoyer._jit import NUMBA, jit
 
 __all__ = ["COMPOSITIONS", "propagate_controlled", "propagate_rotations"]
 

@@ -28,7 +28,8 @@ import math
 
 import numpy as np
 
-from andoyer.free.lean import _qmul, _step_one, jit
+from andoyer._jit import jit
+from andoyer.free.lean import _qmul, _step_one
 
 __all__ = ["run_tabulated"]
 

@@ -1,0 +1,40 @@
+"""Optional compilation of the scalar kernels with numba (the ``fast`` extra).
+
+``NUMBA`` tells whether numba is importable and not switched off; :func:`jit` compiles a
+function with ``numba.njit(cache=True)`` when it is, and returns it unchanged otherwise, so
+every kernel also runs (slowly, but identically) as plain Python. ``ANDOYER_NUMBA=0`` in the
+environment, read at import, forces the interpreted path, which the tests also run.
+"""
+
+from __future__ import annotations
+
+import os
+
+try:
+    import numba as _numba
+except ImportError:  # pragma: no cover - depends on the environment
+    _numba = None
+if os.environ.get("ANDOYER_NUMBA", "1") == "0":  # pragma: no cover - depends on the environment
+    _numba = None
+
+#: Whether the kernels decorated with :func:`jit` are compiled.
+NUMBA = _numba is not None
+
+__all__ = ["NUMBA", "jit"]
+
+
+def jit(function):
+    """``numba.njit(cache=True)`` when numba is installed, else the function itself.
+
+    Examples
+    --------
+    A kernel compiled (or not) this way is called like any function; Carlson's
+    ``R_F(0, 1, 2)`` (DLMF 19.20.1: the lemniscate constant ``Γ(1/4)²/(4√(2π))``):
+
+    >>> from andoyer.free.lean import carlson_rf
+    >>> round(float(carlson_rf(0.0, 1.0, 2.0)), 13)
+    1.3110287771461
+    """
+    if _numba is None:  # pragma: no cover - depends on the environment
+        return function
+    return _numba.njit(cache=True, error_model="numpy")(function)
