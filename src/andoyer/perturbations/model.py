@@ -35,6 +35,7 @@ class Model:
     perturbations: Perturbation | Sequence[Perturbation] = field(default_factory=tuple)
     #: The elementary perturbations, sums flattened (what integrators dispatch on).
     parts: tuple[Perturbation, ...] = field(init=False, repr=False, compare=False)
+    _sum: Perturbation | None = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         if not isinstance(self.body, RigidBody):
@@ -50,8 +51,9 @@ class Model:
                 msg = f"expected Perturbation models, got {type(item).__name__}"
                 raise ValueError(msg)
         object.__setattr__(self, "perturbations", items)
-        flat = SumOfPerturbations(items).models if items else ()
-        object.__setattr__(self, "parts", flat)
+        total = None if not items else items[0] if len(items) == 1 else SumOfPerturbations(items)
+        object.__setattr__(self, "_sum", total)
+        object.__setattr__(self, "parts", () if total is None else SumOfPerturbations([total]).models)
 
     @property
     def is_free(self) -> bool:
@@ -61,8 +63,4 @@ class Model:
     @property
     def perturbation(self) -> Perturbation | None:
         """The sum of the perturbations, or ``None`` for the free body."""
-        if not self.perturbations:
-            return None
-        if len(self.perturbations) == 1:
-            return self.perturbations[0]
-        return SumOfPerturbations(self.perturbations)
+        return self._sum
