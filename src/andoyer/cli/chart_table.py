@@ -10,7 +10,7 @@ import numpy as np
 
 from andoyer import bodies
 from andoyer.body import RigidBody
-from andoyer.cli.output import CliError
+from andoyer.cli.output import CliError, read_csv_columns
 from andoyer.state import State
 
 
@@ -100,3 +100,15 @@ def times_from_args(args: argparse.Namespace) -> np.ndarray:
         msg = f"expected finite times, got {times.tolist()!r}"
         raise CliError(msg)
     return times
+
+
+def chart_columns_from_args(args: argparse.Namespace, source: ChartColumns) -> dict[str, np.ndarray]:
+    """The columns of chart ``source`` given by ``--values X ...`` (one state) or ``--input CSV``."""
+    if args.values is not None:
+        if len(args.values) != len(source.columns):
+            msg = (
+                f"expected {len(source.columns)} values ({', '.join(source.columns)}), got {len(args.values)}"
+            )
+            raise CliError(msg)
+        return {c: np.array([v]) for c, v in zip(source.columns, args.values, strict=True)}
+    return read_csv_columns(args.input, source.columns)

@@ -6,8 +6,8 @@ import argparse
 
 import numpy as np
 
-from andoyer.cli.chart_table import CHARTS, add_body_arguments, body_from_args
-from andoyer.cli.output import CliError, atomic_output, format_rows, read_csv_columns
+from andoyer.cli.chart_table import CHARTS, add_body_arguments, body_from_args, chart_columns_from_args
+from andoyer.cli.output import atomic_output, format_rows
 
 EXAMPLES = """examples:
   andoyer convert --from andoyer --to euler --values 0.1 0.2 0.3 0.9 1.0 0.5
@@ -39,15 +39,7 @@ def register(commands: argparse._SubParsersAction) -> None:
 def run(args: argparse.Namespace) -> int:
     """Read, convert and write."""
     source, target = CHARTS[args.source], CHARTS[args.target]
-    if args.values is not None:
-        if len(args.values) != len(source.columns):
-            msg = (
-                f"expected {len(source.columns)} values ({', '.join(source.columns)}), got {len(args.values)}"
-            )
-            raise CliError(msg)
-        columns = {c: np.array([v]) for c, v in zip(source.columns, args.values, strict=True)}
-    else:
-        columns = read_csv_columns(args.input, source.columns)
+    columns = chart_columns_from_args(args, source)
     if args.degrees:
         columns = {c: np.radians(v) if c in source.angles else v for c, v in columns.items()}
     body = body_from_args(args) if (source.needs_body or target.needs_body) else None

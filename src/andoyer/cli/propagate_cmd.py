@@ -11,10 +11,11 @@ from andoyer.cli.chart_table import (
     add_body_arguments,
     add_time_arguments,
     body_from_args,
+    chart_columns_from_args,
     times_from_args,
 )
 from andoyer.cli.named_models import MODELS, add_model_arguments, model_from_args
-from andoyer.cli.output import CliError, atomic_output, format_rows, read_csv_columns
+from andoyer.cli.output import CliError, atomic_output, format_rows
 from andoyer.free import FreeRotation
 from andoyer.propagation import propagate
 
@@ -70,15 +71,7 @@ def run(args: argparse.Namespace) -> int:
     options = _method_options(args, method)
     source = CHARTS[args.source]
     target = CHARTS[args.target or args.source]
-    if args.values is not None:
-        if len(args.values) != len(source.columns):
-            msg = (
-                f"expected {len(source.columns)} values ({', '.join(source.columns)}), got {len(args.values)}"
-            )
-            raise CliError(msg)
-        columns = {c: np.array([v]) for c, v in zip(source.columns, args.values, strict=True)}
-    else:
-        columns = read_csv_columns(args.input, source.columns)
+    columns = chart_columns_from_args(args, source)
     times = times_from_args(args)
     state = source.to_state([columns[c] for c in source.columns], body)
     if method == "exact":
