@@ -206,3 +206,32 @@ def test_ensemble_propagator_with_wrong_shape_is_reported():
             scheduler="synchronous",
             progress=False,
         )
+
+
+@pytest.mark.slow  # spawns a worker process (5-25 s here)
+def test_local_client_workers_are_quiet_and_keep_their_allocator():
+    import os
+
+    import dask
+
+    from andoyer.ensemble import local_client
+    from andoyer.ensemble.runner import QUIET_CLUSTER_CONFIG
+
+    def worker_settings():
+        return {key: dask.config.get(key) for key in QUIET_CLUSTER_CONFIG}, os.environ.get(
+            "MALLOC_TRIM_THRESHOLD_"
+        )
+
+    with local_client(1) as client:
+        ((settings, trim),) = client.run(worker_settings).values()
+    # the values as a worker process reads them back (durations may come back as given)
+    assert settings == QUIET_CLUSTER_CONFIG
+    assert trim is None
+
+
+def test_ensemble_default_chunk_is_about_two_to_the_18_pairs():
+    from andoyer.ensemble.layout import EnsembleSpec
+
+    for n_times in (1, 10, 37, 2**18, 2**19):
+        spec = EnsembleSpec.build(AndoyerSampler(), FreePropagator(EROS), 10**7, np.zeros(n_times))
+        assert spec.chunk == max(1, 2**18 // n_times)

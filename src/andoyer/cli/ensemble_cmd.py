@@ -31,7 +31,7 @@ def register(commands: argparse._SubParsersAction) -> None:
     parser.add_argument("--samples", type=int, required=True, metavar="N", help="number of initial states")
     add_time_arguments(parser)
     parser.add_argument("--out", required=True, metavar="FILE", help="FILE.zarr or FILE.nc")
-    parser.add_argument("--chunk", type=int, metavar="K", help="samples per chunk (default ~2^20 pairs)")
+    parser.add_argument("--chunk", type=int, metavar="K", help="samples per chunk (default ~2^18 pairs)")
     parser.add_argument("--workers", type=int, default=2, metavar="W", help="local cluster workers")
     parser.add_argument("--scheduler", metavar="ADDR", help="Dask scheduler address, e.g. tcp://host:8786")
     parser.add_argument("--seed", type=int, default=0, metavar="S")

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import contextlib
+import itertools
 import os
 import uuid
 from collections.abc import Callable, Iterator
@@ -52,13 +53,29 @@ def _worker_environ() -> dict[str, Any]:
     return {k: v for k, v in environ.items() if k != "MALLOC_TRIM_THRESHOLD_"}
 
 
+#: Dask settings of :func:`local_client`. Idle, Dask's defaults cost a local cluster of two
+#: workers about 18 % of one core (measured: 8 % in the client and scheduler, 5 % in each
+#: worker): the statistical profiler samples each worker's stack every 10 ms, the GIL and
+#: system monitors poll every 1 ms and 500 ms, the event-loop tick runs every 20 ms. On a
+#: machine with a core per worker that is taken from the workers (with these settings: 2.5 %).
+#: The dashboard's profile page stays empty; pass your own ``Client`` to keep it.
+QUIET_CLUSTER_CONFIG: dict[str, Any] = {
+    "distributed.worker.profile.enabled": False,
+    "distributed.admin.system-monitor.interval": "2s",
+    "distributed.admin.system-monitor.gil.enabled": False,
+    "distributed.admin.tick.interval": "200ms",
+    "distributed.worker.memory.monitor-interval": "1s",
+}
+
+
 @contextlib.contextmanager
 def local_client(n_workers: int = 2, processes: bool = True) -> Iterator[Any]:
     """A ``distributed.Client`` on a ``LocalCluster`` set up for ensembles, closed on exit.
 
     ``n_workers`` single-threaded workers (processes, or threads of this process with
-    ``processes=False``), the dashboard on a free loopback port, and worker processes
-    started without Dask's ``MALLOC_TRIM_THRESHOLD_`` (see :func:`_worker_environ`).
+    ``processes=False``), the dashboard on a free loopback port, worker processes
+    started without Dask's ``MALLOC_TRIM_THRESHOLD_`` (see :func:`_worker_environ`), and
+    Dask's profiler and monitors quietened (:data:`QUIET_CLUSTER_CONFIG`).
     Pass it as ``scheduler=`` to run several ensembles on one cluster.
 
     Parameters
@@ -88,7 +105,7 @@ def local_client(n_workers: int = 2, processes: bool = True) -> Iterator[Any]:
     # One thread per worker: the kernel is numpy-bound and holds the GIL part of the
     # time, so processes (not threads) are what scale.
     with (
-        dask.config.set({"distributed.nanny.pre-spawn-environ": _worker_environ()}),
+        dask.config.set({**QUIET_CLUSTER_CONFIG, "distributed.nanny.pre-spawn-environ": _worker_environ()}),
         LocalCluster(
             n_workers=int(n_workers),
             threads_per_worker=1,
@@ -176,7 +193,7 @@ def run_ensemble(
         ``*.zarr`` (written chunk by chunk) or ``*.nc`` (NetCDF3 via scipy, written at the
         end, atomically). ``None``: keep the result in memory (not resumable).
     chunk : int, optional
-        Samples per chunk; default about 2²⁰ (sample, epoch) pairs per chunk. Part of the
+        Samples per chunk; default about 2¹⁸ (sample, epoch) pairs per chunk. Part of the
         numbers' identity: the same ``(seed, chunk)`` gives the same samples.
     seed : int
         Non-negative seed.
@@ -297,41 +314,51 @@ def _submit_windowed(
     bar: Any,
     on_chunk: Callable[[int], None] | None,
 ) -> None:
-    """Keep about two chunks per worker thread in flight, submitting the next as one completes.
+    """Keep a few chunks per worker thread in flight, topping the window up in batches.
 
-    The window bounds the memory of the scheduler and of an in-memory result, and makes
-    an interruption clean: on any exception (a failed chunk, the callback, Ctrl-C) no new
-    chunk starts, the few in flight are allowed to finish writing (a second Ctrl-C
-    abandons them), and the exception propagates. Nothing is written after this returns.
+    The window (four chunks per worker thread when writing to a store, whose results are
+    mere indices; two when the arrays come back here) bounds the memory of the scheduler
+    and of an in-memory result, and makes an interruption clean: on any exception (a
+    failed chunk, the callback, Ctrl-C) no new chunk starts, the few in flight are allowed
+    to finish writing (a second Ctrl-C abandons them), and the exception propagates.
+    Nothing is written after this returns. Refilling half a window at a time with one
+    ``client.map`` costs the client about 2 ms of CPU per chunk instead of 5 ms for one
+    ``submit`` per chunk (measured on a local cluster): on a machine with no spare core
+    that CPU is taken from the workers.
     """
     from distributed import as_completed, wait
 
     run_id = uuid.uuid4().hex[:12]
-    window = max(4, 2 * sum(client.nthreads().values()))
+    threads = sum(client.nthreads().values())
+    window = max(4, (4 if store is not None else 2) * threads)
+    batch = max(1, window // 2)
     queue = iter(todo)
     index_of: dict[Any, int] = {}
 
-    def submit() -> Any:
-        index = next(queue, None)
-        if index is None:
-            return None
-        future = client.submit(_store_chunk, spec, index, store, key=f"{TASK_PREFIX}-{index}-{run_id}")
-        index_of[future.key] = index
-        return future
+    def submit(n: int) -> list[Any]:
+        indices = list(itertools.islice(queue, n))
+        if not indices:
+            return []
+        keys = [f"{TASK_PREFIX}-{index}-{run_id}" for index in indices]
+        futures = client.map(_store_chunk, [spec] * len(indices), indices, [store] * len(indices), key=keys)
+        index_of.update(zip(keys, indices, strict=True))
+        return futures
 
-    first = [f for f in (submit() for _ in range(window)) if f is not None]
-    in_flight = set(first)
-    stream = as_completed(first)
+    in_flight = set(submit(window))
+    stream = as_completed(list(in_flight))
     try:
         for future in stream:
             in_flight.discard(future)
             index = index_of.pop(future.key)
-            results[index] = future.result()
+            # A stored chunk's result is only its index: fetching it would cost a round
+            # trip to the worker per chunk. A failed task raises here either way.
+            if store is None or future.status != "finished":
+                results[index] = future.result()
             future.release()
-            nxt = submit()
-            if nxt is not None:
-                in_flight.add(nxt)
-                stream.add(nxt)
+            if len(in_flight) <= window - batch:
+                more = submit(window - len(in_flight))
+                in_flight.update(more)
+                stream.update(more)
             bar.update()
             if on_chunk is not None:
                 on_chunk(index)
