@@ -137,7 +137,7 @@ def main():
     parser.add_argument("--samples", type=int, default=1_000_000)
     parser.add_argument("--epochs", type=int, default=10)
     parser.add_argument("--chunk", type=int, default=None, help="samples per chunk (default: the library's)")
-    parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--repeats", type=int, default=5)
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--dir", default=None, help="scratch directory for the stores")
     args = parser.parse_args()
