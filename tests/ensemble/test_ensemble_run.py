@@ -224,7 +224,7 @@ def test_local_client_workers_are_quiet_and_keep_their_allocator():
 
     with local_client(1) as client:
         ((settings, trim),) = client.run(worker_settings).values()
-    # the values as a worker process reads them back (durations may come back as given)
+    # read back inside the spawned worker process: the nanny hands it the settings of local_client
     assert settings == QUIET_CLUSTER_CONFIG
     assert trim is None
 
