@@ -36,72 +36,12 @@ from typing import Any
 import numpy as np
 
 from andoyer.liepoisson._domain import as_components, leading_shape
+from andoyer.liepoisson.casimirs import Casimir, quadratic_form
 from andoyer.liepoisson.structure_constants import e3_structure, l7_structure, so3_structure
 
 __all__ = ["ALGEBRA_NAMES", "Casimir", "LiePoissonAlgebra", "get_algebra"]
 
 ALGEBRA_NAMES = ("so3", "e3", "l7")
-
-
-@dataclass(frozen=True)
-class Casimir:
-    """A quadratic Casimir function ``C(x) = xᵀ Q x`` of a Lie–Poisson algebra.
-
-    Parameters
-    ----------
-    name : str
-        Human-readable formula, e.g. ``"m·γ"``.
-    matrix : numpy.ndarray, shape (n, n)
-        Symmetric matrix ``Q``.
-
-    Examples
-    --------
-    >>> from andoyer.liepoisson import get_algebra
-    >>> c = get_algebra("e3").casimirs[1]
-    >>> c.name
-    'm·γ'
-    >>> float(c.value([1.0, 2.0, 3.0, 0.0, 0.0, 1.0]))
-    3.0
-    """
-
-    name: str
-    matrix: np.ndarray = field(repr=False)
-
-    def value(self, x: Any) -> np.ndarray:
-        """Evaluate ``xᵀ Q x``; ``x`` has shape (..., n), the result (...).
-
-        Examples
-        --------
-        >>> float(get_algebra("so3").casimirs[0].value([1.0, 2.0, 2.0]))
-        9.0
-        """
-        x = as_components("x", x, self.matrix.shape[0])
-        return np.einsum("...a,ab,...b->...", x, self.matrix, x)[()]
-
-    def gradient(self, x: Any) -> np.ndarray:
-        """Gradient ``2 Q x``, shape (..., n).
-
-        Examples
-        --------
-        >>> get_algebra("so3").casimirs[0].gradient([1.0, 2.0, 2.0])
-        array([2., 4., 4.])
-        """
-        x = as_components("x", x, self.matrix.shape[0])
-        return 2.0 * x @ self.matrix
-
-    def expr(self, symbols: Any) -> Any:
-        """The Casimir as a sympy expression of the algebra's ``symbols``.
-
-        Examples
-        --------
-        >>> l7 = get_algebra("l7")
-        >>> l7.casimirs[0].expr(l7.symbols())
-        lambda0**2 + lambda1**2 + lambda2**2 + lambda3**2
-        """
-        import sympy as sp
-
-        xs = sp.Matrix(symbols)
-        return sp.expand((xs.T * sp.Matrix(self.matrix.tolist()) * xs)[0]).nsimplify()
 
 
 @dataclass(frozen=True)
@@ -368,14 +308,6 @@ class LiePoissonAlgebra:
         return (self.poisson_tensor_sym() * grad).applyfunc(sp.expand)
 
 
-def _quadratic(n: int, pairs: list[tuple[int, int]]) -> np.ndarray:
-    q = np.zeros((n, n))
-    for i, j in pairs:
-        q[i, j] += 0.5
-        q[j, i] += 0.5
-    return q
-
-
 def _build(name: str) -> LiePoissonAlgebra:
     m = ("m1", "m2", "m3")
     if name == "so3":
@@ -383,7 +315,7 @@ def _build(name: str) -> LiePoissonAlgebra:
             "so3",
             m,
             so3_structure(),
-            (Casimir("m·m", _quadratic(3, [(0, 0), (1, 1), (2, 2)])),),
+            (Casimir("m·m", quadratic_form(3, [(0, 0), (1, 1), (2, 2)])),),
         )
     if name == "e3":
         return LiePoissonAlgebra(
@@ -391,8 +323,8 @@ def _build(name: str) -> LiePoissonAlgebra:
             (*m, "gamma1", "gamma2", "gamma3"),
             e3_structure(),
             (
-                Casimir("γ·γ", _quadratic(6, [(3, 3), (4, 4), (5, 5)])),
-                Casimir("m·γ", _quadratic(6, [(0, 3), (1, 4), (2, 5)])),
+                Casimir("γ·γ", quadratic_form(6, [(3, 3), (4, 4), (5, 5)])),
+                Casimir("m·γ", quadratic_form(6, [(0, 3), (1, 4), (2, 5)])),
             ),
             slice(3, 6),
         )
@@ -400,7 +332,7 @@ def _build(name: str) -> LiePoissonAlgebra:
         "l7",
         (*m, "lambda0", "lambda1", "lambda2", "lambda3"),
         l7_structure(),
-        (Casimir("λ·λ", _quadratic(7, [(3, 3), (4, 4), (5, 5), (6, 6)])),),
+        (Casimir("λ·λ", quadratic_form(7, [(3, 3), (4, 4), (5, 5), (6, 6)])),),
         slice(3, 7),
     )
 
