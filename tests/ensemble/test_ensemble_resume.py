@@ -52,6 +52,11 @@ def chunk_files(store, chunks):
     return found
 
 
+def run_settings(out, scheduler):
+    """The keyword arguments of this module's ensemble, written to ``out`` on ``scheduler``."""
+    return {"body": EROS, "chunk": CHUNK, "seed": 9, "out": out, "scheduler": scheduler, "progress": False}
+
+
 def reference():
     return run_ensemble(
         AndoyerSampler(), N, TIMES, body=EROS, chunk=CHUNK, seed=9, scheduler="synchronous", progress=False
@@ -63,14 +68,7 @@ def reference():
 def test_ensemble_zarr_resume_recomputes_only_missing_chunks(where, k, tmp_path, loopback_cluster):
     scheduler = "synchronous" if where == "synchronous" else loopback_cluster.scheduler_address
     store = tmp_path / "e.zarr"
-    kwargs = {
-        "body": EROS,
-        "chunk": CHUNK,
-        "seed": 9,
-        "out": store,
-        "scheduler": scheduler,
-        "progress": False,
-    }
+    kwargs = run_settings(store, scheduler)
     with pytest.raises(SimulatedKillError):
         run_ensemble(AndoyerSampler(), N, TIMES, on_chunk=stop_after(k), **kwargs)
     done = set(np.flatnonzero(completed_chunks(store)).tolist())
@@ -94,14 +92,7 @@ def test_ensemble_zarr_partial_chunk_without_marker_is_recomputed(tmp_path):
     import zarr
 
     store = tmp_path / "e.zarr"
-    kwargs = {
-        "body": EROS,
-        "chunk": CHUNK,
-        "seed": 9,
-        "out": store,
-        "scheduler": "synchronous",
-        "progress": False,
-    }
+    kwargs = run_settings(store, "synchronous")
     run_ensemble(AndoyerSampler(), N, TIMES, **kwargs)
     group = zarr.open_group(store, mode="r+")
     group["quaternion"][8:12] = 0.5  # a worker killed half-way through chunk 2: data, no marker
@@ -115,14 +106,7 @@ def test_ensemble_zarr_partial_chunk_without_marker_is_recomputed(tmp_path):
 def test_ensemble_netcdf_is_atomic_and_resumes(tmp_path, loopback_cluster):
     out = tmp_path / "e.nc"
     parts = tmp_path / "e.nc.parts.zarr"
-    kwargs = {
-        "body": EROS,
-        "chunk": CHUNK,
-        "seed": 9,
-        "out": out,
-        "progress": False,
-        "scheduler": loopback_cluster.scheduler_address,
-    }
+    kwargs = run_settings(out, loopback_cluster.scheduler_address)
     with pytest.raises(SimulatedKillError):
         run_ensemble(AndoyerSampler(), N, TIMES, on_chunk=stop_after(2), **kwargs)
     assert not out.exists()  # nothing half-written under the final name

@@ -331,7 +331,7 @@ def _submit_windowed(
     run_id = uuid.uuid4().hex[:12]
     threads = sum(client.nthreads().values())
     window = max(4, (4 if store is not None else 2) * threads)
-    batch = max(1, window // 2)
+    batch = window // 2  # window >= 4
     queue = iter(todo)
     index_of: dict[Any, int] = {}
 
