@@ -1,0 +1,29 @@
+r"""Orbit histories: how a planet's orbit plane (and ellipse) moves over 10³–10⁷ years.
+
+Every source answers the same small protocol, :class:`OrbitHistory`, vectorised over
+the time ``t`` in Julian years TT from J2000 (negative = past):
+
+* ``normal(t)``: the unit normal ``n`` of the orbit plane, shape ``(..., 3)``, in the
+  J2000 ecliptic-and-equinox frame (``x`` to the J2000 equinox, ``z`` to the J2000
+  ecliptic pole), pointing along the orbital angular momentum;
+* ``eccentricity_vector(t)``: ``e`` times the unit vector towards perihelion, shape
+  ``(..., 3)``, same frame, or :class:`NotImplementedError` where the source does not
+  know the ellipse (``has_eccentricity`` says which);
+* ``span``: the interval ``(t_min, t_max)`` of validity; ``check_times`` raises
+  :class:`ValueError` outside it.
+
+Sources: :class:`VondrakEcliptic` (the long-term ecliptic of Vondrák, Capitaine &
+Wallace 2011, through pyerfa's ``ltpecl``).
+
+Examples
+--------
+>>> from andoyer.orbits import VondrakEcliptic
+>>> n = VondrakEcliptic().normal(0.0)
+>>> [round(float(x), 12) for x in n]
+[0.0, 0.0, 1.0]
+"""
+
+from andoyer.orbits.base import OrbitHistory, check_times
+from andoyer.orbits.vondrak import VondrakEcliptic
+
+__all__ = ["OrbitHistory", "VondrakEcliptic", "check_times"]
