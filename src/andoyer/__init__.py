@@ -5,6 +5,10 @@ The Serret–Andoyer formalism as working software: a rigid body
 converters to every canonical chart (Euler angles and momenta, Andoyer
 variables, ...), the free-body Hamiltonians and equations of motion.
 
+The subpackages and names below load when first used (PEP 562 module
+``__getattr__``), so ``import andoyer`` costs little more than Python itself
+and a command pays only for what it uses.
+
 Examples
 --------
 >>> import andoyer
@@ -14,12 +18,55 @@ Examples
 0.500032721584
 """
 
-from andoyer import bodies, charts, free, integrate, liepoisson, perturbations, series, special, theories
-from andoyer.body import RigidBody, RotationMode, Symmetry
-from andoyer.charts import SingularChartWarning
-from andoyer.free import FreeRotation
-from andoyer.propagation import propagate
-from andoyer.state import State
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:  # the eager names, for type checkers and IDEs
+    from andoyer import (
+        bodies,
+        charts,
+        free,
+        integrate,
+        liepoisson,
+        orbits,
+        perturbations,
+        series,
+        special,
+        theories,
+    )
+    from andoyer.body import RigidBody, RotationMode, Symmetry
+    from andoyer.charts import SingularChartWarning
+    from andoyer.free import FreeRotation
+    from andoyer.propagation import propagate
+    from andoyer.state import State
+
+#: Public name -> the module that defines it (a subpackage maps to itself).
+_LAZY = {
+    "FreeRotation": "andoyer.free",
+    "RigidBody": "andoyer.body",
+    "RotationMode": "andoyer.body",
+    "SingularChartWarning": "andoyer.charts",
+    "State": "andoyer.state",
+    "Symmetry": "andoyer.body",
+    "propagate": "andoyer.propagation",
+    **{
+        name: f"andoyer.{name}"
+        for name in (
+            "bodies",
+            "charts",
+            "free",
+            "integrate",
+            "liepoisson",
+            "orbits",
+            "perturbations",
+            "series",
+            "special",
+            "theories",
+        )
+    },
+}
 
 __all__ = [
     "FreeRotation",
@@ -33,6 +80,7 @@ __all__ = [
     "free",
     "integrate",
     "liepoisson",
+    "orbits",
     "perturbations",
     "propagate",
     "series",
@@ -41,3 +89,18 @@ __all__ = [
 ]
 
 __version__ = "0.1.0.dev0"
+
+
+def __getattr__(name: str) -> Any:
+    module_name = _LAZY.get(name)
+    if module_name is None:
+        msg = f"module 'andoyer' has no attribute {name!r}"
+        raise AttributeError(msg)
+    module = importlib.import_module(module_name)
+    value = module if module_name == f"andoyer.{name}" else getattr(module, name)
+    globals()[name] = value  # later look-ups skip this function
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_LAZY))

@@ -1,0 +1,32 @@
+"""The package loads its names lazily: ``import andoyer`` stays light, every public name resolves."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import pytest
+
+import andoyer
+
+
+def test_lazy_names_match_all():
+    assert set(andoyer._LAZY) == set(andoyer.__all__)
+
+
+@pytest.mark.parametrize("name", andoyer.__all__)
+def test_lazy_name_resolves(name):
+    assert getattr(andoyer, name) is not None
+    assert name in dir(andoyer)
+
+
+def test_lazy_unknown_name_raises():
+    with pytest.raises(AttributeError, match="no attribute 'nonexistent'"):
+        _ = andoyer.nonexistent
+
+
+def test_lazy_import_loads_no_heavy_dependency():
+    heavy = ("numpy", "scipy", "numba", "matplotlib", "flint", "sympy")
+    code = f"import sys, andoyer; print(sorted(m for m in {heavy!r} if m in sys.modules))"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.strip() == "[]"
