@@ -18,8 +18,8 @@ from andoyer.series.averaging import average, frequencies, solve_homological
 from andoyer.series.bracket import derivative, poisson_bracket
 from andoyer.series.deprit import LieTransform, deprit, lie_sum
 from andoyer.series.numeric import CompiledSeries
-from andoyer.series.poisson import PoissonSeries, Term
-from andoyer.series.ring import PoissonRing
+from andoyer.series.poisson import PoissonRing, PoissonSeries
+from andoyer.series.terms import Term
 
 __all__ = [
     "CompiledSeries",

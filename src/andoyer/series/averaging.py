@@ -7,12 +7,11 @@ from typing import TYPE_CHECKING, Any
 
 from flint.utils.flint_exceptions import DomainError
 
-from andoyer.series.algebra import times_i
 from andoyer.series.bracket import derivative
+from andoyer.series.components import times_i
 
 if TYPE_CHECKING:
-    from andoyer.series.poisson import PoissonSeries
-    from andoyer.series.ring import PoissonRing
+    from andoyer.series.poisson import PoissonRing, PoissonSeries
 
 __all__ = ["average", "frequencies", "solve_homological"]
 

@@ -5,11 +5,10 @@ from __future__ import annotations
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any
 
-from andoyer.series.algebra import Comps, Shift, times_i
+from andoyer.series.components import Comps, Shift, times_i
 
 if TYPE_CHECKING:
-    from andoyer.series.poisson import PoissonSeries
-    from andoyer.series.ring import PoissonRing
+    from andoyer.series.poisson import PoissonRing, PoissonSeries
 
 __all__ = ["derivative", "poisson_bracket"]
 

@@ -20,8 +20,8 @@ from typing import Any
 
 from andoyer.series.averaging import average, frequencies, solve_homological
 from andoyer.series.bracket import derivative, poisson_bracket
-from andoyer.series.poisson import PoissonSeries
-from andoyer.series.ring import PoissonRing, as_rational
+from andoyer.series.poisson import PoissonRing, PoissonSeries
+from andoyer.series.rationals import as_rational
 
 __all__ = ["LieTransform", "deprit", "lie_sum"]
 

@@ -11,8 +11,7 @@ from andoyer.series.bracket import derivative
 from andoyer.series.rationals import as_rational
 
 if TYPE_CHECKING:
-    from andoyer.series.poisson import PoissonSeries
-    from andoyer.series.ring import PoissonRing
+    from andoyer.series.poisson import PoissonRing, PoissonSeries
     from andoyer.series.terms import Term
 
 __all__ = ["substitute", "taylor_shift", "term_order", "truncate"]

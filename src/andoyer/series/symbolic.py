@@ -7,8 +7,7 @@ from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from andoyer.series.poisson import PoissonSeries
-    from andoyer.series.ring import PoissonRing
+    from andoyer.series.poisson import PoissonRing, PoissonSeries
 
 __all__ = ["series_from_sympy", "series_to_latex", "series_to_sympy"]
 

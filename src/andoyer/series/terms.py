@@ -11,11 +11,11 @@ from collections.abc import Iterable, Sequence
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any, NamedTuple
 
-from andoyer.series.algebra import Comps, Shift, add_into, aligned, normalized, product_comps
+from andoyer.series.components import Comps, Shift, add_into, aligned, normalized, product_comps
 from andoyer.series.rationals import as_rational, to_fmpq
 
 if TYPE_CHECKING:
-    from andoyer.series.ring import PoissonRing
+    from andoyer.series.poisson import PoissonRing
 
 __all__ = ["Term", "decompose", "harmonic_sign", "real_terms"]
 

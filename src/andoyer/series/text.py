@@ -13,8 +13,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from andoyer.series.poisson import PoissonSeries
-    from andoyer.series.ring import PoissonRing
+    from andoyer.series.poisson import PoissonRing, PoissonSeries
     from andoyer.series.terms import Term
 
 __all__ = ["parse_series", "series_to_text"]

@@ -12,7 +12,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from andoyer.series.ring import PoissonRing
+    from andoyer.series.poisson import PoissonRing
 
 __all__ = [
     "accumulate_products",
