@@ -259,7 +259,7 @@ def test_singular_warning_points_at_caller_and_counts():
         (lambda: e3_to_andoyer([0.0, 0, 0], [0.0, 0, 1]), "expected a non-zero angular momentum"),
         (lambda: e3_to_andoyer(np.ones((2, 3)), np.eye(3)), "expected broadcastable leading"),
         (lambda: l7_to_andoyer(np.ones(3), np.ones(3)), "expected lam with last axis of length 4"),
-        (lambda: e3_from_andoyer(np.zeros(2), np.zeros(3), 0.1, 1.0, 0.2), "expected broadcastable inputs"),
+        (lambda: e3_from_andoyer(np.zeros(2), np.zeros(3), 0.1, 1.0, 0.2), "expected shapes that broadcast"),
         (lambda: l7_from_andoyer(np.nan, 0, 0, 0.1, 1.0, 0.2), "expected finite l"),
         (lambda: quaternion_to_scipy([1.0, 0.0]), "expected lam with last axis of length 4"),
     ],

@@ -13,7 +13,7 @@ from andoyer import RigidBody
 from andoyer.integrate.euler_poisson import euler_poisson_integrals, integrate_euler_poisson
 from andoyer.liepoisson import andoyer_coordinates, e3_from_andoyer, e3_to_andoyer, get_algebra
 from andoyer.liepoisson.heavy_top import (
-    AndoyerRates,
+    LeafRates,
     heavy_top_equations,
     heavy_top_hamiltonian,
     heavy_top_rhs,
@@ -59,7 +59,7 @@ def test_heavy_top_rates_equal_lie_poisson_bracket(name, chart_gradients):
     grad_k = np.concatenate([m / body.moments, np.broadcast_to(top.weight * top.center_of_mass, m.shape)], -1)
     rates = heavy_top_equations(body, top, l, g, L, G, H)
     e3 = get_algebra("e3")
-    for field in AndoyerRates._fields:
+    for field in LeafRates._fields:
         expected = e3.bracket(x, chart_gradients[field](x), grad_k)
         scale = np.maximum(1.0, np.abs(expected))
         assert np.max(np.abs(getattr(rates, field) - expected) / scale) <= 1e-12, field
@@ -143,3 +143,11 @@ def test_heavy_top_rejects_bad_models():
         heavy_top_hamiltonian("moon", top, 0.1, 0.2, 0.3, 1.0, 0.3)
     with pytest.raises(ValueError, match=r"^expected an andoyer HeavyTop"):
         heavy_top_rhs(body, None, 0.3)
+
+
+def test_leaf_rates_old_name_deprecated():
+    import andoyer.liepoisson as lp
+
+    with pytest.warns(DeprecationWarning, match="use LeafRates"):
+        old = lp.AndoyerRates
+    assert old is LeafRates

@@ -8,7 +8,7 @@ Numeric part (numpy only):
   :func:`so3_from_andoyer`, :func:`e3_to_andoyer`, :func:`e3_from_andoyer`,
   :func:`l7_to_andoyer`, :func:`l7_from_andoyer`;
 * the heavy top on an e(3) leaf in ``(l, g, L, G; H)``: :func:`heavy_top_hamiltonian`,
-  :func:`heavy_top_equations` (→ :class:`AndoyerRates`), :func:`heavy_top_rhs`;
+  :func:`heavy_top_equations` (→ :class:`LeafRates`), :func:`heavy_top_rhs`;
 * Pavlov's quaternion λ = (w, x, y, z): :func:`quaternion_from_scipy`,
   :func:`quaternion_to_scipy`, :func:`gamma_from_quaternion`.
 
@@ -32,7 +32,7 @@ from typing import Any
 from andoyer.liepoisson._domain import SINGULAR_TOL, UNIT_TOL, SingularChartWarning
 from andoyer.liepoisson.algebra import ALGEBRA_NAMES, Casimir, LiePoissonAlgebra, get_algebra
 from andoyer.liepoisson.heavy_top import (
-    AndoyerRates,
+    LeafRates,
     heavy_top_equations,
     heavy_top_hamiltonian,
     heavy_top_rhs,
@@ -72,13 +72,13 @@ __all__ = [
     "ALGEBRA_NAMES",
     "SINGULAR_TOL",
     "UNIT_TOL",
-    "AndoyerRates",
     # symbolic (lazy)
     "BracketRecord",
     "CanonicalCoordinates",
     "Casimir",
     "E3Coordinates",
     "L7Coordinates",
+    "LeafRates",
     "LiePoissonAlgebra",
     "SingularChartWarning",
     "So3Coordinates",
@@ -114,6 +114,8 @@ def __getattr__(name: str) -> Any:
     if name in _SYMBOLIC:
         module = importlib.import_module(f"andoyer.liepoisson.{_SYMBOLIC[name]}")
         return getattr(module, name)
+    if name == "AndoyerRates":  # deprecated name of LeafRates; the module warns
+        return getattr(importlib.import_module("andoyer.liepoisson.heavy_top"), name)
     raise AttributeError(f"module 'andoyer.liepoisson' has no attribute {name!r}")
 
 

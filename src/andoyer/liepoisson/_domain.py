@@ -130,12 +130,3 @@ def momentum_magnitude(m: np.ndarray) -> np.ndarray:
     if np.any(G == 0):
         raise ValueError("expected a non-zero angular momentum m, got |m| = 0")
     return G
-
-
-def broadcast(**values: np.ndarray) -> list[np.ndarray]:
-    """``np.broadcast_arrays`` with the project's error message."""
-    try:
-        return np.broadcast_arrays(*values.values())
-    except ValueError:
-        described = ", ".join(f"{k} {np.shape(v)}" for k, v in values.items())
-        raise ValueError(f"expected broadcastable inputs, got shapes {described}") from None

@@ -47,20 +47,27 @@ against the Euler–Poisson flow (``tests/liepoisson/test_liepoisson_heavy_top.p
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Callable
 from typing import Any, NamedTuple
 
 import numpy as np
 
+from andoyer._validation import broadcast
 from andoyer.body import RigidBody
-from andoyer.liepoisson._domain import SINGULAR_TOL, as_scalars, broadcast, momenta
+from andoyer.liepoisson._domain import SINGULAR_TOL, as_scalars, momenta
 from andoyer.perturbations.heavy_top import HeavyTop
 
-__all__ = ["AndoyerRates", "heavy_top_equations", "heavy_top_hamiltonian", "heavy_top_rhs"]
+__all__ = ["LeafRates", "heavy_top_equations", "heavy_top_hamiltonian", "heavy_top_rhs"]
 
 
-class AndoyerRates(NamedTuple):
-    """Time derivatives ``(dl/dt, dg/dt, dL/dt, dG/dt)`` on an e(3) leaf (arrays of equal shape)."""
+class LeafRates(NamedTuple):
+    """Time derivatives ``(dl/dt, dg/dt, dL/dt, dG/dt)`` on an e(3) leaf (arrays of equal shape).
+
+    Named ``AndoyerRates`` before 0.1 (a second class of that name, with the six rates of the
+    full Andoyer chart, is :class:`andoyer.equations.AndoyerRates`); the old name still works,
+    with a :class:`DeprecationWarning`.
+    """
 
     l: np.ndarray
     g: np.ndarray
@@ -77,7 +84,9 @@ def _check_models(body: Any, top: Any) -> None:
 
 def _leaf_point(l: Any, g: Any, L: Any, G: Any, H: Any) -> tuple[np.ndarray, ...]:
     L, G, H = momenta(L, G, H)
-    ell, g, L, G, H = broadcast(l=as_scalars("l", l), g=as_scalars("g", g), L=L, G=G, H=H)
+    ell, g, L, G, H = broadcast(
+        ("l", as_scalars("l", l)), ("g", as_scalars("g", g)), ("L", L), ("G", G), ("H", H)
+    )
     return ell, g, L, G, H
 
 
@@ -149,7 +158,7 @@ def heavy_top_hamiltonian(
 
 def heavy_top_equations(
     body: RigidBody, top: HeavyTop, l: Any, g: Any, L: Any, G: Any, H: Any
-) -> AndoyerRates:
+) -> LeafRates:
     """Hamilton's equations of the heavy top in ``(l, g, L, G)`` on the leaf ``H``.
 
     Parameters
@@ -163,7 +172,7 @@ def heavy_top_equations(
 
     Returns
     -------
-    AndoyerRates
+    LeafRates
         ``(dl/dt, dg/dt, dL/dt, dG/dt) = (∂K/∂L, ∂K/∂G, −∂K/∂l, −∂K/∂g)``, each (...).
 
     Raises
@@ -220,7 +229,7 @@ def heavy_top_equations(
     g_dot = G * (sl * sl * i1 + cl * cl * i2) + w * dV_dG
     L_dot = rho_j**2 * sl * cl * (I1 - I2) / (I1 * I2) - w * (x * gamma[..., 1] - y * gamma[..., 0])
     G_dot = -w * dV_dg
-    return AndoyerRates(l_dot[()], g_dot[()], L_dot[()], G_dot[()])
+    return LeafRates(l_dot[()], g_dot[()], L_dot[()], G_dot[()])
 
 
 def heavy_top_rhs(body: RigidBody, top: HeavyTop, H: float) -> Callable[[float, np.ndarray], np.ndarray]:
@@ -258,3 +267,15 @@ def heavy_top_rhs(body: RigidBody, top: HeavyTop, H: float) -> Callable[[float, 
         return np.stack(heavy_top_equations(body, top, ell, g, L, G, H))
 
     return rhs
+
+
+def __getattr__(name: str) -> Any:
+    if name == "AndoyerRates":
+        warnings.warn(
+            "andoyer.liepoisson.AndoyerRates is deprecated: use LeafRates (the four rates on an e(3) leaf)",
+            DeprecationWarning,
+            stacklevel=2,
+        )
+        return LeafRates
+    msg = f"module {__name__!r} has no attribute {name!r}"
+    raise AttributeError(msg)

@@ -29,12 +29,12 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
+from andoyer._validation import broadcast
 from andoyer.liepoisson._domain import (
     SINGULAR_TOL,
     as_components,
     as_scalars,
     body_angle_l,
-    broadcast,
     leading_shape,
     momenta,
     momentum_magnitude,
@@ -129,7 +129,7 @@ def so3_from_andoyer(l: Any, L: Any, G: Any) -> np.ndarray:
     array([0. , 0.8, 0.6])
     """
     L, G, _ = momenta(L, G, None)
-    ell, L, G = broadcast(l=as_scalars("l", l), L=L, G=G)
+    ell, L, G = broadcast(("l", as_scalars("l", l)), ("L", L), ("G", G))
     rho = np.sqrt((G - L) * (G + L))
     return np.stack([rho * np.sin(ell), rho * np.cos(ell), L], axis=-1)
 
@@ -169,7 +169,9 @@ def e3_from_andoyer(l: Any, g: Any, L: Any, G: Any, H: Any) -> tuple[np.ndarray,
     -0.7
     """
     L, G, H = momenta(L, G, H)
-    ell, g, L, G, H = broadcast(l=as_scalars("l", l), g=as_scalars("g", g), L=L, G=G, H=H)
+    ell, g, L, G, H = broadcast(
+        ("l", as_scalars("l", l)), ("g", as_scalars("g", g)), ("L", L), ("G", G), ("H", H)
+    )
     sin_J = np.sqrt((G - L) * (G + L)) / G
     cos_J = L / G
     sin_I = np.sqrt((G - H) * (G + H)) / G

@@ -32,13 +32,13 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
+from andoyer._validation import broadcast
 from andoyer.liepoisson._domain import (
     SINGULAR_TOL,
     TWO_PI,
     as_components,
     as_scalars,
     body_angle_l,
-    broadcast,
     leading_shape,
     momenta,
     momentum_magnitude,
@@ -112,7 +112,12 @@ def l7_from_andoyer(l: Any, g: Any, h: Any, L: Any, G: Any, H: Any) -> tuple[np.
     """
     L, G, H = momenta(L, G, H)
     ell, g, h, L, G, H = broadcast(
-        l=as_scalars("l", l), g=as_scalars("g", g), h=as_scalars("h", h), L=L, G=G, H=H
+        ("l", as_scalars("l", l)),
+        ("g", as_scalars("g", g)),
+        ("h", as_scalars("h", h)),
+        ("L", L),
+        ("G", G),
+        ("H", H),
     )
     cI, sI = _half_angle_factors(H, G)
     cJ, sJ = _half_angle_factors(L, G)
