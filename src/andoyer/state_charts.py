@@ -30,6 +30,15 @@ def check_body(body: Any) -> RigidBody:
     return body
 
 
+def _free_flow(body: RigidBody, state: State, dt: ArrayLike) -> State:
+    """The states reached by the free flow after ``dt`` (``FreeRotation.propagate`` without the wrapper)."""
+    # Imported here so that a State costs no numba/theta-series start-up until a time chart is used.
+    from andoyer.free.motion import FreeMotion
+
+    m, q = FreeMotion(body.moments, state.m_body, state.quaternion).propagate(dt)
+    return type(state).from_quaternion(q, m)
+
+
 class FreeBodyCharts:
     """Mixin: the body-dependent charts of the state (Sadov, modified Andoyer, Serret, SAM)."""
 
@@ -93,10 +102,8 @@ class FreeBodyCharts:
         >>> bool(max(abs(x - y) for x, y in zip(a, b)) < 1e-12)
         True
         """
-        from andoyer.free import FreeRotation
-
         dt = np.asarray(epoch, dtype=float) - np.asarray(t, dtype=float)
-        return FreeRotation(check_body(body)).propagate(self, dt).as_andoyer()
+        return _free_flow(check_body(body), self, dt).as_andoyer()
 
     @classmethod
     def from_initial_andoyer(
@@ -126,10 +133,8 @@ class FreeBodyCharts:
         >>> [round(float(x), 12) for x in a]
         [0.3, 0.4, 0.5, 0.9, 1.0, 0.2]
         """
-        from andoyer.free import FreeRotation
-
         dt = np.asarray(t, dtype=float) - np.asarray(epoch, dtype=float)
-        return FreeRotation(check_body(body)).propagate(cls.from_andoyer(l0, g0, h, L0, G, H), dt)
+        return _free_flow(check_body(body), cls.from_andoyer(l0, g0, h, L0, G, H), dt)
 
     def as_serret(self, body: RigidBody, t: ArrayLike = 0.0, *, epoch: ArrayLike | None = None):
         r"""Serret's elements ``(g0, h, t0, G, H, T, sign)`` of the state taken at time ``t``.

@@ -5,11 +5,22 @@ attitude quaternions ``q0`` (..., 4, scalar last, body → reference) and times 
 broadcast together.  Every regime is covered: short- and long-axis modes of a triaxial
 body (Jacobi elliptic functions via theta series), the separatrix, axisymmetric bodies,
 spheres, steady spins and rest.  See :mod:`andoyer.free.motion`.
+
+:class:`FreeRotation` works on :class:`~andoyer.State` arrays, which sit above the
+array kernels (the state's time-dependent charts use :class:`FreeMotion`), so it loads
+on first use: importing ``andoyer.free.motion`` does not import the state.
 """
+
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
 
 from andoyer.free.motion import FreeMotion, FreePeriods, attitude, momentum, periods, propagate
 from andoyer.free.regime import Regime, classify
-from andoyer.free.rotation import FreeRotation
+
+if TYPE_CHECKING:
+    from andoyer.free.rotation import FreeRotation
 
 __all__ = [
     "FreeMotion",
@@ -22,3 +33,10 @@ __all__ = [
     "periods",
     "propagate",
 ]
+
+
+def __getattr__(name: str) -> Any:
+    if name == "FreeRotation":
+        return importlib.import_module("andoyer.free.rotation").FreeRotation
+    msg = f"module 'andoyer.free' has no attribute {name!r}"
+    raise AttributeError(msg)

@@ -23,7 +23,7 @@ import numpy as np
 
 from andoyer._jit import jit
 from andoyer.free.compiled_eval import _count
-from andoyer.free.lean import carlson_rf
+from andoyer.free.kernels.elliptic import carlson_rf
 from andoyer.free.phase import Frequency
 from andoyer.free.scalar_dd import (
     dd_add,
