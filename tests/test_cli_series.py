@@ -9,7 +9,6 @@ from fractions import Fraction
 import pytest
 
 import andoyer.cli
-from andoyer.cli import series_cmd
 from andoyer.theories import sam_theory
 from andoyer.theories.sam_tables import tables_from_json
 
@@ -17,18 +16,8 @@ RATIONAL = re.compile(r"-?\d+/[1-9]\d*")
 
 
 @pytest.fixture
-def cli(monkeypatch, capsys):
-    """Run ``andoyer`` with the series command registered (whether or not main has it yet)."""
-    original = andoyer.cli.build_parser
-
-    def build_parser():
-        parser = original()
-        commands = next(a for a in parser._actions if a.__class__.__name__ == "_SubParsersAction")
-        if "series" not in commands.choices:
-            series_cmd.register(commands)
-        return parser
-
-    monkeypatch.setattr(andoyer.cli, "build_parser", build_parser)
+def cli(capsys):
+    """Run ``andoyer`` and return its exit code, standard output and standard error."""
 
     def run(*argv):
         try:

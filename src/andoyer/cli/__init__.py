@@ -9,21 +9,9 @@ never leaves a half-written file.
 from __future__ import annotations
 
 import argparse
+import importlib
 import sys
 from collections.abc import Sequence
-
-from andoyer.cli import (
-    bodies_cmd,
-    brackets_cmd,
-    convert_cmd,
-    demo_cmd,
-    ensemble_cmd,
-    portrait_cmd,
-    precession_cmd,
-    propagate_cmd,
-    series_cmd,
-)
-from andoyer.cli.output import CliError
 
 __all__ = ["main"]
 
@@ -33,26 +21,74 @@ class _Parser(argparse.ArgumentParser):
         self.exit(2, f"{self.prog}: error: {message}\n")
 
 
-def build_parser() -> argparse.ArgumentParser:
-    """The argument parser of the ``andoyer`` command."""
+#: Every sub-command: its module (with ``register(commands)`` and ``run(args)``) and the one-line
+#: help of ``andoyer --help``. A module is imported only when its command runs, so that
+#: ``andoyer --help`` and each command pay only for what they use.
+COMMANDS: dict[str, tuple[str, str]] = {
+    "demo": (
+        "andoyer.cli.demo_cmd",
+        "tour a named body: every chart, exact and series propagation, precession, pictures",
+    ),
+    "bodies": ("andoyer.cli.bodies_cmd", "list the named bodies (Lara 2013, Table 1)"),
+    "convert": ("andoyer.cli.convert_cmd", "convert states between charts"),
+    "propagate": (
+        "andoyer.cli.propagate_cmd",
+        "propagate states (torque-free or under a model) and write any chart at the requested times",
+    ),
+    "precession": (
+        "andoyer.cli.precession_cmd",
+        "precession rate of the spin axis of the Earth (Sun + Moon) or Mars (Sun), arcsec/yr",
+    ),
+    "ensemble": (
+        "andoyer.cli.ensemble_cmd",
+        "propagate a seeded Monte-Carlo ensemble of states on Dask (Zarr or NetCDF, resumable)",
+    ),
+    "brackets": (
+        "andoyer.cli.brackets_cmd",
+        "verify the brackets of the Andoyer-Deprit coordinates of so(3), e(3) or l(7)",
+    ),
+    "series": ("andoyer.cli.series_cmd", "exact perturbation series (Lara's SAM theory)"),
+    "portrait": (
+        "andoyer.cli.portrait_cmd",
+        "draw a phase portrait, the momentum sphere, Lara's Fig. 1, a polhode or a precession series",
+    ),
+}
+
+#: ``build_parser(ALL)`` builds every command's full parser (for tests that walk them all).
+ALL = "*"
+
+
+def build_parser(command: str | None = ALL) -> argparse.ArgumentParser:
+    """The argument parser of the ``andoyer`` command.
+
+    Parameters
+    ----------
+    command : str or None
+        The sub-command whose full parser is built (its module imported); the others get a
+        stub with their help line, which is what ``andoyer --help`` lists (``None``: stubs
+        only). ``ALL`` (the default) builds every one.
+
+    Examples
+    --------
+    >>> sorted(build_parser(None)._subparsers._group_actions[0].choices) == sorted(COMMANDS)
+    True
+    """
     parser = _Parser(prog="andoyer", description="Rigid-body rotation in canonical variables.")
     from andoyer import __version__
 
     parser.add_argument("--version", action="version", version=f"andoyer {__version__}")
     commands = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
-    for module in (
-        demo_cmd,
-        bodies_cmd,
-        convert_cmd,
-        propagate_cmd,
-        precession_cmd,
-        ensemble_cmd,
-        brackets_cmd,
-        series_cmd,
-        portrait_cmd,
-    ):
-        module.register(commands)
+    for name, (module, help_line) in COMMANDS.items():
+        if command in (name, ALL):
+            importlib.import_module(module).register(commands)
+        else:
+            commands.add_parser(name, help=help_line, add_help=False)
     return parser
+
+
+def _command_in(argv: Sequence[str]) -> str | None:
+    """The sub-command named in ``argv``: its first word that is not an option."""
+    return next((word for word in argv if not word.startswith("-")), None)
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -65,8 +101,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     earth,0.99672,0.9967222,1.0,...
     0
     """
-    parser = build_parser()
-    args = parser.parse_args(argv)
+    words = sys.argv[1:] if argv is None else list(argv)
+    parser = build_parser(_command_in(words))
+    args = parser.parse_args(words)
+    # After parsing: --help and usage errors end above without loading numpy (cli.output needs it).
+    from andoyer.cli.output import CliError
+
     try:
         return int(args.run(args) or 0)
     except (CliError, ValueError) as exc:

@@ -14,7 +14,6 @@ def register(commands: argparse._SubParsersAction) -> None:
     """Add the sub-command to the parser."""
     parser = commands.add_parser(
         "brackets",
-        help="verify the brackets of the Andoyer-Deprit coordinates of so(3), e(3) or l(7)",
         description=(
             "Computes every bracket of the project's canonical coordinates on the chosen Lie-Poisson "
             "algebra, symbolically (sympy normal form) and numerically (seeded points)."

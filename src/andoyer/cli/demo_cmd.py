@@ -13,7 +13,6 @@ def register(commands: argparse._SubParsersAction) -> None:
     """Add the sub-command to the parser."""
     parser = commands.add_parser(
         "demo",
-        help="tour a named body: every chart, exact and series propagation, precession, pictures",
         description=(
             "Write a report folder (README.md plus pictures) covering a named body in every chart, "
             "its exact torque-free propagation, Lara's SAM series against the exact solution, "

@@ -23,7 +23,6 @@ def register(commands: argparse._SubParsersAction) -> None:
     """Add the sub-command to the parser."""
     parser = commands.add_parser(
         "ensemble",
-        help="propagate a seeded Monte-Carlo ensemble of states on Dask (Zarr or NetCDF, resumable)",
         epilog=EXAMPLES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )

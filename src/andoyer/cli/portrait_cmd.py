@@ -31,7 +31,6 @@ def register(commands: argparse._SubParsersAction) -> None:
     """Add the sub-command and its five pictures to the parser."""
     parser = commands.add_parser(
         "portrait",
-        help="draw a phase portrait, the momentum sphere, Lara's Fig. 1, a polhode or a precession series",
         epilog=EXAMPLES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )

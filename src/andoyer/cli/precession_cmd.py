@@ -37,7 +37,6 @@ def register(commands: argparse._SubParsersAction) -> None:
 
     parser = commands.add_parser(
         "precession",
-        help="precession rate of the spin axis of the Earth (Sun + Moon) or Mars (Sun), arcsec/yr",
         epilog=EXAMPLES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )

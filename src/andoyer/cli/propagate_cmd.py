@@ -40,7 +40,6 @@ def register(commands: argparse._SubParsersAction) -> None:
     """Add the sub-command to the parser."""
     parser = commands.add_parser(
         "propagate",
-        help="propagate states (torque-free or under a model) and write any chart at the requested times",
         epilog=EXAMPLES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )

@@ -33,7 +33,7 @@ def _order(text: str) -> int:
 
 def register(commands: argparse._SubParsersAction) -> None:
     """Add the sub-command to the parser."""
-    parser = commands.add_parser("series", help="exact perturbation series (Lara's SAM theory)")
+    parser = commands.add_parser("series")
     theories = parser.add_subparsers(dest="theory", required=True)
     sam = theories.add_parser(
         "sam",
