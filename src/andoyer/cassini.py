@@ -337,8 +337,8 @@ class ColomboTop:
     Examples
     --------
     >>> top = ColomboTop(1.0, 0.0, -0.1, 0.2)
-    >>> [s.number for s in top.states()]
-    [2, 1, 4, 3]
+    >>> [(s.number, s.stable) for s in top.states()]
+    [(1, True), (2, True), (3, True), (4, False)]
     """
 
     alpha: float
@@ -367,7 +367,8 @@ class ColomboTop:
         0.019866933079506124
         """
         t = as_finite(theta, "theta")
-        return (self.alpha * np.cos(t) + self.beta) * np.sin(t) + self.node_rate * np.sin(t - self.inclination)
+        g, i = self.node_rate, self.inclination
+        return (self.alpha * np.cos(t) + self.beta) * np.sin(t) + g * np.sin(t - i)
 
     def derivative(self, theta: ArrayLike) -> Array:
         """``F'(θ) = 𝓗_θθ = α cos 2θ + β cos θ + g cos(θ − i)``.
@@ -378,7 +379,8 @@ class ColomboTop:
         True
         """
         t = as_finite(theta, "theta")
-        return self.alpha * np.cos(2 * t) + self.beta * np.cos(t) + self.node_rate * np.cos(t - self.inclination)
+        g, i = self.node_rate, self.inclination
+        return self.alpha * np.cos(2 * t) + self.beta * np.cos(t) + g * np.cos(t - i)
 
     def hamiltonian(self, theta: ArrayLike, phi: ArrayLike = 0.0) -> Array:
         """``𝓗(θ, φ)`` with ``θ`` the obliquity and ``φ`` the spin axis' longitude from ``K``.
@@ -432,15 +434,23 @@ class ColomboTop:
         a, b, g, i = self.alpha, self.beta, self.node_rate, self.inclination
         # F (1 + t²)² / 2 = ½g sin i t⁴ + (b − a + g cos i) t³ + (a + b + g cos i) t − ½g sin i.
         coefficients = np.array(
-            [0.5 * g * math.sin(i), b - a + g * math.cos(i), 0.0, a + b + g * math.cos(i), -0.5 * g * math.sin(i)]
+            [
+                0.5 * g * math.sin(i),
+                b - a + g * math.cos(i),
+                0.0,
+                a + b + g * math.cos(i),
+                -0.5 * g * math.sin(i),
+            ]
         )
         roots = np.roots(coefficients / np.max(np.abs(coefficients)))
         near_real = roots[np.abs(roots.imag) <= 1e-6 * (1 + np.abs(roots))].real
         found = [float(2 * np.arctan(t)) for t in near_real]
         grid = np.linspace(-np.pi, np.pi, 4097)
         values = self.equation(grid)
-        for j in np.flatnonzero(np.sign(values[:-1]) != np.sign(values[1:])):
-            found.append(brentq(lambda x: float(self.equation(x)), grid[j], grid[j + 1], xtol=1e-15))
+        changes = np.flatnonzero(np.sign(values[:-1]) != np.sign(values[1:]))
+        found.extend(
+            brentq(lambda x: float(self.equation(x)), grid[j], grid[j + 1], xtol=1e-15) for j in changes
+        )
         return found
 
     def _polish(self, theta: float) -> float:
@@ -480,7 +490,7 @@ class ColomboTop:
         return np.array(unique)
 
     def states(self) -> list[CassiniState]:
-        """The Cassini states, numbered as Peale (1969): state 2 first, then 1, 4, 3 (those that exist).
+        """The Cassini states that exist, numbered as Peale (1969), in order of number.
 
         Returns
         -------
@@ -499,7 +509,7 @@ class ColomboTop:
             msg = f"expected one root in (0, pi) and one to three in (-pi, 0], got {roots.tolist()}"
             raise ValueError(msg)
         pairs = [(2, positive[0]), *zip(numbers, negative, strict=True)]
-        return [self._state(number, theta) for number, theta in pairs]
+        return sorted((self._state(number, theta) for number, theta in pairs), key=lambda s: s.number)
 
     def _state(self, number: int, theta: float) -> CassiniState:
         along = float(self.derivative(theta))
@@ -530,7 +540,7 @@ class ColomboTop:
         return None
 
     def separatrix(self, phi: ArrayLike) -> Array:
-        """The obliquities ``θ ∈ [0, π]`` of the separatrix at longitudes ``φ``, shape (len(φ), 4), NaN-padded.
+        """The obliquities ``θ ∈ [0, π]`` of the separatrix at longitudes ``φ`` (NaN-padded to 4 each).
 
         Solves ``𝓗(θ, φ) = 𝓗(state 4)`` exactly: with ``X = cos θ``, ``b = β + g cos i``,
         ``c = g sin i cos φ`` and ``P(X) = −(α/2)X² − bX − E``, the level is ``P = c sin θ``,
@@ -650,7 +660,7 @@ def states(body: CassiniBody | str) -> list[CassiniState]:
     Returns
     -------
     list of CassiniState
-        State 2 first, then 1, 4, 3 where they exist.
+        Those that exist, in order of number.
 
     Examples
     --------

@@ -15,6 +15,7 @@ from collections.abc import Sequence
 from andoyer.cli import (
     bodies_cmd,
     brackets_cmd,
+    cassini_cmd,
     convert_cmd,
     demo_cmd,
     ensemble_cmd,
@@ -46,6 +47,7 @@ def build_parser() -> argparse.ArgumentParser:
         convert_cmd,
         propagate_cmd,
         precession_cmd,
+        cassini_cmd,
         ensemble_cmd,
         brackets_cmd,
         series_cmd,
