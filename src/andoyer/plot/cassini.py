@@ -148,9 +148,18 @@ def cassini_portrait(
     data = cassini_portrait_data(system, n_phi, n_theta)
     fig, ax = new_axes(ax, figsize=(8.5, 5.0))
     phi_deg, theta_deg = np.degrees(data.phi), np.degrees(data.theta)
-    ax.contour(
-        phi_deg, theta_deg, data.energy, levels=levels, colors="0.55", linewidths=0.8, linestyles="solid"
-    )
+    # Evenly spaced levels miss the small loops about a state near a pole: add the levels of
+    # points 1°, 2° and 4° from each stable state.
+    even = np.linspace(data.energy.min(), data.energy.max(), levels + 2)[1:-1]
+    near = [
+        data.top.hamiltonian(s.theta + np.radians(d) * np.array([-1.0, 1.0]))
+        for s in data.states
+        if s.stable
+        for d in (1.0, 2.0, 4.0)
+    ]
+    values = np.unique(np.concatenate([even, *near]))
+    style = {"colors": "0.55", "linewidths": 0.8, "linestyles": "solid"}
+    ax.contour(phi_deg, theta_deg, data.energy, levels=values, **style)
     if data.separatrix_energy is not None:
         points = np.degrees(data.separatrix)
         for column in range(points.shape[1]):
