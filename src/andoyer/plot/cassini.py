@@ -189,7 +189,7 @@ def cassini_portrait(
     ax.set_ylabel("$\\theta$: obliquity to the orbit normal (deg)")
     top = data.top
     ax.set_title(
-        f"Colombo's top: {data.name}, $|g|/\\alpha = {abs(top.node_rate) / top.alpha:.3g}$, "
+        f"Colombo's top: {data.name.capitalize()}, $|g|/\\alpha = {abs(top.node_rate) / top.alpha:.3g}$, "
         f"$\\beta/\\alpha = {top.beta / top.alpha:.3g}$, $i = {laplace:.4g}°$"
     )
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize="small", frameon=False)
@@ -259,6 +259,6 @@ def cassini_geometry(system: CassiniBody | ColomboTop, *, ax: Axes | None = None
     ax.set_aspect("equal")
     ax.axis("off")
     ax.legend(loc="lower left", fontsize="x-small", frameon=False)
-    ax.set_title(f"Cassini states of {name}: the plane of $K$ and $k$ (angles to scale)")
+    ax.set_title(f"Cassini states of {name.capitalize()}\n(the plane of $K$ and $k$, angles to scale)")
     fig.andoyer_data = states  # type: ignore[attr-defined]
     return fig
