@@ -27,11 +27,11 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 
-from andoyer import RigidBody, cassini
+from andoyer import RigidBody, State, cassini, propagate
 from andoyer.cassini import ARCSEC, CassiniBody, ColomboTop, eccentricity_function
 from andoyer.cli import main
 from andoyer.integrate.secular import SecularGravityGradient
-from andoyer.perturbations import GravityGradient, KeplerOrbit, PointMass
+from andoyer.perturbations import GravityGradient, KeplerOrbit, Model, PointMass, PrecessingFrame
 
 # Regimes of (alpha, beta, g, i): four states, two states, resonant (beta > 0), near the bifurcation.
 REGIMES = {
@@ -341,6 +341,35 @@ def test_equilibrium_stays_under_secular_integration(ratio):
         s = _integrate_in_node_frame(body, s0, periods)
         drift = np.max(np.linalg.norm(s - s0, axis=-1))
         assert drift < 1e-8, (state.number, drift)
+
+
+@pytest.mark.parametrize("ratio", [0.2, 3.0])
+def test_equilibrium_stays_in_the_precessing_frame(ratio):
+    """Colombo's top as the project builds it: the Andoyer (h, H) secular flow of a gravity gradient
+    with a fixed orbit plus a PrecessingFrame turning at g about K (Gurfil eq. 126), via
+    andoyer.propagate(..., method="secular")."""
+    body = _fast_body(ratio)
+    c, j2 = body.moment_of_inertia, body.j2
+    moments = RigidBody(c - j2, c - j2, c)
+    orbit = KeplerOrbit(1.0, body.eccentricity, body.inclination, 0.0, 0.0, 0.0, body.mean_motion)
+    gradient = GravityGradient(moments, PointMass(body.mean_motion**2, orbit))
+    model = Model(moments, [gradient, PrecessingFrame([0.0, 0.0, body.node_rate])])
+    G = c * body.spin_rate
+    t = np.linspace(0.0, 2 * 2 * np.pi / abs(body.node_rate), 21)
+    for state in cassini.states(body):
+        s0 = _laplace_frame_axis(state.theta, body.inclination)
+        I = math.acos(s0[2])
+        h = 0.0 if s0[1] <= 0 else math.pi  # s = (sin I sin h, -sin I cos h, cos I)
+        start = State.from_andoyer(l=0.0, g=0.0, h=h, L=G, G=G, H=G * math.cos(I))
+        assert start.m_reference / G == pytest.approx(s0, abs=1e-14)
+        duration = t if state.stable else t[:2] / 20
+        end = propagate(model, start, duration, method="secular", rtol=1e-12)
+        drift = np.max(np.linalg.norm(end.m_reference / G - s0, axis=-1))
+        assert drift < 1e-8, (state.number, drift)
+        # and a start off the state is not an equilibrium: the test can fail
+        off = State.from_andoyer(l=0.0, g=0.0, h=h, L=G, G=G, H=G * math.cos(I + 1e-3))
+        moved = propagate(model, off, t[:3], method="secular", rtol=1e-12).m_reference / G
+        assert np.max(np.linalg.norm(moved - moved[0], axis=-1)) > 1e-5
 
 
 def test_stability_under_secular_integration_perturbed_start():
