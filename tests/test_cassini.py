@@ -119,7 +119,7 @@ def test_roots_match_mpmath_findroot(regime):
     assert roots.size == np.count_nonzero(np.sign(values[:-1]) != np.sign(values[1:]))
 
 
-@settings(max_examples=60, deadline=None, derandomize=True)
+@settings(max_examples=40, deadline=None, derandomize=True)
 @given(
     alpha=st.floats(0.01, 100.0),
     beta_fraction=st.floats(0.0, 0.5),
@@ -425,6 +425,50 @@ def test_mercury_peale_formula_inverts_to_margot_moment():
     torque = (alpha1 * math.cos(theta) + beta1) * math.sin(theta)
     c = -torque / (mercury.node_rate * math.sin(theta - mercury.inclination))
     assert c == pytest.approx(0.346, abs=0.014)
+
+
+def _full_moon_run(start_theta, years=2.0, step_days=0.5):
+    """The Moon as a rigid body under the Earth's full MacCullagh torque (no averaging), in the frame
+    turning with the node (PrecessingFrame at g about K), by the project's splitting integrator.
+
+    Units: days. The orbit keeps its node (the frame turns with it) and its periapsis; its mean motion
+    in that frame is the draconic one, ``n − g``. The body starts synchronous: the long axis towards
+    the Earth at periapsis, turning at ``n − g`` relative to the frame about ``b3 = s`` (its inertial
+    angular velocity adds ``g K``). Returns the unit angular-momentum directions at the output times.
+    """
+    moon = cassini.get("moon")
+    n, g, i = moon.mean_motion / 365.25, moon.node_rate / 365.25, moon.inclination
+    c, j2, c22 = moon.moment_of_inertia, moon.j2, moon.c22
+    body = RigidBody(c - j2 - 2 * c22, c - j2 + 2 * c22, c)
+    orbit = KeplerOrbit(1.0, moon.eccentricity, i, 0.0, 0.7, 0.0, n - g)
+    earth = PointMass(n**2 / (1 + moon.mass_ratio), orbit)
+    model = Model(body, [GravityGradient(body, earth), PrecessingFrame([0.0, 0.0, g])])
+    s0 = _laplace_frame_axis(start_theta, i)
+    toward = orbit.position(0.0) - (orbit.position(0.0) @ s0) * s0
+    b1 = toward / np.linalg.norm(toward)
+    R = np.stack([b1, np.cross(s0, b1), s0], -1)  # body -> frame
+    omega = (n - g) * np.array([0.0, 0.0, 1.0]) + g * R.T @ np.array([0.0, 0.0, 1.0])
+    start = State.from_quaternion(Rotation.from_matrix(R).as_quat(), body.moments * omega)
+    t = np.linspace(0.0, years * 365.25, 41)
+    out = propagate(model, start, t, method="splitting", step=step_days, order=4)
+    M = out.m_reference
+    return s0, M / np.linalg.norm(M, axis=-1, keepdims=True)
+
+
+@pytest.mark.slow
+def test_moon_state_2_under_the_full_torque():
+    """Independent of the averaging and of the root finder: started at state 2, the full (monthly)
+    torque keeps the Moon's angular momentum within 0.012° of it for six years (the short-period
+    physical librations and the momentum–figure offset stay below that). Started at the state the
+    model would give without the C22 resonance terms (0.34° away), it drifts away by > 0.05°."""
+    moon = cassini.get("moon")
+    state2 = next(s for s in cassini.states(moon) if s.number == 2)
+    s0, s = _full_moon_run(state2.theta, years=6.0)
+    assert np.degrees(np.max(np.arccos(np.clip(s @ s0, -1, 1)))) < 0.012
+    fast = moon.replace(resonance=None, spin_rate=moon.mean_motion)
+    wrong = next(st for st in cassini.states(fast) if st.number == 2)
+    s0, s = _full_moon_run(wrong.theta, years=6.0)
+    assert np.degrees(np.max(np.arccos(np.clip(s @ s0, -1, 1)))) > 0.05
 
 
 # --- CassiniBody validation ---------------------------------------------------------------------------
