@@ -78,6 +78,7 @@ Examples
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass, field, replace
 
 import numpy as np
@@ -208,7 +209,7 @@ class CassiniBody:
         for name in ("j2", "c22", "moment_of_inertia", "mean_motion", "eccentricity", "inclination",
                      "node_rate", "mass_ratio"):
             value = getattr(self, name)
-            if not isinstance(value, int | float) or not math.isfinite(value):
+            if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value):
                 msg = f"expected a finite real {name}, got {value!r}"
                 raise ValueError(msg)
         c, j2, c22 = self.moment_of_inertia, self.j2, self.c22

@@ -3,7 +3,8 @@
 Every drawing function returns a :class:`matplotlib.figure.Figure` (a new pyplot-free figure,
 or the figure of the ``ax`` it was given) with what it drew attached as
 ``figure.andoyer_data``; the matching ``*_data`` function computes the same data without
-drawing.  The contours are exact (closed form), not contoured on a grid.
+drawing.  The contours are exact (closed form), not contoured on a grid (except the level curves
+of Colombo's top, whose separatrix is exact).
 
 * :func:`phase_portrait` — the ``(l, L)`` plane of the free body and its separatrix (Gurfil Fig. 4);
 * :func:`momentum_sphere` — energy contours (polhodes) on ``|m| = G`` (Gurfil Fig. 1);
