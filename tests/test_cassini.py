@@ -389,9 +389,9 @@ def test_stability_under_secular_integration_perturbed_start():
 
 
 def test_moon_state_2_published():
-    """The mean lunar equator is inclined I = 1°32′32.7″ ≈ 1.5424° to the ecliptic (the IAU value used
-    since Eckhardt 1981; Cassini's third law puts the ecliptic pole between the Moon's spin axis and
-    orbit normal), so the obliquity to the orbit normal is i + I ≈ 5.145° + 1.543° = 6.688°."""
+    """The mean lunar equator is inclined I = 1°32′32.7″ ≈ 1.5424° to the ecliptic (the IAU /
+    Astronomical Almanac value; Cassini's third law puts the ecliptic pole between the Moon's spin
+    axis and orbit normal), so the obliquity to the orbit normal is i + I ≈ 5.145° + 1.543° = 6.688°."""
     states = {s.number: s for s in cassini.states("moon")}
     assert set(states) == {2, 3}  # past the bifurcation: states 1 and 4 no longer exist (Ward 1975)
     assert states[2].inclination_to_laplace_deg == pytest.approx(1.543, abs=0.03)

@@ -599,7 +599,8 @@ BODIES: dict[str, CassiniBody] = {
     "moon": CassiniBody(
         name="moon",
         # GRAIL gravity field GL0660B (Konopliv et al. 2013, JGR Planets 118, 1415), unnormalised,
-        # R = 1738 km; C/MR² = 0.3929 (Konopliv et al. 2013; Williams et al. 2014, JGR Planets 119, 1546).
+        # R = 1738 km; C/MR² = 0.3929 as quoted in issue 15 (Williams et al. 2014, JGR Planets 119, 1546,
+        # give 0.393112; the state moves by 0.001°).
         j2=2.0330e-4,
         c22=2.2394e-5,
         moment_of_inertia=0.3929,
@@ -613,7 +614,7 @@ BODIES: dict[str, CassiniBody] = {
         resonance=1.0,
         # Earth/Moon mass ratio 81.30056 (IAU 2009 system of constants).
         mass_ratio=1 / 81.30056,
-        source="Konopliv et al. 2013 (J2, C22, C/MR2); Astronomical Almanac mean lunar orbit",
+        source="Konopliv et al. 2013 (J2, C22); Williams et al. 2014 (C/MR2); mean lunar orbit",
     ),
     "mercury": CassiniBody(
         name="mercury",
