@@ -221,6 +221,33 @@ def test_stability_states_are_extrema_of_the_hamiltonian(regime):
         assert extremum == state.stable
 
 
+@pytest.mark.parametrize("regime", ["four_states", "resonant_four", "moon_like"])
+def test_hamiltonian_canonical_pair_phi_cos_theta(regime):
+    """(φ, X = cos θ) are canonical for ds/dt = ∇𝓗 × s: φ̇ = ∂𝓗/∂X, Ẋ = −∂𝓗/∂φ."""
+    alpha, beta, g, i = REGIMES[regime]
+    top = ColomboTop(alpha, beta, g, i)
+    rng = np.random.default_rng(15)
+    theta, phi = rng.uniform(0.2, 2.9, 5), rng.uniform(-np.pi, np.pi, 5)
+    s = np.stack([np.sin(theta) * np.cos(phi), np.sin(theta) * np.sin(phi), np.cos(theta)], -1)
+    K = np.array([math.sin(i), 0.0, math.cos(i)])
+    written = np.cross(-(alpha * s[:, 2:3] + beta) * np.array([0.0, 0.0, 1.0]) - g * K, s)
+    field = top.vector_field(s)
+    assert np.allclose(field, written, rtol=0, atol=1e-14 * (alpha + beta + abs(g)))
+    x_dot = field[:, 2]
+    phi_dot = (s[:, 0] * field[:, 1] - s[:, 1] * field[:, 0]) / (s[:, 0] ** 2 + s[:, 1] ** 2)
+    h = 1e-6
+
+    def energy(x, p):
+        return top.hamiltonian(np.arccos(x), p)
+
+    x = np.cos(theta)
+    dH_dx = (energy(x + h, phi) - energy(x - h, phi)) / (2 * h)
+    dH_dphi = (energy(x, phi + h) - energy(x, phi - h)) / (2 * h)
+    scale = alpha + beta + abs(g)
+    assert np.allclose(phi_dot, dH_dx, rtol=0, atol=1e-7 * scale)
+    assert np.allclose(x_dot, -dH_dphi, rtol=0, atol=1e-7 * scale)
+
+
 def test_separatrix_level_and_saddle():
     alpha, beta, g, i = REGIMES["resonant_four"]
     top = ColomboTop(alpha, beta, g, i)

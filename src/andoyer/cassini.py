@@ -331,7 +331,7 @@ class ColomboTop:
     alpha, beta : float
         Precession and resonance constants (rad per time unit), ``α > 0``, ``β ≥ 0``.
     node_rate : float
-        ``g ≠ 0`` (same unit); the Peale numbering assumes ``g < 0``.
+        ``g < 0`` (same unit), a regressing node (Peale's numbering assumes it).
     inclination : float
         ``0 < i < π/2`` (radians).
 
