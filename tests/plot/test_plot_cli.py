@@ -12,6 +12,7 @@ KINDS = {
     "lara": [],
     "polhode": ["--moments", "1", "2", "3", "--values", "0.5", "0", "0", "0.9", "1", "0.9"],
     "precession": ["--moments", "1", "1", "1.5", "--values", "0", "0", "0", "0.9", "2", "2", "--steps", "51"],
+    "cassini": ["--body", "mercury", "--levels", "6"],
 }
 
 

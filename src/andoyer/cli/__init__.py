@@ -39,6 +39,10 @@ COMMANDS: dict[str, tuple[str, str]] = {
         "andoyer.cli.precession_cmd",
         "precession rate of the spin axis of the Earth (Sun + Moon) or Mars (Sun), arcsec/yr",
     ),
+    "cassini": (
+        "andoyer.cli.cassini_cmd",
+        "Cassini states (equilibria of Colombo's top) of the Moon, Mercury or any body",
+    ),
     "ensemble": (
         "andoyer.cli.ensemble_cmd",
         "propagate a seeded Monte-Carlo ensemble of states on Dask (Zarr or NetCDF, resumable)",
@@ -50,7 +54,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "series": ("andoyer.cli.series_cmd", "exact perturbation series (Lara's SAM theory)"),
     "portrait": (
         "andoyer.cli.portrait_cmd",
-        "draw a phase portrait, the momentum sphere, Lara's Fig. 1, a polhode or a precession series",
+        "draw a phase portrait, the momentum sphere, Lara's Fig. 1, a polhode, precession or Colombo's top",
     ),
 }
 

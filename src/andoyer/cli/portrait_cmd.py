@@ -10,6 +10,7 @@ from matplotlib.figure import Figure
 
 from andoyer import plot
 from andoyer.body import RigidBody
+from andoyer.cli.cassini_cmd import add_cassini_arguments, cassini_body_from_args
 from andoyer.cli.chart_table import add_body_arguments, body_from_args
 from andoyer.cli.output import CliError, atomic_output
 from andoyer.free import FreeRotation
@@ -21,6 +22,7 @@ EXAMPLES = """examples:
   andoyer portrait lara --out lara-fig1.png                    (Lara 2013 Fig. 1, beta = 0.8)
   andoyer portrait polhode --moments 1 2 3 --values 0.5 0 0 0.9 1 0.9 --out poinsot.png
   andoyer portrait precession --moments 1 1 1.5 --values 0 0 0 0.9 2 2 --duration 10
+  andoyer portrait cassini --body moon --out cassini.png        (Colombo's top, Cassini states)
 The state (--values) is in Andoyer variables l g h L G H; angles in radians.
 """
 FORMATS = ("png", "svg")
@@ -28,7 +30,7 @@ DEFAULT_STATE = (0.5, 0.0, 0.0, 0.9, 1.0, 0.9)
 
 
 def register(commands: argparse._SubParsersAction) -> None:
-    """Add the sub-command and its five pictures to the parser."""
+    """Add the sub-command and its six pictures to the parser."""
     parser = commands.add_parser(
         "portrait",
         epilog=EXAMPLES,
@@ -75,6 +77,23 @@ def register(commands: argparse._SubParsersAction) -> None:
             sub.add_argument("--axis", choices=("figure", "momentum"), default="figure")
             sub.add_argument("--degrees", action="store_true", help="angles in degrees")
         sub.set_defaults(run=run)
+    _register_cassini(kinds)
+
+
+def _register_cassini(kinds: argparse._SubParsersAction) -> None:
+    from andoyer.cassini import BODIES
+
+    text = "phase portrait of Colombo's top with the Cassini states and the separatrix"
+    sub = kinds.add_parser("cassini", help=text, description=text)
+    sub.add_argument("--body", type=str.lower, choices=sorted(BODIES), default="moon", help="default moon")
+    add_cassini_arguments(sub)
+    sub.add_argument(
+        "--out", metavar="FILE", help="PNG or SVG file, or - for stdout (default portrait-cassini.png)"
+    )
+    sub.add_argument("--format", choices=FORMATS, help="default: from the file suffix")
+    sub.add_argument("--dpi", type=float, default=150.0, help="resolution of PNG output (default 150)")
+    sub.add_argument("--levels", type=int, default=24, help="number of energy contours (default 24)")
+    sub.set_defaults(run=run)
 
 
 def _format(args: argparse.Namespace, path: str) -> str:
@@ -104,6 +123,11 @@ def _figure(args: argparse.Namespace) -> Figure:
         else:
             beta = 0.8
         return plot.lara_portrait(beta, ratio_min=args.ratio_min)
+    if kind == "cassini":
+        if args.levels < 1:
+            msg = f"expected --levels >= 1, got {args.levels}"
+            raise CliError(msg)
+        return plot.cassini_portrait(cassini_body_from_args(args.body, args), levels=args.levels)
     body = body_from_args(args)
     if kind == "phase":
         return plot.phase_portrait(body, args.G, _levels(body, args))

@@ -3,13 +3,15 @@
 Every drawing function returns a :class:`matplotlib.figure.Figure` (a new pyplot-free figure,
 or the figure of the ``ax`` it was given) with what it drew attached as
 ``figure.andoyer_data``; the matching ``*_data`` function computes the same data without
-drawing.  The contours are exact (closed form), not contoured on a grid.
+drawing.  The contours are exact (closed form), not contoured on a grid (except the level curves
+of Colombo's top, whose separatrix is exact).
 
 * :func:`phase_portrait` — the ``(l, L)`` plane of the free body and its separatrix (Gurfil Fig. 4);
 * :func:`momentum_sphere` — energy contours (polhodes) on ``|m| = G`` (Gurfil Fig. 1);
 * :func:`lara_portrait` — free body vs. the main problem of SAM rotation (Lara Fig. 1);
 * :func:`polhode`, :func:`herpolhode`, :func:`poinsot` — Poinsot's construction for a state;
-* :func:`precession` — precession, obliquity and nutation series of a propagation.
+* :func:`precession` — precession, obliquity and nutation series of a propagation;
+* :func:`cassini_portrait`, :func:`cassini_geometry` — Colombo's top and its Cassini states.
 
 Examples
 --------
@@ -19,6 +21,7 @@ Examples
 0.25
 """
 
+from andoyer.plot.cassini import CassiniPortrait, cassini_geometry, cassini_portrait, cassini_portrait_data
 from andoyer.plot.contours import default_energies, energy_contour, separatrix_contour
 from andoyer.plot.lara import LARA_LEVELS, LaraPortrait, lara_portrait, lara_portrait_data
 from andoyer.plot.phase import PhasePortrait, phase_portrait, phase_portrait_data
@@ -36,12 +39,16 @@ from andoyer.plot.sphere import MomentumSphere, momentum_sphere, momentum_sphere
 
 __all__ = [
     "LARA_LEVELS",
+    "CassiniPortrait",
     "Herpolhode",
     "LaraPortrait",
     "MomentumSphere",
     "PhasePortrait",
     "Polhode",
     "PrecessionSeries",
+    "cassini_geometry",
+    "cassini_portrait",
+    "cassini_portrait_data",
     "default_energies",
     "energy_contour",
     "herpolhode",
