@@ -178,7 +178,7 @@ def section_pictures(ctx: DemoContext) -> str:
     G = float(state.as_andoyer().G)
     figures = {
         "phase-portrait.png": (
-            plot.phase_portrait(body, G),
+            plot.phase_portrait(body, G, momentum_unit="$C$ rad/s"),  # moments in units of C
             "The (l, L) phase portrait with the separatrix through the saddles (Gurfil Fig. 4).",
         ),
         "momentum-sphere.png": (
