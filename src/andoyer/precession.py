@@ -150,7 +150,7 @@ def default_step(body: str) -> float:
     return quarters * rotation / 4
 
 
-def fit_trend(t: Array, y: Array, frequencies: Any = ()) -> tuple[float, float, Array]:
+def fit_trend(t: Array, y: Array, frequencies: Any = ()) -> tuple[float, float, Array, Array]:
     r"""Least-squares trend of ``y(t)`` fitted together with periodic terms of known frequencies.
 
     Fits
@@ -178,6 +178,8 @@ def fit_trend(t: Array, y: Array, frequencies: Any = ()) -> tuple[float, float, 
         ``b``.
     periodic : numpy.ndarray, shape (T,)
         The fitted periodic terms at ``t``.
+    kept : numpy.ndarray, shape (K,)
+        The frequencies fitted (``|ν_j|`` whose period fits in the span).
 
     Examples
     --------
@@ -185,16 +187,20 @@ def fit_trend(t: Array, y: Array, frequencies: Any = ()) -> tuple[float, float, 
     >>> y = 1.0 - 0.5 * t + 0.1 * np.sin(2 * np.pi * t / 3)
     >>> round(fit_trend(t, y)[1], 4)                          # a straight line alone is biased
     -0.501
-    >>> offset, rate, periodic = fit_trend(t, y, [2 * np.pi / 3])
-    >>> round(offset, 12), round(rate, 12), round(float(np.max(np.abs(periodic))), 6)
-    (1.0, -0.5, 0.1)
+    >>> offset, rate, periodic, kept = fit_trend(t, y, [2 * np.pi / 3, 0.1])  # 0.1: period > span
+    >>> round(offset, 12), round(rate, 12), round(float(np.max(np.abs(periodic))), 6), kept.size
+    (1.0, -0.5, 0.1, 1)
     """
     t = np.asarray(t, dtype=float)
     y = np.asarray(y, dtype=float)
     nu = np.abs(np.asarray(frequencies, dtype=float).reshape(-1))
-    if t.ndim != 1 or y.shape != t.shape or not np.all(np.isfinite(nu)):
-        msg = f"expected times (T,), values (T,) and finite frequencies, got {t.shape}, {y.shape}, {nu}"
+    if t.ndim != 1 or y.shape != t.shape:
+        msg = f"expected times (T,) and values (T,), got shapes {t.shape} and {y.shape}"
         raise ValueError(msg)
+    for name, value in (("times", t), ("values", y), ("frequencies", nu)):
+        if not np.all(np.isfinite(value)):
+            msg = f"expected finite {name}, got {value[~np.isfinite(value)][:3]}"
+            raise ValueError(msg)
     span = t[-1] - t[0] if t.size else 0.0
     if span == 0:
         msg = f"expected times spanning a nonzero interval, got {t.size} times from {t[:1]} to {t[-1:]}"
@@ -209,7 +215,7 @@ def fit_trend(t: Array, y: Array, frequencies: Any = ()) -> tuple[float, float, 
     design = np.stack([np.ones_like(x), x, *waves], axis=-1)
     coefficients = np.linalg.lstsq(design, y, rcond=None)[0]
     rate = coefficients[1] / span
-    return float(coefficients[0] - rate * t[0]), float(rate), design[:, 2:] @ coefficients[2:]
+    return float(coefficients[0] - rate * t[0]), float(rate), design[:, 2:] @ coefficients[2:], nu
 
 
 def mean_node_rate(t: Array, h: Array, perturbers: list[PointMass] | tuple[PointMass, ...] = ()) -> float:

@@ -7,6 +7,7 @@ from andoyer import FreeRotation, RigidBody, State, bodies
 from andoyer.integrate.secular import SecularGravityGradient
 from andoyer.perturbations.solar_system import JULIAN_YEAR, OBLIQUITY, mean_perturbers
 from andoyer.plot import precession, precession_data
+from andoyer.precession import fit_trend
 
 
 @pytest.mark.parametrize(
@@ -152,3 +153,19 @@ def test_precession_trend_fitted_with_the_nutation_frequencies(rate, amplitude, 
     label = fig.axes[0].get_lines()[1].get_label()
     assert "fitted with 2 nutation terms" in label
     assert f"$p = -\\dot\\Omega$ = {-rate * 180 / np.pi * 3600:.4g}″" in label
+
+
+@pytest.mark.parametrize(
+    ("t", "y", "frequencies", "match"),
+    [
+        (np.zeros((2, 3)), np.zeros((2, 3)), (), r"expected times \(T,\) and values \(T,\)"),
+        (np.arange(5.0), np.zeros(4), (), r"expected times \(T,\) and values \(T,\)"),
+        (np.arange(5.0), np.array([0, 1, np.nan, 3, 4]), (), "expected finite values"),
+        (np.arange(5.0), np.zeros(5), [np.inf], "expected finite frequencies"),
+        (np.zeros(5), np.zeros(5), (), "expected times spanning a nonzero interval"),
+        (np.arange(5.0), np.zeros(5), [2.0, 3.0], "expected at least 6 times"),
+    ],
+)
+def test_fit_trend_rejects_bad_input(t, y, frequencies, match):
+    with pytest.raises(ValueError, match=match):
+        fit_trend(t, y, frequencies)

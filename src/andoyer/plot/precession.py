@@ -151,10 +151,9 @@ def precession_data(
         a = m / size[:, None]
     obliquity = np.arctan2(np.hypot(a[:, 0], a[:, 1]), a[:, 2])
     node = np.unwrap(np.arctan2(a[:, 0], -a[:, 1]))
-    nu = np.abs(as_finite(frequencies, "frequencies").reshape(-1))
-    nu = nu[nu * np.ptp(t) >= 2 * np.pi]  # the ones fit_trend keeps
-    at_p, rate_p, _ = fit_trend(t, node, nu)
-    at_o, rate_o, _ = fit_trend(t, obliquity, nu)
+    nu = as_finite(frequencies, "frequencies")
+    at_p, rate_p, _, nu = fit_trend(t, node, nu)
+    at_o, rate_o, _, _ = fit_trend(t, obliquity, nu)
     return PrecessionSeries(
         t,
         axis,
