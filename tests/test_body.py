@@ -1,11 +1,16 @@
 from __future__ import annotations
 
+import dataclasses
+import warnings
+from fractions import Fraction
+
 import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from andoyer import RigidBody, RotationMode, Symmetry, bodies
+from andoyer.body import NonPhysicalInertiaWarning
 
 # Lara (2013) Table 1: beta as printed (7 significant digits).
 TABLE1_BETA = {"mars": 0.0646316, "earth": 0.0003366, "moon": 0.226105, "eros": 0.977853}
@@ -87,12 +92,69 @@ def test_body_rotation_mode_axisymmetric_is_steady_and_vectorised():
 
 
 @settings(max_examples=200, deadline=None)
-@given(alpha=st.floats(0.0, 0.9), beta=st.floats(0.0, 1.0), C=st.floats(1e-6, 1e12))
+@given(alpha=st.floats(0.0, 50.0), beta=st.floats(0.0, 1.0), C=st.floats(1e-6, 1e12))
 def test_body_from_alpha_beta_round_trip(alpha, beta, C):
-    body = RigidBody.from_alpha_beta(alpha, beta, C)
+    # A + B >= C  <=>  1/(1 + α(1 + β)) + 1/(1 + α(1 − β)) >= 1  <=>  α²(1 − β²) <= 1 (exact
+    # rationals, away from the boundary where rounding decides)
+    a, b = Fraction(alpha), Fraction(beta)
+    margin = 1 - a * a * (1 - b * b)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        body = RigidBody.from_alpha_beta(alpha, beta, C)
+    if abs(margin) > Fraction(1, 10**9):
+        assert bool(caught) is (margin < 0)
+        assert body.is_physical is (margin > 0)
+    assert all(issubclass(w.category, NonPhysicalInertiaWarning) for w in caught)
     assert body.alpha == pytest.approx(alpha, rel=1e-12, abs=1e-15)
     if alpha > 1e-6:
         assert body.beta == pytest.approx(beta, rel=1e-9, abs=1e-9)
+
+
+NONPHYSICAL_MAKERS = {
+    "init": lambda: RigidBody(3.0, 3.0, 9.0),
+    "from_moments": lambda: RigidBody.from_moments([1.0, 2.0, 4.0]),
+    "from_ratios": lambda: RigidBody.from_ratios(0.2, 0.5),
+    "from_alpha_beta": lambda: RigidBody.from_alpha_beta(3.0, 0.5),
+    "replace": lambda: dataclasses.replace(RigidBody(1.0, 2.0, 3.0), I3=9.0),
+}
+
+
+@pytest.mark.parametrize("maker", NONPHYSICAL_MAKERS)
+def test_body_breaking_triangle_inequality_warns_at_the_callers_line(maker):
+    with pytest.warns(NonPhysicalInertiaWarning, match=r"A \+ B = .* < C = .* triangle inequality") as caught:
+        body = NONPHYSICAL_MAKERS[maker]()
+    assert len(caught) == 1
+    # the user's line (the lambda above), not a line inside andoyer or dataclasses
+    assert caught[0].filename == __file__
+    assert caught[0].lineno == NONPHYSICAL_MAKERS[maker].__code__.co_firstlineno
+    assert not body.is_physical
+    assert issubclass(NonPhysicalInertiaWarning, UserWarning)
+
+
+@pytest.mark.parametrize(
+    "moments",
+    [(1.0, 2.0, 3.0), (1.0, 1.0, 2.0), (0.3, 0.7, 1.0), (0.1, 0.2, 0.3), (1.0, 5.0, 5.0), (2.0, 2.0, 2.0)],
+)
+def test_body_physical_and_lamina_moments_do_not_warn(moments):
+    # Laminas A + B = C, also where A + B rounds below C in floating point (0.1 + 0.2 = 0.30000000000000004
+    # but 0.3 + 0.7 = 0.9999999999999999); prolate bodies and spheres always satisfy the inequality.
+    body = RigidBody(*moments)  # filterwarnings = error: a warning would fail here
+    assert body.is_physical
+
+
+@pytest.mark.parametrize("moments", [(3.0, 3.0, 9.0), (1.0, 2.0, 4.0), (4.0, 0.5, 0.7), (1.0, 1.5, 100.0)])
+def test_body_parameters_of_nonphysical_body(moments):
+    # Lara eq. 2 and Gurfil eq. 139 solved in exact rationals from the sorted moments.
+    with pytest.warns(NonPhysicalInertiaWarning):
+        body = RigidBody(*moments)
+    A, B, C = (Fraction(x) for x in sorted(moments))
+    alpha = (C / A + C / B) / 2 - 1
+    beta = (C / A - C / B) / (2 * alpha)
+    assert body.alpha == pytest.approx(float(alpha), rel=1e-15)
+    assert body.beta == pytest.approx(float(beta), rel=1e-14, abs=1e-16)
+    assert 0 <= body.beta < 1
+    assert body.kappa == pytest.approx(np.sqrt(float(C * (B - A) / (A * (C - B)))), rel=1e-15)
+    assert body.symmetry is (Symmetry.OBLATE if A == B else Symmetry.TRIAXIAL)
 
 
 def test_body_repr_is_readable():

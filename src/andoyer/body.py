@@ -2,6 +2,10 @@
 
 from __future__ import annotations
 
+import dataclasses
+import os
+import sys
+import warnings
 from dataclasses import dataclass, field
 from enum import Enum
 
@@ -10,7 +14,33 @@ from numpy.typing import ArrayLike, NDArray
 
 from andoyer._validation import as_finite, as_vectors, describe
 
-__all__ = ["RigidBody", "RotationMode", "Symmetry"]
+__all__ = ["NonPhysicalInertiaWarning", "RigidBody", "RotationMode", "Symmetry"]
+
+_PACKAGE = os.path.dirname(os.path.abspath(__file__)) + os.sep
+
+
+class NonPhysicalInertiaWarning(UserWarning):
+    """Principal moments with ``A + B < C``: no rigid mass distribution has them.
+
+    The moments of a mass distribution satisfy the triangle inequality
+    ``A + B = ∫(x² + y² + 2z²) dm ≥ ∫(x² + y²) dm = C``.  Euler's equations, the exact
+    torque-free solution and every chart hold for any positive moments, so such bodies
+    (e.g. ``(3, 3, 9)``, common in other solvers' test suites) are accepted with this warning.
+    """
+
+
+def _caller_stacklevel() -> int:
+    """``stacklevel`` for a warning raised by the caller of this function: the first frame outside andoyer.
+
+    Frames of the package, of :mod:`dataclasses` and of the ``__init__`` it generates are
+    skipped, so a body made by ``RigidBody(...)``, ``RigidBody.from_moments``, a named body or
+    ``dataclasses.replace`` is reported at the user's line.
+    """
+    skip = (_PACKAGE, dataclasses.__file__, "<string>")
+    frame, level = sys._getframe(1), 1
+    while frame.f_back is not None and frame.f_code.co_filename.startswith(skip):
+        frame, level = frame.f_back, level + 1
+    return level
 
 
 class Symmetry(str, Enum):
@@ -46,8 +76,10 @@ class RigidBody:
     ----------
     I1, I2, I3 : float
         Principal moments along the body axes ``b1, b2, b3`` (any order, any
-        consistent units). They must be positive, finite and satisfy the
-        triangle inequality ``I_i + I_j >= I_k``.
+        consistent units), positive and finite.  Those of a mass distribution
+        satisfy the triangle inequality ``A + B >= C``; moments that break it
+        are accepted (Euler's equations hold for any positive moments) with a
+        :class:`NonPhysicalInertiaWarning`.
     name : str, optional
         A label used in ``repr`` and reports.
 
@@ -73,6 +105,15 @@ class RigidBody:
     (0.266666666667, 0.25)
     >>> body.symmetry.value
     'triaxial'
+
+    Moments that no rigid body has still give Euler's equations and their exact solution:
+
+    >>> import warnings
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     disk = RigidBody(3.0, 3.0, 9.0)
+    >>> caught[0].category.__name__, disk.symmetry.value
+    ('NonPhysicalInertiaWarning', 'oblate')
     """
 
     I1: float
@@ -94,15 +135,13 @@ class RigidBody:
                 raise ValueError(msg)
             object.__setattr__(self, label, x)
             moments.append(x)
-        a, b, c = sorted(moments)
-        # Triangle inequality A + B >= C, with a relative slack of a few ulp so that
-        # the planar (lamina) limit A + B = C computed in floating point is accepted.
-        if a + b < c * (1 - 4 * np.finfo(float).eps):
+        if not self.is_physical:
+            a, b, c = sorted(moments)
             msg = (
-                "expected moments satisfying the triangle inequality A + B >= C, "
-                f"got A + B = {a + b!r} < C = {c!r}"
+                f"moments with A + B = {a + b!r} < C = {c!r} break the triangle inequality: no rigid "
+                "mass distribution has them (Euler's equations and their solution still hold)"
             )
-            raise ValueError(msg)
+            warnings.warn(msg, NonPhysicalInertiaWarning, stacklevel=_caller_stacklevel())
 
     @classmethod
     def from_moments(cls, moments: ArrayLike, name: str = "") -> RigidBody:
@@ -242,6 +281,21 @@ class RigidBody:
         if b == c:
             return Symmetry.PROLATE
         return Symmetry.TRIAXIAL
+
+    @property
+    def is_physical(self) -> bool:
+        """True when the moments satisfy the triangle inequality ``A + B >= C``, as a mass distribution's do.
+
+        A relative slack of a few ulp accepts the planar (lamina) limit ``A + B = C`` computed
+        in floating point.
+
+        Examples
+        --------
+        >>> RigidBody(1.0, 2.0, 3.0).is_physical                  # a lamina
+        True
+        """
+        a, b, c = self.sorted_moments
+        return bool(a + b >= c * (1 - 4 * np.finfo(float).eps))
 
     @property
     def is_axisymmetric(self) -> bool:

@@ -78,6 +78,7 @@ __all__ = [
     "PLANETS",
     "PrecessionRates",
     "default_step",
+    "fit_trend",
     "mean_node_rate",
     "precession_problem",
     "precession_rates",
@@ -149,12 +150,80 @@ def default_step(body: str) -> float:
     return quarters * rotation / 4
 
 
+def fit_trend(t: Array, y: Array, frequencies: Any = ()) -> tuple[float, float, Array, Array]:
+    r"""Least-squares trend of ``y(t)`` fitted together with periodic terms of known frequencies.
+
+    Fits
+
+    .. math:: y(t) \approx a + b\,t + \sum_j \big[c_j \cos \nu_j (t - t_0) + s_j \sin \nu_j (t - t_0)\big]
+
+    (``t₀ = t[0]``), keeping only the frequencies ``ν_j`` whose period fits in the span
+    (``ν_j (t_{-1} - t_0) ≥ 2π``): a shorter arc of a sinusoid is nearly a straight line and
+    would trade places with the trend.  Without the periodic terms a slope fitted over a span
+    that is not a whole number of their periods is biased by them.
+
+    Parameters
+    ----------
+    t : array_like, shape (T,)
+        Times, at least ``2 + 2 × (number of kept frequencies)``.
+    y : array_like, shape (T,)
+    frequencies : array_like, shape (F,)
+        Angular frequencies ``ν_j`` (radians per unit of ``t``; the sign does not matter).
+
+    Returns
+    -------
+    offset : float
+        ``a``, the trend's value at ``t = 0``.
+    rate : float
+        ``b``.
+    periodic : numpy.ndarray, shape (T,)
+        The fitted periodic terms at ``t``.
+    kept : numpy.ndarray, shape (K,)
+        The frequencies fitted (``|ν_j|`` whose period fits in the span).
+
+    Examples
+    --------
+    >>> t = np.linspace(0.0, 10.0, 201)
+    >>> y = 1.0 - 0.5 * t + 0.1 * np.sin(2 * np.pi * t / 3)
+    >>> round(fit_trend(t, y)[1], 4)                          # a straight line alone is biased
+    -0.501
+    >>> offset, rate, periodic, kept = fit_trend(t, y, [2 * np.pi / 3, 0.1])  # 0.1: period > span
+    >>> round(offset, 12), round(rate, 12), round(float(np.max(np.abs(periodic))), 6), kept.size
+    (1.0, -0.5, 0.1, 1)
+    """
+    t = np.asarray(t, dtype=float)
+    y = np.asarray(y, dtype=float)
+    nu = np.abs(np.asarray(frequencies, dtype=float).reshape(-1))
+    if t.ndim != 1 or y.shape != t.shape:
+        msg = f"expected times (T,) and values (T,), got shapes {t.shape} and {y.shape}"
+        raise ValueError(msg)
+    for name, value in (("times", t), ("values", y), ("frequencies", nu)):
+        if not np.all(np.isfinite(value)):
+            msg = f"expected finite {name}, got {value[~np.isfinite(value)][:3]}"
+            raise ValueError(msg)
+    span = t[-1] - t[0] if t.size else 0.0
+    if span == 0:
+        msg = f"expected times spanning a nonzero interval, got {t.size} times from {t[:1]} to {t[-1:]}"
+        raise ValueError(msg)
+    nu = nu[nu * abs(span) >= 2 * np.pi]
+    if t.size < 2 + 2 * nu.size:
+        msg = f"expected at least {2 + 2 * nu.size} times for the fit, got {t.size}"
+        raise ValueError(msg)
+    # Time in units of the span from t₀: the columns are then all of order one.
+    x = (t - t[0]) / span
+    waves = [f(w * span * x) for w in nu for f in (np.cos, np.sin)]
+    design = np.stack([np.ones_like(x), x, *waves], axis=-1)
+    coefficients = np.linalg.lstsq(design, y, rcond=None)[0]
+    rate = coefficients[1] / span
+    return float(coefficients[0] - rate * t[0]), float(rate), design[:, 2:] @ coefficients[2:], nu
+
+
 def mean_node_rate(t: Array, h: Array, perturbers: list[PointMass] | tuple[PointMass, ...] = ()) -> float:
     """Least-squares mean rate of the node ``h`` (rad per unit of ``t``), short-period terms removed.
 
     Fits ``h̄(t) = a + b t + Σ_p Σ_{k=1..3} [c_pk cos(k n_p t) + s_pk sin(k n_p t)]`` to the
     average ``h̄`` over the last axis of ``h`` (the initial-node phases), keeping
-    the harmonics of each perturber whose orbital period fits in the span.
+    the harmonics of each perturber whose orbital period fits in the span (:func:`fit_trend`).
 
     Parameters
     ----------
@@ -187,15 +256,8 @@ def mean_node_rate(t: Array, h: Array, perturbers: list[PointMass] | tuple[Point
             f"expected times (T,) with T >= 3 and node values (T,) or (T, P), got {t.shape} and {np.shape(h)}"
         )
         raise ValueError(msg)
-    span = t[-1] - t[0]
-    columns = [np.ones_like(t), t - t[0]]
-    for p in perturbers:
-        n = p.orbit.mean_motion
-        if n * span >= 2 * np.pi:
-            columns += [f(k * n * (t - t[0])) for k in (1, 2, 3) for f in (np.cos, np.sin)]
-    design = np.stack(columns, axis=-1)
-    coefficients = np.linalg.lstsq(design, mean, rcond=None)[0]
-    return float(coefficients[1])
+    harmonics = [k * p.orbit.mean_motion for p in perturbers for k in (1, 2, 3)]
+    return fit_trend(t, mean, harmonics)[1]
 
 
 def _node(states: State, h0: Array | float) -> Array:

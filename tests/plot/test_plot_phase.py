@@ -115,3 +115,12 @@ def test_phase_portrait_draws_into_given_axes():
     assert right.get_lines()
     with pytest.raises(ValueError, match="matplotlib Axes"):
         phase_portrait(ABC, ax="not an axes")
+
+
+@pytest.mark.parametrize(
+    ("unit", "expected"), [(None, "inertia × rad per unit time"), ("C rad/s", "C rad/s")]
+)
+def test_phase_portrait_momentum_axis_has_a_unit(unit, expected):
+    ax = phase_portrait(ABC, 2.0, n_points=61, momentum_unit=unit).axes[0]
+    assert ax.get_ylabel() == f"$L = G\\cos J$ ({expected})"
+    assert ax.get_xlabel() == "$l$ (rad)"

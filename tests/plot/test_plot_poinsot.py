@@ -2,8 +2,11 @@
 
 import numpy as np
 import pytest
+from figure_checks import texts_outside, titles_and_labels
+from matplotlib.lines import Line2D
 
 from andoyer import FreeRotation, RigidBody, State, bodies
+from andoyer.cli.demo_report import demo_state
 from andoyer.integrate import Model, integrate_reference
 from andoyer.plot import herpolhode, herpolhode_data, poinsot, polhode, polhode_data
 
@@ -116,3 +119,33 @@ def test_polhode_rejects_bad_input(kwargs, match):
 def test_herpolhode_rejects_zero_momentum():
     with pytest.raises(ValueError, match="nonzero angular momentum"):
         herpolhode_data(RigidBody(1.0, 2.0, 3.0), State.from_quaternion([0, 0, 0, 1.0], [0.0, 0.0, 0.0]))
+
+
+@pytest.mark.parametrize("case", [*CASES, "earth-demo"])
+def test_herpolhode_is_drawn_as_a_resolved_line(case):
+    # A line, not a filled polygon; and sampled finely enough to be a curve: the Earth's ω turns
+    # once a day about n̂ while its polhode period is ~305 days, so three polhode periods in 2001
+    # points jumped ~160° per sample and the zig-zag filled a disk. Chords under 0.1 × the radius
+    # mean at least ~60 points per turn.
+    body, state = (bodies.get("earth"), demo_state("earth", 0.2)) if case == "earth-demo" else CASES[case]
+    fig = herpolhode(body, state)
+    ax = fig.axes[0]
+    (line,) = [ln for ln in ax.get_lines() if ln.get_label() == "herpolhode"]
+    assert isinstance(line, Line2D)
+    assert line.get_linestyle() == "-"
+    assert not ax.patches
+    assert not ax.collections
+    xy = line.get_xydata()
+    radius = np.max(np.hypot(xy[:, 0], xy[:, 1]))
+    assert np.max(np.hypot(*np.diff(xy, axis=0).T)) < 0.1 * radius
+    # The mean rate of the herpolhode about the foot is the precession rate of the exact solution.
+    turns = np.unwrap(np.arctan2(xy[:, 1], xy[:, 0]))
+    rate = float(FreeRotation(body).periods(state).precession_rate)
+    assert abs(turns[-1] - turns[0]) / line.figure.andoyer_data.t[-1] == pytest.approx(abs(rate), rel=0.2)
+
+
+@pytest.mark.parametrize("case", ["SAM", "earth", "earth-demo"])
+def test_poinsot_titles_and_labels_inside_the_figure(case):
+    body, state = (bodies.get("earth"), demo_state("earth", 0.2)) if case == "earth-demo" else CASES[case]
+    fig = poinsot(body, state)
+    assert texts_outside(fig, titles_and_labels(fig)) == []

@@ -7,6 +7,7 @@ from andoyer import FreeRotation, RigidBody, State, bodies
 from andoyer.integrate.secular import SecularGravityGradient
 from andoyer.perturbations.solar_system import JULIAN_YEAR, OBLIQUITY, mean_perturbers
 from andoyer.plot import precession, precession_data
+from andoyer.precession import fit_trend
 
 
 @pytest.mark.parametrize(
@@ -128,3 +129,43 @@ def test_precession_rejects_bad_axes():
     state = State.from_quaternion(np.tile([0, 0, 0, 1.0], (2, 1)), [0.1, 0.0, 1.0])
     with pytest.raises(ValueError, match="three matplotlib Axes"):
         precession([0.0, 1.0], state, axes=(None, None))
+
+
+@pytest.mark.parametrize(
+    ("rate", "amplitude", "periods"), [(-2e-4, 8e-5, 1.3), (0.5, 0.1, 2.7), (-1.0, 0.0, 1.0)]
+)
+def test_precession_trend_fitted_with_the_nutation_frequencies(rate, amplitude, periods):
+    # A node h(t) = h₀ + ḣ t + a sin(ν t + φ) + b cos(2ν t) known in closed form: the fit with the
+    # frequencies ν, 2ν returns ḣ exactly; a straight line over a span that is not a whole number
+    # of periods is off by a fraction of a/span (the demo's 52.2″/yr instead of 50.48″/yr).
+    nu = 2 * np.pi / 18.6
+    t = np.linspace(0.0, periods * 18.6, 400)
+    h = 0.3 + rate * t + amplitude * np.sin(nu * t + 0.4) + 0.3 * amplitude * np.cos(2 * nu * t)
+    states = State.from_andoyer(0.1, 0.2, h, 0.9, 1.0, 0.8)
+    fitted = precession_data(t, states, "momentum", frequencies=[nu, -2 * nu])
+    assert fitted.precession_rate == pytest.approx(rate, rel=1e-12, abs=1e-14)
+    assert fitted.precession_at_zero == pytest.approx(0.3, abs=1e-12)
+    np.testing.assert_allclose(fitted.frequencies, [nu, 2 * nu])
+    line = precession_data(t, states, "momentum")
+    if amplitude and periods % 1:
+        assert abs(line.precession_rate - rate) > 1e-3 * amplitude / t[-1]
+    fig = precession(t, states, "momentum", frequencies=[nu, 2 * nu], regression=True, degrees=True)
+    label = fig.axes[0].get_lines()[1].get_label()
+    assert "fitted with 2 nutation terms" in label
+    assert f"$p = -\\dot\\Omega$ = {-rate * 180 / np.pi * 3600:.4g}″" in label
+
+
+@pytest.mark.parametrize(
+    ("t", "y", "frequencies", "match"),
+    [
+        (np.zeros((2, 3)), np.zeros((2, 3)), (), r"expected times \(T,\) and values \(T,\)"),
+        (np.arange(5.0), np.zeros(4), (), r"expected times \(T,\) and values \(T,\)"),
+        (np.arange(5.0), np.array([0, 1, np.nan, 3, 4]), (), "expected finite values"),
+        (np.arange(5.0), np.zeros(5), [np.inf], "expected finite frequencies"),
+        (np.zeros(5), np.zeros(5), (), "expected times spanning a nonzero interval"),
+        (np.arange(5.0), np.zeros(5), [2.0, 3.0], "expected at least 6 times"),
+    ],
+)
+def test_fit_trend_rejects_bad_input(t, y, frequencies, match):
+    with pytest.raises(ValueError, match=match):
+        fit_trend(t, y, frequencies)

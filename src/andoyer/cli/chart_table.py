@@ -3,13 +3,15 @@
 from __future__ import annotations
 
 import argparse
+import sys
+import warnings
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
 
 from andoyer import bodies
-from andoyer.body import RigidBody
+from andoyer.body import NonPhysicalInertiaWarning, RigidBody
 from andoyer.cli.output import CliError, read_csv_columns
 from andoyer.state import State
 
@@ -70,9 +72,19 @@ def add_body_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def body_from_args(args: argparse.Namespace) -> RigidBody:
-    """The body named on the command line."""
+    """The body named on the command line.
+
+    Moments that break the triangle inequality are accepted (Euler's equations hold for any
+    positive moments) with their :class:`~andoyer.body.NonPhysicalInertiaWarning` printed as one
+    line on standard error.
+    """
     if getattr(args, "moments", None) is not None:
-        return RigidBody(*args.moments)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always", NonPhysicalInertiaWarning)
+            body = RigidBody(*args.moments)
+        for warning in caught:
+            print(f"andoyer {args.command}: warning: {warning.message}", file=sys.stderr)
+        return body
     if getattr(args, "body", None) is not None:
         return bodies.get(args.body)
     msg = "expected --body NAME or --moments I1 I2 I3 for this chart, got neither"

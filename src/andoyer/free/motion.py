@@ -75,8 +75,8 @@ class FreeMotion:
     Parameters
     ----------
     moments : array_like, shape (..., 3)
-        Principal moments along body axes b1, b2, b3 (any order, positive, triangle
-        inequality).
+        Principal moments along body axes b1, b2, b3 (any order, positive; the triangle
+        inequality of a mass distribution is not needed).
     m0 : array_like, shape (..., 3)
         Initial body-frame angular momentum.
     q0 : array_like, shape (..., 4), optional

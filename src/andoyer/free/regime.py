@@ -50,9 +50,6 @@ __all__ = [
     "working_axes",
 ]
 
-_TRIANGLE_TOL = 4.0 * np.finfo(np.float64).eps
-
-
 class Regime(IntEnum):
     """Kind of torque-free motion of one body and state."""
 
@@ -76,8 +73,9 @@ def check_inputs(moments, m0):
     Parameters
     ----------
     moments : array_like, shape (..., 3)
-        Principal moments along body axes b1, b2, b3: positive, finite, any order,
-        satisfying the triangle inequality ``Iᵢ ≤ Iⱼ + Iₖ`` (to 4 eps).
+        Principal moments along body axes b1, b2, b3: positive, finite, any order.  The
+        solution does not need the triangle inequality ``A + B ≥ C`` of a mass distribution
+        (:class:`~andoyer.RigidBody` warns where it fails).
     m0 : array_like, shape (..., 3)
         Body-frame angular momentum, finite.
 
@@ -89,8 +87,7 @@ def check_inputs(moments, m0):
     Raises
     ------
     ValueError
-        On a wrong shape, a non-finite value, a non-positive moment or a violated
-        triangle inequality.
+        On a wrong shape, a non-finite value or a non-positive moment.
 
     Examples
     --------
@@ -108,10 +105,6 @@ def check_inputs(moments, m0):
     if np.any(moments <= 0):
         bad = moments[moments <= 0].ravel()[:3]
         raise ValueError(f"expected positive moments of inertia, got {bad}")
-    s = np.sort(moments, axis=-1)
-    bad = s[..., 2] > (s[..., 0] + s[..., 1]) * (1.0 + _TRIANGLE_TOL)
-    if np.any(bad):
-        raise ValueError(f"expected moments satisfying the triangle inequality A + B >= C, got {s[bad][:3]}")
     shape = np.broadcast_shapes(moments.shape, m0.shape)
     return np.broadcast_to(moments, shape), np.broadcast_to(m0, shape)
 
@@ -172,7 +165,7 @@ def classify(moments, m0):
     Parameters
     ----------
     moments : array_like, shape (..., 3)
-        Principal moments (any order, positive, triangle inequality).
+        Principal moments (any order, positive).
     m0 : array_like, shape (..., 3)
         Body-frame angular momentum.
 

@@ -24,7 +24,7 @@ from matplotlib.figure import Figure
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer.body import RigidBody, Symmetry
-from andoyer.plot.projection import new_axes
+from andoyer.plot.projection import math_number, new_axes
 from andoyer.plot.sphere import LAM_COLOR, SAM_COLOR, SEPARATRIX_COLOR, momentum_sphere_data
 
 __all__ = ["PhasePortrait", "andoyer_plane", "phase_portrait", "phase_portrait_data"]
@@ -139,9 +139,10 @@ def phase_portrait(
     energies: ArrayLike | None = None,
     *,
     n_points: int = 721,
+    momentum_unit: str | None = None,
     ax: Axes | None = None,
 ) -> Figure:
-    """Draw the ``(l, L)`` phase portrait: energy contours, separatrix (red), saddles (×).
+    r"""Draw the ``(l, L)`` phase portrait: energy contours, separatrix (red), saddles (×).
 
     ``l`` is shown on ``[−π, π]``; contours that cross ``l = ±π`` are drawn on both sides.
 
@@ -149,6 +150,9 @@ def phase_portrait(
     ----------
     body, G, energies, n_points
         As in :func:`phase_portrait_data`.
+    momentum_unit : str, optional
+        Unit of ``G`` and ``L`` for the axis label (e.g. ``"kg m² rad/s"``); default the user's
+        consistent units, "inertia × rad per unit time".
     ax : matplotlib.axes.Axes, optional
         Where to draw; default a new figure.
 
@@ -162,6 +166,8 @@ def phase_portrait(
     >>> fig = phase_portrait(RigidBody(1.0, 2.0, 3.0), G=2.0)
     >>> fig.andoyer_data.separatrix_energy
     1.0
+    >>> print(fig.axes[0].get_ylabel())
+    $L = G\cos J$ (inertia × rad per unit time)
     """
     data = phase_portrait_data(body, G, energies, n_points)
     fig, ax = new_axes(ax, figsize=(8.5, 4.5))
@@ -191,8 +197,8 @@ def phase_portrait(
     ax.set_ylim(-1.05 * data.G, 1.05 * data.G)
     _set_pi_ticks(ax)
     ax.set_xlabel("$l$ (rad)")
-    ax.set_ylabel("$L = G\\cos J$ (angular momentum)")
-    ax.set_title(f"Andoyer phase plane $(l, L)$ of the free body, $G = {data.G:g}$")
+    ax.set_ylabel(f"$L = G\\cos J$ ({momentum_unit or 'inertia × rad per unit time'})")
+    ax.set_title(f"Andoyer phase plane $(l, L)$ of the free body, $G = {math_number(data.G)}$")
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize="small", frameon=False)
     fig.andoyer_data = data  # type: ignore[attr-defined]
     return fig

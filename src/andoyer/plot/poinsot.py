@@ -25,7 +25,7 @@ from andoyer._validation import as_finite
 from andoyer.body import RigidBody
 from andoyer.free import FreeRotation
 from andoyer.plot.contours import separatrix_contour
-from andoyer.plot.projection import Orthographic, new_axes
+from andoyer.plot.projection import Orthographic, math_number, new_axes
 from andoyer.plot.sphere import DEFAULT_VIEW, SEPARATRIX_COLOR
 from andoyer.state import State
 
@@ -88,7 +88,19 @@ class Herpolhode:
     xy: Array
 
 
-def _times(body: RigidBody, state: State, duration: float | None, periods: float, n_points: int) -> Array:
+#: Points per turn of ω about the momentum that the default herpolhode duration keeps (chords of
+#: 2π/100 of the radius: a curve, not a zig-zag).
+HERPOLHODE_POINTS_PER_TURN = 100
+
+
+def _times(
+    body: RigidBody,
+    state: State,
+    duration: float | None,
+    periods: float,
+    n_points: int,
+    points_per_turn: float | None = None,
+) -> Array:
     if not isinstance(state, State) or state.shape != ():
         msg = (
             f"expected a single andoyer State (shape ()), got {getattr(state, 'shape', type(state).__name__)}"
@@ -98,7 +110,8 @@ def _times(body: RigidBody, state: State, duration: float | None, periods: float
         msg = f"expected an integer n_points >= 2, got {n_points!r}"
         raise ValueError(msg)
     if duration is None:
-        period = float(FreeRotation(body).periods(state).period)
+        free = FreeRotation(body).periods(state)
+        period, turn_rate = float(free.period), abs(float(free.precession_rate))
         speed = float(np.linalg.norm(state.omega(body)))
         if np.isfinite(period):
             duration = periods * period
@@ -106,6 +119,11 @@ def _times(body: RigidBody, state: State, duration: float | None, periods: float
             duration = 10 * periods * 2 * np.pi / speed
         else:
             duration = 1.0  # at rest: nothing moves
+        if points_per_turn is not None and np.isfinite(turn_rate) and turn_rate > 0:
+            # ω turns about the momentum at the mean rate of the node (FreeRotation.periods): a
+            # nearly axisymmetric body (the Earth: once a day, wobble period 305 days) makes
+            # hundreds of turns per period of m(t); keep the samples dense enough to draw them.
+            duration = min(duration, n_points / points_per_turn * 2 * np.pi / turn_rate)
     d = float(as_finite(duration, "duration"))
     if d <= 0:
         msg = f"expected duration > 0, got {d!r}"
@@ -169,7 +187,9 @@ def herpolhode_data(
         A state with ``m ≠ 0``.
     duration : float, optional
         Time span; default three periods of ``m(t)`` (thirty turns of the body where that
-        period is infinite).
+        period is infinite), cut to ``n_points / 100`` turns of ``ω`` about the momentum (at the
+        mean rate ``FreeRotation(body).periods(state).precession_rate``) so that every turn gets
+        at least 100 points.
     n_points : int
 
     Returns
@@ -185,7 +205,7 @@ def herpolhode_data(
     >>> bool(np.allclose(h.omega_reference @ h.normal, h.distance, rtol=1e-12))
     True
     """
-    t = _times(body, state, duration, 3.0, n_points)
+    t = _times(body, state, duration, 3.0, n_points, HERPOLHODE_POINTS_PER_TURN)
     G = float(np.linalg.norm(state.m_body))
     if G == 0:
         msg = "expected a state with nonzero angular momentum, got m = 0"
@@ -238,10 +258,10 @@ def polhode(
         for k, curve in enumerate(separatrix_contour(body, data.G)):
             label = "separatrix" if k == 0 else None
             view.draw_curve(ax, curve, color=SEPARATRIX_COLOR, lw=0.8, alpha=0.6, label=label)
-    view.draw_curve(ax, data.m_body, color="k", lw=2.0, label=f"polhode, $T = {data.energy:.6g}$")
+    view.draw_curve(ax, data.m_body, color="k", lw=2.0, label=f"polhode, $T = {math_number(data.energy)}$")
     x, y = view.project(data.m_body[0])
     ax.plot([x], [y], "o", color="k", ms=4)
-    ax.set_title(f"Polhode: body angular momentum on $|m| = G = {data.G:.6g}$")
+    ax.set_title(f"Polhode: body angular momentum on the sphere\n$|m| = G = {math_number(data.G)}$")
     ax.legend(loc="lower left", fontsize="small", frameon=False)
     fig.andoyer_data = data  # type: ignore[attr-defined]
     return fig
@@ -283,7 +303,10 @@ def herpolhode(
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel("$\\omega \\cdot e_1$ (rad per unit time)")
     ax.set_ylabel("$\\omega \\cdot e_2$ (rad per unit time)")
-    ax.set_title(f"Herpolhode on the invariable plane, $\\omega\\cdot\\hat n = 2T/G = {data.distance:.6g}$")
+    ax.set_title(
+        f"Herpolhode on the invariable plane\n$\\omega\\cdot\\hat n = 2T/G = {math_number(data.distance)}$, "
+        f"$0 \\leq t \\leq {math_number(data.t[-1], 4)}$"
+    )
     ax.legend(loc="upper right", fontsize="small", framealpha=0.8)
     fig.andoyer_data = data  # type: ignore[attr-defined]
     return fig

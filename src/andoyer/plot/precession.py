@@ -11,13 +11,19 @@ For an axis with unit vector ``a(t)`` in the reference frame — the figure axis
 the obliquity (angle from the reference pole ``s3``) and the precession (longitude of the node
 of the plane normal to ``a`` on the reference plane ``s1 s2``).  They are the Euler angles
 ``(θ, φ)`` for the figure axis (``b3 = (sin θ sin φ, −sin θ cos φ, cos θ)``) and Andoyer's
-``(I, h)`` for the momentum axis (``m_ref = G (sin I sin h, −sin I cos h, cos I)``).  Least-squares
-straight lines give the trends ``Ω₀ + Ω̇ t`` and ``ε₀ + ε̇ t``; the nutations are what is left,
+``(I, h)`` for the momentum axis (``m_ref = G (sin I sin h, −sin I cos h, cos I)``).  The trends
+``Ω₀ + Ω̇ t`` and ``ε₀ + ε̇ t`` are fitted by least squares (:func:`andoyer.precession.fit_trend`)
+together with sinusoids of the known nutation frequencies, if given: a straight line alone over
+a span that is not a whole number of nutation periods is biased by them (one state of the Earth
+over one 18.6-year lunar nutation: 52.2″/yr instead of 50.48″/yr).  The nutations are what is
+left,
 
 .. math:: \Delta\Omega(t) = \Omega(t) - \Omega_0 - \dot\Omega t, \qquad
           \Delta\varepsilon(t) = \varepsilon(t) - \varepsilon_0 - \dot\varepsilon t.
 
-``Ω̇`` is the mean precession rate.  ``Ω`` is undefined where the axis is at the pole
+``Ω̇`` is the mean rate of the node; a regressing node (``Ω̇ < 0``, the luni-solar precession of
+the planets) has the astronomical *precession rate* ``p = −Ω̇ > 0`` (``p = −⟨ḣ⟩`` for the
+momentum axis, as in :mod:`andoyer.precession`).  ``Ω`` is undefined where the axis is at the pole
 (``ε = 0`` or ``π``), and the unwrapping needs samples closer than half a turn of ``Ω``.
 """
 
@@ -31,6 +37,7 @@ from matplotlib.figure import Figure
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer._validation import as_finite
+from andoyer.precession import ARCSEC, fit_trend
 from andoyer.state import State
 
 __all__ = ["PrecessionSeries", "precession", "precession_data"]
@@ -55,11 +62,13 @@ class PrecessionSeries:
     obliquity : numpy.ndarray, shape (n,)
         ``ε(t)`` (radians).
     precession_rate, precession_at_zero : float
-        ``Ω̇`` and ``Ω₀`` of the straight-line trend.
+        ``Ω̇`` and ``Ω₀`` of the trend (fitted with the nutation frequencies).
     obliquity_rate, obliquity_at_zero : float
         ``ε̇`` and ``ε₀``.
     nutation_longitude, nutation_obliquity : numpy.ndarray, shape (n,)
         ``ΔΩ(t)`` and ``Δε(t)``.
+    frequencies : numpy.ndarray, shape (F,)
+        The nutation frequencies fitted with the trends (those whose period fits in the span).
     """
 
     t: Array
@@ -73,9 +82,12 @@ class PrecessionSeries:
     obliquity_at_zero: float
     nutation_longitude: Array
     nutation_obliquity: Array
+    frequencies: Array
 
 
-def precession_data(times: ArrayLike, states: State, axis: str = "figure") -> PrecessionSeries:
+def precession_data(
+    times: ArrayLike, states: State, axis: str = "figure", frequencies: ArrayLike = ()
+) -> PrecessionSeries:
     """Precession, obliquity, their trends and the nutations of ``states`` at ``times``.
 
     Parameters
@@ -87,6 +99,10 @@ def precession_data(times: ArrayLike, states: State, axis: str = "figure") -> Pr
         :func:`andoyer.integrate.integrate_reference`.
     axis : {"figure", "momentum"}
         The figure axis ``b3`` or the angular momentum.
+    frequencies : array_like, shape (F,)
+        Angular frequencies (radians per unit of ``times``) of the nutation terms to fit together
+        with the trends; those whose period is longer than the span are left out (see
+        :func:`andoyer.precession.fit_trend`).  Default none: straight lines.
 
     Returns
     -------
@@ -104,6 +120,14 @@ def precession_data(times: ArrayLike, states: State, axis: str = "figure") -> Pr
     >>> series = precession_data(t, FreeRotation(body).propagate(s, t))
     >>> round(series.precession_rate, 12), round(float(np.cos(series.obliquity[0])), 12)
     (2.0, 0.45)
+
+    A slow nutation biases a straight line over a span that is not a whole number of its periods:
+
+    >>> wobble = State.from_andoyer(0.0, 0.0, 0.5 * t + 0.1 * np.sin(2.0 * t), 0.9, 2.0, 1.8)
+    >>> round(precession_data(t, wobble, "momentum").precession_rate, 4)
+    0.4962
+    >>> round(precession_data(t, wobble, "momentum", frequencies=[2.0]).precession_rate, 12)
+    0.5
     """
     t = as_finite(times, "times")
     if t.ndim != 1 or t.size < 2 or np.ptp(t) == 0:
@@ -127,22 +151,22 @@ def precession_data(times: ArrayLike, states: State, axis: str = "figure") -> Pr
         a = m / size[:, None]
     obliquity = np.arctan2(np.hypot(a[:, 0], a[:, 1]), a[:, 2])
     node = np.unwrap(np.arctan2(a[:, 0], -a[:, 1]))
-    # Fit in centred time: the trend's two coefficients are then uncorrelated.
-    tm = t.mean()
-    rate_p, mean_p = np.polynomial.polynomial.polyfit(t - tm, node, 1)[::-1]
-    rate_o, mean_o = np.polynomial.polynomial.polyfit(t - tm, obliquity, 1)[::-1]
+    nu = as_finite(frequencies, "frequencies")
+    at_p, rate_p, _, nu = fit_trend(t, node, nu)
+    at_o, rate_o, _, _ = fit_trend(t, obliquity, nu)
     return PrecessionSeries(
         t,
         axis,
         a,
         node,
         obliquity,
-        float(rate_p),
-        float(mean_p - rate_p * tm),
-        float(rate_o),
-        float(mean_o - rate_o * tm),
-        node - mean_p - rate_p * (t - tm),
-        obliquity - mean_o - rate_o * (t - tm),
+        rate_p,
+        at_p,
+        rate_o,
+        at_o,
+        node - at_p - rate_p * t,
+        obliquity - at_o - rate_o * t,
+        nu,
     )
 
 
@@ -151,16 +175,21 @@ def precession(
     states: State,
     axis: str = "figure",
     *,
+    frequencies: ArrayLike = (),
+    regression: bool = False,
     degrees: bool = False,
     time_unit: str | None = None,
     axes: tuple[Axes, Axes, Axes] | None = None,
 ) -> Figure:
-    """Draw the precession ``Ω``, the obliquity ``ε`` (with their trends) and the nutations.
+    r"""Draw the precession ``Ω``, the obliquity ``ε`` (with their trends) and the nutations.
 
     Parameters
     ----------
-    times, states, axis
+    times, states, axis, frequencies
         As in :func:`precession_data`.
+    regression : bool
+        Label the trend with the precession rate ``p = −Ω̇`` of a regressing node (positive for
+        the luni-solar precession; in arcseconds with ``degrees=True``) instead of ``Ω̇``.
     degrees : bool
         Show angles in degrees (default radians).
     time_unit : str, optional
@@ -182,8 +211,11 @@ def precession(
     >>> fig = precession(t, FreeRotation(body).propagate(s, t))
     >>> len(fig.axes)
     3
+    >>> print(fig.axes[0].get_lines()[1].get_label())
+    trend:
+    $\dot\Omega = 2$ rad per unit time
     """
-    data = precession_data(times, states, axis)
+    data = precession_data(times, states, axis, frequencies)
     if axes is None:
         fig = Figure(layout="constrained", figsize=(7.5, 7.0))
         axes = tuple(fig.subplots(3, 1, sharex=True))
@@ -198,13 +230,21 @@ def precession(
     t = data.t
     top, mid, low = axes
     top.plot(t, k * data.precession, color="tab:blue", label=f"$\\Omega = {names[0]}$")
+    per = f"per {time_unit or 'unit time'}"
+    if not regression:
+        rate = f"$\\dot\\Omega = {k * data.precession_rate:.6g}$ {unit} {per}"
+    elif degrees:  # precession rates are quoted in arcseconds
+        rate = f"$p = -\\dot\\Omega$ = {-data.precession_rate / ARCSEC:.4g}″ {per}"
+    else:
+        rate = f"$p = -\\dot\\Omega$ = {-data.precession_rate:.6g} rad {per}"
+    fitted = f", fitted with {data.frequencies.size} nutation terms" if data.frequencies.size else ""
     top.plot(
         t,
         k * (data.precession_at_zero + data.precession_rate * t),
         color="k",
         ls="--",
         lw=0.8,
-        label=f"trend, $\\dot\\Omega = {k * data.precession_rate:.6g}$ {unit} per {time_unit or 'unit time'}",
+        label=f"trend{fitted}:\n{rate}",
     )
     top.set_ylabel(f"precession $\\Omega$ ({unit})")
     top.set_title(f"Precession, obliquity and nutation of the {what}")

@@ -19,9 +19,26 @@ from numpy.typing import ArrayLike, NDArray
 
 from andoyer._validation import as_finite, as_vectors
 
-__all__ = ["Orthographic", "new_axes"]
+__all__ = ["Orthographic", "math_number", "new_axes"]
 
 Array = NDArray[np.float64]
+
+
+def math_number(value: float, digits: int = 6) -> str:
+    r"""``value`` as mathtext (without the dollars): ``7.29212 \times 10^{-5}`` rather than ``7.29212e-05``.
+
+    Plain ``%g`` notation where ``%g`` has no exponent (from 1e-4 to below 10**digits).
+
+    Examples
+    --------
+    >>> math_number(7.2921e-05), math_number(0.25), math_number(-3e8, 3)
+    ('7.2921 \\times 10^{-5}', '0.25', '-3 \\times 10^{8}')
+    """
+    text = f"{float(value):.{digits}g}"
+    if "e" not in text:
+        return text
+    mantissa, exponent = text.split("e")
+    return f"{mantissa} \\times 10^{{{int(exponent)}}}"
 
 
 def new_axes(ax: Axes | None, **figure_kw: object) -> tuple[Figure, Axes]:

@@ -17,7 +17,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from andoyer.body import RigidBody
 from andoyer.plot.contours import check_energy, default_energies, energy_contour, separatrix_contour
-from andoyer.plot.projection import Orthographic, new_axes
+from andoyer.plot.projection import Orthographic, math_number, new_axes
 
 __all__ = ["MomentumSphere", "momentum_sphere", "momentum_sphere_data"]
 
@@ -143,7 +143,7 @@ def momentum_sphere(
         view.draw_curve(
             ax, curve, color=SEPARATRIX_COLOR, lw=1.8, label="separatrix $T = G^2/2B$" if k == 0 else None
         )
-    ax.set_title(f"Angular-momentum sphere $|m| = G = {data.G:g}$: energy contours")
+    ax.set_title(f"Energy contours on the angular-momentum sphere\n$|m| = G = {math_number(data.G)}$")
     ax.legend(loc="lower left", fontsize="small", frameon=False)
     fig.andoyer_data = data  # type: ignore[attr-defined]
     return fig
