@@ -36,7 +36,7 @@ if TYPE_CHECKING:  # the eager names, for type checkers and IDEs
         special,
         theories,
     )
-    from andoyer.body import RigidBody, RotationMode, Symmetry
+    from andoyer.body import NonPhysicalInertiaWarning, RigidBody, RotationMode, Symmetry
     from andoyer.charts import SingularChartWarning
     from andoyer.free import FreeRotation
     from andoyer.propagation import propagate
@@ -45,6 +45,7 @@ if TYPE_CHECKING:  # the eager names, for type checkers and IDEs
 #: Public name -> the module that defines it (a subpackage maps to itself).
 _LAZY = {
     "FreeRotation": "andoyer.free",
+    "NonPhysicalInertiaWarning": "andoyer.body",
     "RigidBody": "andoyer.body",
     "RotationMode": "andoyer.body",
     "SingularChartWarning": "andoyer.charts",
@@ -70,6 +71,7 @@ _LAZY = {
 
 __all__ = [
     "FreeRotation",
+    "NonPhysicalInertiaWarning",
     "RigidBody",
     "RotationMode",
     "SingularChartWarning",
