@@ -34,7 +34,7 @@ Frequencies (``frequencies=``):
   ``s = −5.59, −7.05, −18.850, −17.755, 0, −26.347855, −2.9925259, −0.691736``: the
   linear theory misses ``g_5`` by 0.53″/yr and ``g_6`` by 5.7″/yr (the 5:2 near-resonance
   of Jupiter and Saturn), which turns the Earth's 405-kyr eccentricity cycle
-  (``g_2 − g_5``) into 359 kyr; elsewhere it is within 0.4″/yr.
+  (``g_2 − g_5``) into 359 kyr; elsewhere it is within 0.48″/yr (``s_2``).
 * ``"la2004"``: the same eigenvectors with La2004's frequencies in place of the
   eigenvalues (paired by rank), amplitudes refitted to J2000: an empirical patch that
   keeps the linear theory's mode shapes and gets the periods right (the 405-kyr cycle);
