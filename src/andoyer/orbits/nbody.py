@@ -206,7 +206,7 @@ class _Segment:
         target = np.ceil(reach / CHUNK_YEARS) * CHUNK_YEARS
         count = round((target - start) / self.sample)
         times = self.sign * (start + self.sample * np.arange(first, count + 1))
-        show = (sys.stderr.isatty() if progress is None else progress) and (target - start) > 2 * CHUNK_YEARS
+        show = (sys.stderr.isatty() if progress is None else progress) and (target - start) > 20000.0
         states = np.empty((times.size, 9, 6))
         buf = np.empty((9, 6))
         for k, t in enumerate(tqdm(times, disable=not show, unit="sample", desc="nbody", file=sys.stderr)):
