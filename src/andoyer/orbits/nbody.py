@@ -65,7 +65,7 @@ Array = NDArray[np.float64]
 C_AU_PER_YEAR = 299792.458 * 365.25 * 86400.0 / 149597870.700
 #: Integrations are extended in chunks of this many years (whole sampling intervals).
 CHUNK_YEARS = 1000.0
-CACHE_FORMAT = 1
+CACHE_FORMAT = 2  # 2: samples at the times reached (aimed half a step short)
 
 
 def cache_directory() -> Path:
@@ -170,7 +170,8 @@ class _Segment:
 
     def _load(self) -> None:
         try:
-            with np.load(self.path, allow_pickle=False) as f:
+            # Read the bytes first: np.load on a truncated file leaves its handle open.
+            with np.load(io.BytesIO(self.path.read_bytes()), allow_pickle=False) as f:
                 t, normal, ecc, last = f["t"], f["normal"], f["ecc"], f["last_state"]
             ok = (
                 t.ndim == 1
@@ -208,15 +209,18 @@ class _Segment:
         times = self.sign * (start + self.sample * np.arange(first, count + 1))
         show = (sys.stderr.isatty() if progress is None else progress) and (target - start) > 20000.0
         states = np.empty((times.size, 9, 6))
+        reached = np.empty(times.size)
         buf = np.empty((9, 6))
         for k, t in enumerate(tqdm(times, disable=not show, unit="sample", desc="nbody", file=sys.stderr)):
-            if t != sim.t:
-                sim.integrate(float(t), exact_finish_time=0)
+            if k or first:
+                # Aim half a step short: the run stops on the step that lands on t (a whole number of
+                # steps per sample), never one step later because the summed steps fell short by round-off.
+                sim.integrate(float(t) - 0.5 * sim.dt, exact_finish_time=0)
             sim.serialize_particle_data(xyzvxvyvz=buf)
-            states[k] = buf
+            states[k], reached[k] = buf, sim.t
         del extras
         normal, ecc = _vectors(states)
-        self.t = np.concatenate([self.t, times])
+        self.t = np.concatenate([self.t, reached])
         self.normal = np.concatenate([self.normal, normal])
         self.ecc = np.concatenate([self.ecc, ecc])
         self.last_state = states[-1].copy()
