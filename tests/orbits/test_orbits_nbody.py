@@ -156,7 +156,7 @@ def test_nbody_span_error():
 
 
 @pytest.mark.slow
-def test_nbody_earth_normal_near_vondrak_200kyr():
+def test_nbody_earth_normal_near_vondrak_200kyr(cache_dir):
     # Measured: 0.054° over ±100 kyr, 0.106° over ±200 kyr; VCW 2011 state a few tenths of a degree
     # of their own error at ±200 kyr.
     t = np.linspace(-2e5, 2e5, 2001)
@@ -166,10 +166,27 @@ def test_nbody_earth_normal_near_vondrak_200kyr():
 
 
 @pytest.mark.slow
-def test_nbody_step_convergence(tmp_path, monkeypatch):
+@pytest.mark.parametrize(
+    ("body", "span", "normal_deg", "ecc"),
+    [
+        # Measured distances of the linear secular theory from the N-body orbit (docs/orbits.md).
+        ("earth", 2e4, 0.045, 0.0007),
+        ("earth", 2e5, 0.72, 0.014),
+        ("mars", 2e4, 0.14, 0.0034),
+        ("mars", 2e5, 2.1, 0.042),
+    ],
+)
+def test_nbody_secular_distance(cache_dir, body, span, normal_deg, ecc):
+    t = np.linspace(-span, span, 2001)
+    orbit, secular = NBodyOrbit(body, progress=False), SecularOrbit(body, frequencies="linear")
+    assert np.degrees(angle(orbit.normal(t), secular.normal(t))).max() < normal_deg
+    assert np.abs(orbit.eccentricity_vector(t) - secular.eccentricity_vector(t)).max() < ecc
+
+
+@pytest.mark.slow
+def test_nbody_step_convergence(cache_dir):
     # Halving the step changes the Earth's and Mars' orbits over 20 kyr by far less than their distance
     # from VCW 2011: the 4-day step's own error is not what limits the source.
-    monkeypatch.setenv("ANDOYER_CACHE_DIR", str(tmp_path))
     t = np.linspace(-2e4, 2e4, 201)
     for body in ("earth", "mars"):
         coarse = NBodyOrbit(body, step_days=4.0, progress=False)
