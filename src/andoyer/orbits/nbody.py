@@ -22,11 +22,14 @@ sampling) are 0.2″ (Earth) and 0.3″ (Mars) in the normal and 2×10⁻⁵ (Ea
 7×10⁻⁵ (Mars) in ``e``, far below the secular motion the spin axis responds to; sampling
 below Nyquist aliases these terms but cannot enlarge them.
 
-**Errors and cost** (measured on this project's 2-core machine): energy conserved to
-~1e-12 relatively over 1 kyr; the Earth's normal is within 0.005° of
-:class:`~andoyer.orbits.vondrak.VondrakEcliptic` over ±20 kyr and within the distances
-recorded in ``docs/orbits.md`` over ±200 kyr; about 100–170 s of CPU per Myr of
-integration (one direction). The initial states are Standish's best-fit elements, not
+**Errors and cost** (measured on this project's shared 2-core machine): energy conserved
+to 5e-13 relatively over 1 kyr; halving the step moves the Earth's and Mars' normals by
+less than 0.5″ over ±20 kyr; the Earth's normal is within 0.9″ of
+:class:`~andoyer.orbits.vondrak.VondrakEcliptic` over ±1 kyr, 0.009° over ±20 kyr, 0.054°
+over ±100 kyr and 0.106° over ±200 kyr (VCW 2011 state a few tenths of a degree of their
+own error there); with GR, about 250–290 s of CPU per Myr integrated (400 kyr took 99 s,
+1.6 Myr 456 s); without GR about 170 s per Myr. A cached span is read in milliseconds.
+The initial states are Standish's best-fit elements, not
 DE405's osculating states: an error in the starting orbit of the order of the planets'
 short-period perturbations. The Moon's action on the Earth–Moon barycentre's orbit, the
 Sun's J2 and oblateness, asteroids and tides are left out.
