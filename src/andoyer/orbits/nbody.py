@@ -27,8 +27,9 @@ to 5e-13 relatively over 1 kyr; halving the step moves the Earth's and Mars' nor
 less than 0.5″ over ±20 kyr; the Earth's normal is within 0.9″ of
 :class:`~andoyer.orbits.vondrak.VondrakEcliptic` over ±1 kyr, 0.009° over ±20 kyr, 0.054°
 over ±100 kyr and 0.106° over ±200 kyr (VCW 2011 state a few tenths of a degree of their
-own error there); with GR, about 250–290 s of CPU per Myr integrated (400 kyr took 99 s,
-1.6 Myr 456 s); without GR about 170 s per Myr. A cached span is read in milliseconds.
+own error there). Cost: 84 CPU seconds per Myr integrated (one direction, one core,
+``benchmarks/bench_orbits.py``; GR adds 2–3 %; REBOUND's IAS15 is 31× slower), 250–290 s of
+wall time per Myr on the shared machine; a cached span is read in milliseconds.
 The initial states are Standish's best-fit elements, not
 DE405's osculating states: an error in the starting orbit of the order of the planets'
 short-period perturbations. The Moon's action on the Earth–Moon barycentre's orbit, the
