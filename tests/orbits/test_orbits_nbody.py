@@ -118,19 +118,14 @@ def test_nbody_corrupt_cache_is_recomputed(cache_dir):
             assert stored["t"].size > 1
 
 
-def test_nbody_extending_matches_a_single_run(tmp_path):
+def test_nbody_extending_matches_a_single_run(tmp_path, monkeypatch):
     # Resuming from the cached last state gives what one longer integration gives (to round-off).
-    import os
-
-    os.environ["ANDOYER_CACHE_DIR"] = str(tmp_path)
-    try:
-        short = NBodyOrbit("earth", gr=False, sample_years=50.0, progress=False)
-        short.normal([0.0, 900.0])  # integrates to 1 kyr, cached
-        resumed = NBodyOrbit("earth", gr=False, sample_years=50.0, progress=False)
-        t = np.linspace(0.0, 2500.0, 26)
-        extended = resumed.eccentricity_vector(t)
-    finally:
-        del os.environ["ANDOYER_CACHE_DIR"]
+    monkeypatch.setenv("ANDOYER_CACHE_DIR", str(tmp_path))
+    short = NBodyOrbit("earth", gr=False, sample_years=50.0, progress=False)
+    short.normal([0.0, 900.0])  # integrates to 1 kyr, cached
+    resumed = NBodyOrbit("earth", gr=False, sample_years=50.0, progress=False)
+    t = np.linspace(0.0, 2500.0, 26)
+    extended = resumed.eccentricity_vector(t)
     single = NBodyOrbit("earth", gr=False, sample_years=50.0, cache=False, progress=False)
     np.testing.assert_allclose(extended, single.eccentricity_vector(t), atol=1e-12)
 
