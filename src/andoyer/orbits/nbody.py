@@ -9,10 +9,11 @@ of order 17) at a step of about 4 days (``step_days``; Mercury's 88-day orbit in
 the step is adjusted so that a whole number of steps fills each sampling interval).
 General relativity: the Sun's post-Newtonian potential of Nobili & Roxburgh (1986) through
 REBOUNDx ``gr_potential`` (the one of REBOUNDx's GR models meant for symplectic
-integrators: it gives the right perihelion precession, 43″/cy for Mercury, checked in the
-tests). Without REBOUNDx (``gr=False``, or not installed) the orbits leave out GR: the
-perihelia then precess too slowly by ``3 (GM)^{3/2}/(c² a^{5/2} (1−e²))``, 43.0″/cy for
-Mercury, 3.8″/cy for the Earth, 1.35″/cy for Mars.
+integrators: it gives the right perihelion precession; the tests measure 42.80″/cy for
+Mercury against Einstein's 42.98″/cy). Without REBOUNDx (``gr=False``, or not installed)
+the orbits leave out GR: the perihelia then precess too slowly by
+``3 (GM)^{3/2}/(c² a^{5/2} (1−e²))``, 43.0″/cy for Mercury, 3.8″/cy for the Earth,
+1.35″/cy for Mars.
 
 **Output.** The heliocentric *osculating* orbit of the chosen planet, from ``h = r × v``
 (the normal) and ``e = v × h/μ − r/|r|``, ``μ = G(M_☉ + m)``, sampled every
