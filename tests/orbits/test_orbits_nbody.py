@@ -145,6 +145,15 @@ def test_nbody_bad_arguments(kwargs, match):
         NBodyOrbit(**kwargs)
 
 
+def test_nbody_without_reboundx_warns_and_leaves_out_gr(monkeypatch):
+    monkeypatch.setattr(nbody_module, "_has_reboundx", lambda: False)
+    with pytest.warns(UserWarning, match="reboundx is not installed: the N-body orbits leave out general"):
+        orbit = NBodyOrbit("earth", cache=False)
+    assert orbit.gr is False
+    with pytest.raises(ValueError, match="expected reboundx to be installed for gr=True"):
+        NBodyOrbit("earth", gr=True, cache=False)
+
+
 def test_nbody_span_error():
     with pytest.raises(ValueError, match="expected times within the nbody orbit's span"):
         NBodyOrbit("earth", max_span=1000.0, cache=False).normal(2000.0)
