@@ -13,17 +13,40 @@ the time ``t`` in Julian years TT from J2000 (negative = past):
   :class:`ValueError` outside it.
 
 Sources: :class:`VondrakEcliptic` (the long-term ecliptic of Vondrák, Capitaine &
-Wallace 2011, through pyerfa's ``ltpecl``).
+Wallace 2011, through pyerfa's ``ltpecl``), :class:`NBodyOrbit` (the Sun and the eight
+planets integrated with REBOUND, cached), :class:`SecularOrbit` (the Laplace–Lagrange
+secular theory), :class:`TableOrbit` (CSV and La2010-style tables); :func:`orbit_history`
+picks one by name or path.
 
 Examples
 --------
->>> from andoyer.orbits import VondrakEcliptic
+>>> from andoyer.orbits import VondrakEcliptic, orbit_history
 >>> n = VondrakEcliptic().normal(0.0)
 >>> [round(float(x), 12) for x in n]
 [0.0, 0.0, 1.0]
+>>> orbit_history("secular", body="earth").has_eccentricity
+True
 """
 
 from andoyer.orbits.base import OrbitHistory, check_times
+from andoyer.orbits.factory import SOURCES, orbit_history
+from andoyer.orbits.nbody import NBodyOrbit
+from andoyer.orbits.planets import PLANETS
+from andoyer.orbits.secular import SecularOrbit
+from andoyer.orbits.table import TableOrbit, read_alkhqp, read_orbit_csv, write_orbit_csv
 from andoyer.orbits.vondrak import VondrakEcliptic
 
-__all__ = ["OrbitHistory", "VondrakEcliptic", "check_times"]
+__all__ = [
+    "PLANETS",
+    "SOURCES",
+    "NBodyOrbit",
+    "OrbitHistory",
+    "SecularOrbit",
+    "TableOrbit",
+    "VondrakEcliptic",
+    "check_times",
+    "orbit_history",
+    "read_alkhqp",
+    "read_orbit_csv",
+    "write_orbit_csv",
+]

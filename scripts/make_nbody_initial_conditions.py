@@ -1,0 +1,107 @@
+"""Write ``src/andoyer/orbits/data/planets_j2000.json``: the planets at J2000 for ``andoyer.orbits``.
+
+Sources (typed in from the published tables; no network is needed to run this script):
+
+* Elements: E. M. Standish, "Keplerian Elements for Approximate Positions of the Major
+  Planets", JPL Solar System Dynamics, Table 1 (``p_elem_t1.txt``, valid 1800 AD–2050 AD,
+  a fit to the JPL DE405 ephemeris), mean ecliptic and equinox of J2000: ``a`` (au), ``e``,
+  ``I``, ``L``, ``ϖ``, ``Ω`` (degrees) at J2000 (TDB = JD 2451545.0). The Earth row is the
+  Earth–Moon barycentre. These are best-fit elements over 250 years, not osculating ones:
+  the states derived from them differ from DE405's osculating states by the planets'
+  short-period perturbations (Standish's stated position errors over 1800–2050: 15–600″,
+  the largest for Jupiter and Saturn, whose great inequality the fit absorbs).
+  No JPL state vector at J2000 was reachable from this project's machines, so the states
+  below are the Keplerian conversion of these elements, stated as such in the data file.
+* Gravitational parameters: JPL DE440 (Park, Folkner, Williams & Boggs 2021, AJ 161, 105,
+  Table 8), km³/s²; the planets' values are those of their systems (planet + moons), the
+  Earth's that of the Earth–Moon system.
+* Astronomical unit: 149 597 870.700 km (IAU 2012 Resolution B2); the Julian year of
+  365.25 days of 86 400 s.
+
+Run from the repository root: ``python3 scripts/make_nbody_initial_conditions.py``.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+
+from andoyer.orbits.elements import elements_to_state
+
+ROOT = Path(__file__).resolve().parents[1]
+OUT = ROOT / "src" / "andoyer" / "orbits" / "data" / "planets_j2000.json"
+
+AU_KM = 149597870.700  # IAU 2012 Resolution B2
+YEAR_S = 365.25 * 86400.0  # Julian year
+
+# DE440 GM values (km^3/s^2), Park et al. (2021) Table 8.
+GM_KM3_S2 = {
+    "sun": 132712440041.279419,
+    "mercury": 22031.868551,
+    "venus": 324858.592000,
+    "earth": 403503.235502,  # Earth-Moon system
+    "mars": 42828.375816,
+    "jupiter": 126712764.100000,
+    "saturn": 37940584.841800,
+    "uranus": 5794556.400000,
+    "neptune": 6836527.100580,
+}
+
+# Standish, JPL "Keplerian Elements for Approximate Positions of the Major Planets", Table 1:
+# a (au), e, I (deg), L (deg), varpi (deg), Omega (deg) at J2000, J2000 ecliptic and equinox.
+STANDISH_TABLE_1 = {
+    "mercury": (0.38709927, 0.20563593, 7.00497902, 252.25032350, 77.45779628, 48.33076593),
+    "venus": (0.72333566, 0.00677672, 3.39467605, 181.97909950, 131.60246718, 76.67984255),
+    "earth": (1.00000261, 0.01671123, -0.00001531, 100.46457166, 102.93768193, 0.0),
+    "mars": (1.52371034, 0.09339410, 1.84969142, -4.55343205, -23.94362959, 49.55953891),
+    "jupiter": (5.20288700, 0.04838624, 1.30439695, 34.39644051, 14.72847983, 100.47390909),
+    "saturn": (9.53667594, 0.05386179, 2.48599187, 49.95424423, 92.59887831, 113.66242448),
+    "uranus": (19.18916464, 0.04725744, 0.77263783, 313.23810451, 170.95427630, 74.01692503),
+    "neptune": (30.06992276, 0.00859048, 1.77004347, -55.12002969, 44.96476227, 131.78422574),
+}
+
+
+def main() -> None:
+    """Convert the elements to heliocentric states and write the JSON file."""
+    to_au3_yr2 = YEAR_S**2 / AU_KM**3
+    gm = {name: value * to_au3_yr2 for name, value in GM_KM3_S2.items()}
+    planets = {}
+    for name, (a, e, inc, L, varpi, node) in STANDISH_TABLE_1.items():
+        mu = gm["sun"] + gm[name]
+        r, v = elements_to_state(mu, a, e, *np.radians([inc, node, varpi, L]))
+        planets[name] = {
+            "gm": gm[name],
+            "elements": {"a": a, "e": e, "inclination_deg": inc, "node_deg": node, "varpi_deg": varpi,
+                         "mean_longitude_deg": L},
+            "position": r.tolist(),
+            "velocity": v.tolist(),
+        }
+    data = {
+        "description": (
+            "The Sun and the eight planets (earth = Earth-Moon barycentre) at J2000 (JD 2451545.0 TDB): "
+            "heliocentric positions (au) and velocities (au per Julian year) in the J2000 ecliptic and "
+            "equinox frame, and GM (au^3/yr^2). Written by scripts/make_nbody_initial_conditions.py."
+        ),
+        "sources": {
+            "elements": (
+                "E. M. Standish, Keplerian Elements for Approximate Positions of the Major Planets, "
+                "JPL Solar System Dynamics, Table 1 (1800 AD-2050 AD, fit to DE405); the states are the "
+                "two-body (Keplerian) conversion of these best-fit elements, not DE405 osculating states."
+            ),
+            "gm": "JPL DE440: Park, Folkner, Williams & Boggs (2021), AJ 161, 105, Table 8 (system values).",
+            "au_km": "149597870.700 km, IAU 2012 Resolution B2.",
+        },
+        "units": {"length": "au", "time": "Julian year (365.25 d)", "gm": "au^3/yr^2", "angles": "deg"},
+        "au_km": AU_KM,
+        "sun_gm": gm["sun"],
+        "planets": planets,
+    }
+    OUT.parent.mkdir(parents=True, exist_ok=True)
+    OUT.write_text(json.dumps(data, indent=1) + "\n", encoding="utf-8")
+    print(f"wrote {OUT}")
+
+
+if __name__ == "__main__":
+    main()
