@@ -1,0 +1,345 @@
+r"""Spin-axis histories under a moving orbit: obliquity, general precession, climatic precession.
+
+Conventions (frame: the J2000 ecliptic and equinox, :mod:`andoyer.orbits`; ``t`` in Julian
+years TT from J2000):
+
+* the **axis** ``s(t)`` is integrated from ``s(0) = s₀`` (default, for the Earth, the IAU 2006
+  mean pole of J2000, ``s₀ = (0, sin ε₀, cos ε₀)`` with ``ε₀ = 84381.406″``);
+* the **obliquity** ``ε = ∠(s, n) = atan2(|s×n|, s·n)``, ``n(t)`` the orbit normal of date;
+* the **equinox of date** ``γ = s×n / |s×n|``, the ascending node of the orbit on the
+  equator, where the Sun crosses the equator northward (``γ(0) = +x`` for the Earth);
+* the **general precession in longitude** ``p_A``: with the frame of date
+  ``F(t) = [γ, n×γ, n]`` (rows) and ``R = F(t) F(0)ᵀ = R₃(−(Π_A + p_A)) R₁(π_A) R₃(Π_A)``
+  (Lieske et al. 1977; ``Π_A, π_A`` the node and inclination of the ecliptic of date on that
+  of J2000), ``p_A = −atan2(R₀₁ − R₁₀, R₀₀ + R₁₁)``, which needs no node (it is regular at
+  ``π_A = 0``), unwrapped along the history and zero at J2000. It is the accumulated motion of
+  the equinox along the moving ecliptic, IAU 2006's ``p_A`` (5028.796195″/cy);
+* the **longitude of perihelion** ``ϖ`` (heliocentric, from the moving equinox along the
+  orbit of date, as in Laskar et al. 2004 and Berger & Loutre 1991: ``ϖ ≈ 102.9°`` at J2000):
+  ``ϖ = atan2(ê·(n×γ), ê·γ)``, ``ê`` the unit vector to perihelion; the **climatic
+  precession** is ``e sin ϖ`` (≈ +0.0163 at J2000).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from andoyer._validation import as_vectors
+from andoyer.orbits.base import OrbitHistory
+from andoyer.spin_axis.insolation import daily_insolation
+from andoyer.spin_axis.model import ARCSEC, SpinAxisModel
+from andoyer.spin_axis.stepping import rotate_stages, stage_times
+
+__all__ = [
+    "EPSILON_0",
+    "SpinAxisHistory",
+    "equinox",
+    "general_precession",
+    "integrate_axis",
+    "mean_pole_j2000",
+    "output_times",
+]
+
+Array = NDArray[np.float64]
+
+#: IAU 2006 obliquity of the ecliptic at J2000, radians (84381.406″).
+EPSILON_0 = 84381.406 * ARCSEC
+#: Default largest step (Julian years) of the order-8 composition: 1e-11 rad over 400 kyr.
+DEFAULT_STEP = 400.0
+
+
+def mean_pole_j2000() -> Array:
+    """The IAU 2006 mean celestial pole of J2000 in the J2000 ecliptic frame, ``(0, sin ε₀, cos ε₀)``.
+
+    Returns
+    -------
+    numpy.ndarray, shape (3,)
+
+    Examples
+    --------
+    >>> np.round(mean_pole_j2000(), 6).tolist()
+    [0.0, 0.397777, 0.917482]
+    """
+    return np.array([0.0, np.sin(EPSILON_0), np.cos(EPSILON_0)])
+
+
+def output_times(t0: float, t1: float, dt: float) -> Array:
+    """``t0, t0 + dt, …`` up to ``t1`` (included when it falls on the grid, to 1e-9 steps).
+
+    Parameters
+    ----------
+    t0, t1, dt : float
+        Julian years; ``dt > 0``, ``t1 ≥ t0``.
+
+    Returns
+    -------
+    numpy.ndarray, shape (N,)
+
+    Examples
+    --------
+    >>> output_times(-1000.0, 1000.0, 500.0).tolist()
+    [-1000.0, -500.0, 0.0, 500.0, 1000.0]
+    >>> output_times(0.0, 1.0, 0.0)
+    Traceback (most recent call last):
+    ...
+    ValueError: expected a positive finite output step, got 0.0
+    """
+    if not (np.isfinite(dt) and dt > 0):
+        msg = f"expected a positive finite output step, got {dt!r}"
+        raise ValueError(msg)
+    if not (np.isfinite(t0) and np.isfinite(t1) and t1 >= t0):
+        msg = f"expected a span T0 <= T1 (finite), got {t0!r} to {t1!r}"
+        raise ValueError(msg)
+    count = int(np.floor((t1 - t0) / dt + 1e-9)) + 1
+    if count > 10_000_000:
+        msg = f"expected at most 10 million output times, got {count}"
+        raise ValueError(msg)
+    return t0 + dt * np.arange(count)
+
+
+def equinox(s: ArrayLike, n: ArrayLike) -> Array:
+    """Unit vector to the equinox of date, ``γ = s×n/|s×n|``, shape (..., 3).
+
+    Parameters
+    ----------
+    s, n : array_like, shape (..., 3)
+        Unit spin axis and orbit normal.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+
+    Examples
+    --------
+    >>> equinox(mean_pole_j2000(), [0.0, 0.0, 1.0]).tolist()
+    [1.0, 0.0, 0.0]
+    """
+    g = np.cross(np.asarray(s, dtype=float), np.asarray(n, dtype=float))
+    return g / np.linalg.norm(g, axis=-1, keepdims=True)
+
+
+def _frames(s: Array, n: Array) -> Array:
+    g = equinox(s, n)
+    return np.stack([g, np.cross(n, g), n], axis=-2)
+
+
+def general_precession(s: ArrayLike, n: ArrayLike, s0: ArrayLike, n0: ArrayLike) -> Array:
+    """``p_A`` (radians, wrapped to (−π, π]) of the frames of date against the frame of ``(s0, n0)``.
+
+    Parameters
+    ----------
+    s, n : array_like, shape (..., 3)
+    s0, n0 : array_like, shape (3,)
+        Axis and orbit normal at J2000.
+
+    Returns
+    -------
+    numpy.ndarray, shape (...)
+
+    Examples
+    --------
+    The IAU 2006 frame of date one century after J2000 (pyerfa): ``p_A`` = 5028.796″ + 1.105″.
+
+    >>> import erfa
+    >>> rb, rp, rbp = erfa.bp06(2451545.0, 36525.0)
+    >>> c, s = np.cos(EPSILON_0), np.sin(EPSILON_0)
+    >>> ecl = np.array([[1, 0, 0], [0, c, s], [0, -s, c]])  # J2000 equator -> ecliptic
+    >>> pole = ecl @ rp[2]  # mean pole of date, J2000 ecliptic frame
+    >>> eps_a = erfa.obl06(2451545.0, 36525.0)
+    >>> normal = ecl @ erfa.ecm06(2451545.0, 36525.0)[2] @ rb.T  # ecliptic pole of date
+    >>> p = general_precession(pole, normal, mean_pole_j2000(), [0, 0, 1])
+    >>> round(float(p / ARCSEC), 3)
+    5029.9
+    """
+    r = _frames(np.asarray(s, dtype=float), np.asarray(n, dtype=float)) @ _frames(
+        np.asarray(s0, dtype=float), np.asarray(n0, dtype=float)
+    ).T
+    return -np.arctan2(r[..., 0, 1] - r[..., 1, 0], r[..., 0, 0] + r[..., 1, 1])
+
+
+def _segments(knots: Array, step: float) -> tuple[Array, Array, Array]:
+    """Steps from ``knots[0]`` through every knot: starts, sizes, and each knot's step index."""
+    gaps = np.diff(knots)
+    counts = np.maximum(np.ceil(np.abs(gaps) / step - 1e-12).astype(np.int64), 1)
+    sizes = np.repeat(gaps / counts, counts)
+    ends = np.cumsum(counts)
+    starts = np.repeat(knots[:-1], counts) + (np.arange(counts.sum()) - np.repeat(ends - counts, counts)) * sizes
+    return starts, sizes, ends - 1
+
+
+def integrate_axis(
+    orbit: OrbitHistory,
+    model: SpinAxisModel,
+    times: Array,
+    s0: Array,
+    step: float = DEFAULT_STEP,
+    order: int = 8,
+    rates: Array | None = None,
+) -> tuple[Array, Array, Array]:
+    """Integrate ``s`` from ``s0`` at ``t = 0`` to ``times`` (both ways), densely in steps ≤ ``step``.
+
+    Parameters
+    ----------
+    orbit : OrbitHistory
+    model : SpinAxisModel
+    times : ndarray, shape (N,)
+        Increasing output times (years from J2000).
+    s0 : ndarray, shape (M, 3)
+        Unit axes at J2000 (``M`` runs sharing the orbit).
+    step : float
+        Largest step, years.
+    order : {2, 4, 6, 8}
+    rates : ndarray, shape (M, 3), optional
+        Per-run model parameters ``(alpha_sun, tide_spin, tide_moon)`` overriding the
+        model's (ensembles).
+
+    Returns
+    -------
+    grid : ndarray, shape (K,)
+        Every step's end time, increasing (includes 0 and ``times``).
+    axes : ndarray, shape (M, K, 3)
+    index : ndarray, shape (N,)
+        Position of each output time in ``grid``.
+    """
+    if not (np.isfinite(step) and step > 0):
+        msg = f"expected a positive finite integration step in years, got {step!r}"
+        raise ValueError(msg)
+    chains = []
+    for side in (times[times > 0], times[times < 0][::-1]):
+        if side.size == 0:
+            chains.append((np.zeros(0), np.zeros((len(s0), 0, 3)), np.zeros(0, dtype=np.int64)))
+            continue
+        starts, sizes, at = _segments(np.concatenate([[0.0], side]), step)
+        mid, dur = stage_times(starts, sizes, order)
+        normals = np.ascontiguousarray(orbit.normal(mid))
+        e = np.linalg.norm(orbit.eccentricity_vector(mid), axis=-1) if orbit.has_eccentricity else None
+        if rates is None:
+            alpha = model.rate(mid, e)[None, :]
+        else:
+            alpha = np.stack(
+                [
+                    SpinAxisModel(model.body, a, model.beta, model.eccentricity, w, m, model.ellipticity_drift)
+                    .rate(mid, e)
+                    for a, w, m in rates
+                ]
+            )
+        out = np.empty((len(s0), len(starts), 3))
+        rotate_stages(np.ascontiguousarray(s0), normals, np.ascontiguousarray(alpha), dur, len(dur) // len(starts), out)
+        ends = starts + sizes
+        ends[at] = side  # a segment's equal steps end on its knot, exactly
+        chains.append((ends, out, at))
+    (tf, sf, af), (tb, sb, ab) = chains
+    grid = np.concatenate([tb[::-1], [0.0], tf])
+    axes = np.concatenate([sb[:, ::-1], s0[:, None, :], sf], axis=1)
+    nb = len(tb)
+    index = np.concatenate([(nb - 1 - ab)[::-1], np.full(np.count_nonzero(times == 0), nb), nb + 1 + af])
+    return grid, axes, index
+
+
+@dataclass(frozen=True)
+class SpinAxisHistory:
+    """The spin axis of a planet along a moving orbit, at the output times.
+
+    Attributes
+    ----------
+    t : ndarray, shape (N,)
+        Julian years from J2000.
+    axis : ndarray, shape (N, 3)
+        Unit spin axis ``s``, J2000 ecliptic frame.
+    orbit_normal : ndarray, shape (N, 3)
+        Unit orbit normal ``n``.
+    obliquity : ndarray, shape (N,)
+        ``ε`` (radians).
+    precession : ndarray, shape (N,)
+        ``p_A`` (radians, accumulated since J2000).
+    eccentricity : ndarray, shape (N,), or None
+    perihelion : ndarray, shape (N,), or None
+        ``ϖ`` (radians, in [0, 2π)), heliocentric, from the moving equinox.
+    precession_rate : float
+        ``ψ̇`` at J2000 used, ″/yr.
+    model : SpinAxisModel
+    orbit_name : str
+    """
+
+    t: Array
+    axis: Array
+    orbit_normal: Array
+    obliquity: Array
+    precession: Array
+    eccentricity: Array | None
+    perihelion: Array | None
+    precession_rate: float
+    model: SpinAxisModel
+    orbit_name: str = field(default="")
+
+    @property
+    def climatic_precession(self) -> Array | None:
+        """``e sin ϖ``, shape (N,), or None without an eccentricity."""
+        if self.eccentricity is None or self.perihelion is None:
+            return None
+        return self.eccentricity * np.sin(self.perihelion)
+
+    def insolation(self, latitude: float, solar_longitude: float, solar_constant: float = 1361.0) -> Array:
+        """Daily-mean insolation (W/m²) at ``latitude`` and true solar longitude (radians), shape (N,).
+
+        See :func:`andoyer.spin_axis.daily_insolation` (needs the eccentricity).
+
+        Parameters
+        ----------
+        latitude, solar_longitude : float
+            Radians (``solar_longitude = π/2``: the northern summer solstice).
+        solar_constant : float
+            W/m² at 1 au (1361, Kopp & Lean 2011).
+
+        Returns
+        -------
+        numpy.ndarray, shape (N,)
+        """
+        if self.eccentricity is None or self.perihelion is None:
+            msg = f"expected an orbit source with the eccentricity for insolation, got {self.orbit_name}"
+            raise ValueError(msg)
+        return daily_insolation(
+            latitude, solar_longitude, self.obliquity, self.eccentricity, self.perihelion, solar_constant
+        )
+
+
+def describe_orbit(orbit: OrbitHistory, t: Array, s: Array) -> tuple[Array, Array, Array | None, Array | None]:
+    """Orbit normal, obliquity, and (where known) eccentricity and ``ϖ`` along ``(t, s)``."""
+    n = orbit.normal(t)
+    obliquity = np.arctan2(np.linalg.norm(np.cross(s, n), axis=-1), np.sum(s * n, axis=-1))
+    if not orbit.has_eccentricity:
+        return n, obliquity, None, None
+    ev = orbit.eccentricity_vector(t)
+    e = np.linalg.norm(ev, axis=-1)
+    g = equinox(s, n)
+    perihelion = np.mod(np.arctan2(np.sum(ev * np.cross(n, g), -1), np.sum(ev * g, -1)), 2 * np.pi)
+    return n, obliquity, e, perihelion
+
+
+def history(
+    orbit: OrbitHistory,
+    model: SpinAxisModel,
+    times: Array,
+    s0: Array,
+    step: float = DEFAULT_STEP,
+    order: int = 8,
+) -> SpinAxisHistory:
+    """Integrate and describe (the work of :func:`andoyer.spin_axis.spin_axis_history`)."""
+    s0 = as_vectors(s0, "initial axis")
+    s0 = s0 / np.linalg.norm(s0)
+    grid, axes, index = integrate_axis(orbit, model, times, s0[None, :], step, order)
+    axes = axes[0]
+    n_grid = orbit.normal(grid)
+    n0 = orbit.normal(0.0)
+    p = np.unwrap(general_precession(axes, n_grid, s0, n0))
+    p = p - p[np.searchsorted(grid, 0.0)]
+    s = axes[index]
+    n, obliquity, e, perihelion = describe_orbit(orbit, times, s)
+    e0 = np.linalg.norm(orbit.eccentricity_vector(0.0)) if orbit.has_eccentricity else None
+    eps0 = float(np.arctan2(np.linalg.norm(np.cross(s0, n0)), s0 @ n0))
+    return SpinAxisHistory(
+        times, s, n, obliquity, p[index], e, perihelion, model.precession_rate(eps0, e0), model, orbit.name
+    )
