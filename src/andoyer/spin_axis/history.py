@@ -39,6 +39,7 @@ __all__ = [
     "equinox",
     "general_precession",
     "integrate_axis",
+    "integrate_axis_dop853",
     "mean_pole_j2000",
     "output_times",
 ]
@@ -343,3 +344,51 @@ def history(
     return SpinAxisHistory(
         times, s, n, obliquity, p[index], e, perihelion, model.precession_rate(eps0, e0), model, orbit.name
     )
+
+
+def integrate_axis_dop853(
+    orbit: OrbitHistory, model: SpinAxisModel, times: Array, s0: Array, rtol: float = 1e-13
+) -> Array:
+    """The reference: scipy's DOP853 on ``ṡ = α (s·n)(s×n)`` from ``s0`` at J2000, shape (N, 3).
+
+    The orbit is evaluated at every right-hand-side call (scalar time). For comparisons and
+    benchmarks; :func:`integrate_axis` is the production path.
+
+    Parameters
+    ----------
+    orbit : OrbitHistory
+    model : SpinAxisModel
+    times : ndarray, shape (N,)
+        Increasing output times (years from J2000).
+    s0 : ndarray, shape (3,)
+    rtol : float
+        DOP853's relative tolerance (``atol = rtol``: ``|s| = 1``).
+
+    Returns
+    -------
+    numpy.ndarray, shape (N, 3)
+    """
+    from scipy.integrate import solve_ivp
+
+    def rhs(t: float, s: Array) -> Array:
+        n = orbit.normal(t)
+        e = np.linalg.norm(orbit.eccentricity_vector(t)) if orbit.has_eccentricity else None
+        return model.rate(t, e) * (s @ n) * np.cross(s, n)
+
+    out = np.empty((len(times), 3))
+    for side in (times >= 0, times < 0):
+        targets = times[side]
+        if targets.size == 0:
+            continue
+        order = np.argsort(np.abs(targets))
+        end = float(targets[order[-1]])
+        if end == 0.0:
+            out[side] = s0
+            continue
+        sol = solve_ivp(
+            rhs, (0.0, end), s0, method="DOP853", t_eval=targets[order], rtol=rtol, atol=rtol
+        )
+        values = np.empty((targets.size, 3))
+        values[order] = sol.y.T
+        out[side] = values
+    return out
