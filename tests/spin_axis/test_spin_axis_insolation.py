@@ -35,7 +35,7 @@ def _quadrature(phi, lam, eps, e, varpi, s0=1361.0):
     ],
 )
 def test_daily_insolation_matches_hour_angle_quadrature(lat, lam, eps, e, varpi):
-    args = np.radians([lat, lam, eps]).tolist() + [e, np.radians(varpi)]
+    args = [*np.radians([lat, lam, eps]).tolist(), e, np.radians(varpi)]
     got = float(daily_insolation(*args))
     assert got == pytest.approx(_quadrature(*args), rel=1e-10, abs=1e-9)
 

@@ -9,7 +9,8 @@ drawing.  The contours are exact (closed form), not contoured on a grid.
 * :func:`momentum_sphere` — energy contours (polhodes) on ``|m| = G`` (Gurfil Fig. 1);
 * :func:`lara_portrait` — free body vs. the main problem of SAM rotation (Lara Fig. 1);
 * :func:`polhode`, :func:`herpolhode`, :func:`poinsot` — Poinsot's construction for a state;
-* :func:`precession` — precession, obliquity and nutation series of a propagation.
+* :func:`precession` — precession, obliquity and nutation series of a propagation;
+* :func:`obliquity_history` — obliquity and climatic precession of spin-axis histories.
 
 Examples
 --------
@@ -33,6 +34,7 @@ from andoyer.plot.poinsot import (
 )
 from andoyer.plot.precession import PrecessionSeries, precession, precession_data
 from andoyer.plot.sphere import MomentumSphere, momentum_sphere, momentum_sphere_data
+from andoyer.plot.spin_axis import obliquity_history
 
 __all__ = [
     "LARA_LEVELS",
@@ -50,6 +52,7 @@ __all__ = [
     "lara_portrait_data",
     "momentum_sphere",
     "momentum_sphere_data",
+    "obliquity_history",
     "phase_portrait",
     "phase_portrait_data",
     "poinsot",

@@ -41,7 +41,7 @@ from andoyer.spin_axis.history import (
 )
 from andoyer.spin_axis.insolation import daily_insolation
 from andoyer.spin_axis.model import (
-    ARCSEC,
+    ARCSEC,  # noqa: F401 - the doctests use it
     DEFAULT_PRECESSION_RATE,
     EARTH_DYNAMICAL_ELLIPTICITY,
     SpinAxisModel,
@@ -182,7 +182,9 @@ def spin_axis_history(
                 model.ellipticity_drift,
             )  # fmt: skip
     else:
-        rate = DEFAULT_PRECESSION_RATE.get(str(body).strip().lower()) if precession_rate is None else precession_rate
+        rate = precession_rate
+        if rate is None:
+            rate = DEFAULT_PRECESSION_RATE.get(str(body).strip().lower())
         n0 = orbit.normal(0.0)
         eps0 = float(np.arctan2(np.linalg.norm(np.cross(s0, n0)), s0 @ n0))
         model = SpinAxisModel.from_precession_rate(

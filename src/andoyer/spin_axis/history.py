@@ -170,7 +170,8 @@ def _segments(knots: Array, step: float) -> tuple[Array, Array, Array]:
     counts = np.maximum(np.ceil(np.abs(gaps) / step - 1e-12).astype(np.int64), 1)
     sizes = np.repeat(gaps / counts, counts)
     ends = np.cumsum(counts)
-    starts = np.repeat(knots[:-1], counts) + (np.arange(counts.sum()) - np.repeat(ends - counts, counts)) * sizes
+    within = np.arange(counts.sum()) - np.repeat(ends - counts, counts)
+    starts = np.repeat(knots[:-1], counts) + within * sizes
     return starts, sizes, ends - 1
 
 
@@ -223,15 +224,10 @@ def integrate_axis(
         if rates is None:
             alpha = model.rate(mid, e)[None, :]
         else:
-            alpha = np.stack(
-                [
-                    SpinAxisModel(model.body, a, model.beta, model.eccentricity, w, m, model.ellipticity_drift)
-                    .rate(mid, e)
-                    for a, w, m in rates
-                ]
-            )
+            alpha = np.stack([model.with_parameters(a, w, m).rate(mid, e) for a, w, m in rates])
         out = np.empty((len(s0), len(starts), 3))
-        rotate_stages(np.ascontiguousarray(s0), normals, np.ascontiguousarray(alpha), dur, len(dur) // len(starts), out)
+        stages = len(dur) // len(starts)
+        rotate_stages(np.ascontiguousarray(s0), normals, np.ascontiguousarray(alpha), dur, stages, out)
         ends = starts + sizes
         ends[at] = side  # a segment's equal steps end on its knot, exactly
         chains.append((ends, out, at))
@@ -310,7 +306,9 @@ class SpinAxisHistory:
         )
 
 
-def describe_orbit(orbit: OrbitHistory, t: Array, s: Array) -> tuple[Array, Array, Array | None, Array | None]:
+def describe_orbit(
+    orbit: OrbitHistory, t: Array, s: Array
+) -> tuple[Array, Array, Array | None, Array | None]:
     """Orbit normal, obliquity, and (where known) eccentricity and ``ϖ`` along ``(t, s)``."""
     n = orbit.normal(t)
     obliquity = np.arctan2(np.linalg.norm(np.cross(s, n), axis=-1), np.sum(s * n, axis=-1))

@@ -63,8 +63,8 @@ def daily_insolation(
     >>> round(float(q), 1)
     477.9
     """
-    phi, lam, eps, e, varpi = (np.asarray(v, dtype=np.float64) for v in (latitude, solar_longitude,
-                                                                           obliquity, eccentricity, perihelion))
+    values = (latitude, solar_longitude, obliquity, eccentricity, perihelion)
+    phi, lam, eps, e, varpi = (np.asarray(v, dtype=np.float64) for v in values)
     if np.any(np.abs(phi) > np.pi / 2 + 1e-12) or np.any((e < 0) | (e >= 1)):
         msg = "expected latitudes within ±π/2 and eccentricities in [0, 1), got values outside"
         raise ValueError(msg)

@@ -7,7 +7,8 @@ gravity-gradient disturbance of a perturber ``p`` (gravitational parameter ``μ_
 and ``dM/dt = 2κ_p (M·k_p) k_p×M / G²``. For a planet spinning about its figure axis
 (``J = 0``, ``M = G s``, ``G = C ω``) this is, for the unit spin axis ``s``,
 
-.. math:: \dot{\mathbf s} = \alpha_p\,(1-e_p^2)^{-3/2}\,(\mathbf s\cdot\mathbf k_p)\,(\mathbf s\times\mathbf k_p),
+.. math:: \dot{\mathbf s} = \alpha_p\,(1-e_p^2)^{-3/2}\,(\mathbf s\cdot\mathbf k_p)
+   \,(\mathbf s\times\mathbf k_p),
    \qquad \alpha_p = \frac{3}{2}\frac{\mu_p}{a_p^3\,\omega}\,H, \qquad H = \frac{C - (A+B)/2}{C},
 
 ``H`` the dynamical ellipticity. For the Sun ``k_p`` is the planet's own orbit normal
@@ -242,9 +243,25 @@ class SpinAxisModel:
             raise ValueError(msg)
         _, e0, beta, _, _ = _solar_terms(key)
         e = e0 if eccentricity is None else float(eccentricity)
-        alpha = rate * ARCSEC / (np.cos(obliquity) * ((1 - e) * (1 + e)) ** -1.5 + np.cos(obliquity) * beta)
+        alpha = rate * ARCSEC / (np.cos(obliquity) * (((1 - e) * (1 + e)) ** -1.5 + beta))
         spin, moon = cls._tides(key, tidal_dissipation)
         return cls(key, float(alpha), float(beta), e, spin, moon, float(ellipticity_drift))
+
+    def with_parameters(self, alpha_sun: float, tide_spin: float, tide_moon: float) -> SpinAxisModel:
+        """A copy with other ``alpha_sun``, ``tide_spin``, ``tide_moon`` (ensembles).
+
+        Parameters
+        ----------
+        alpha_sun, tide_spin, tide_moon : float
+
+        Returns
+        -------
+        SpinAxisModel
+        """
+        return SpinAxisModel(
+            self.body, float(alpha_sun), self.beta, self.eccentricity, float(tide_spin), float(tide_moon),
+            self.ellipticity_drift,
+        )  # fmt: skip
 
     def rate(self, t: ArrayLike, e: ArrayLike | None = None) -> Array:
         """``α(t, e)``, radians per Julian year.
