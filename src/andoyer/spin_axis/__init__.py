@@ -33,7 +33,9 @@ from andoyer.spin_axis.history import (
     DEFAULT_STEP,
     EPSILON_0,
     SpinAxisHistory,
+    build_model,
     equinox,
+    evolve_axes,
     general_precession,
     history,
     mean_pole_j2000,
@@ -53,9 +55,11 @@ __all__ = [
     "EPSILON_0",
     "SpinAxisHistory",
     "SpinAxisModel",
+    "build_model",
     "daily_insolation",
     "default_axis",
     "equinox",
+    "evolve_axes",
     "general_precession",
     "mean_pole_j2000",
     "output_times",
@@ -168,26 +172,7 @@ def spin_axis_history(
         msg = f"expected a non-zero axis of shape (3,), got shape {s0.shape}"
         raise ValueError(msg)
     s0 = s0 / np.linalg.norm(s0)
-    if precession_rate is not None and dynamical_ellipticity is not None:
-        msg = "expected a precession rate or a dynamical ellipticity, got both"
-        raise ValueError(msg)
-    e0 = float(np.linalg.norm(orbit.eccentricity_vector(0.0))) if orbit.has_eccentricity else None
-    if dynamical_ellipticity is not None:
-        model = SpinAxisModel.from_dynamical_ellipticity(
-            body, dynamical_ellipticity, tidal_dissipation, ellipticity_drift
-        )
-        if e0 is not None:
-            model = SpinAxisModel(
-                model.body, model.alpha_sun, model.beta, e0, model.tide_spin, model.tide_moon,
-                model.ellipticity_drift,
-            )  # fmt: skip
-    else:
-        rate = precession_rate
-        if rate is None:
-            rate = DEFAULT_PRECESSION_RATE.get(str(body).strip().lower())
-        n0 = orbit.normal(0.0)
-        eps0 = float(np.arctan2(np.linalg.norm(np.cross(s0, n0)), s0 @ n0))
-        model = SpinAxisModel.from_precession_rate(
-            body, rate if rate is not None else np.nan, eps0, e0, tidal_dissipation, ellipticity_drift
-        )
+    model = build_model(
+        orbit, body, s0, precession_rate, dynamical_ellipticity, tidal_dissipation, ellipticity_drift
+    )
     return history(orbit, model, t, s0, step, order)

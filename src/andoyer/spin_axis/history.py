@@ -22,7 +22,8 @@ years TT from J2000):
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from collections.abc import Sequence
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -30,13 +31,15 @@ from numpy.typing import ArrayLike, NDArray
 from andoyer._validation import as_vectors
 from andoyer.orbits.base import OrbitHistory
 from andoyer.spin_axis.insolation import daily_insolation
-from andoyer.spin_axis.model import ARCSEC, SpinAxisModel
+from andoyer.spin_axis.model import ARCSEC, DEFAULT_PRECESSION_RATE, SpinAxisModel
 from andoyer.spin_axis.stepping import rotate_stages, stage_times
 
 __all__ = [
     "EPSILON_0",
     "SpinAxisHistory",
+    "build_model",
     "equinox",
+    "evolve_axes",
     "general_precession",
     "integrate_axis",
     "integrate_axis_dop853",
@@ -127,6 +130,7 @@ def equinox(s: ArrayLike, n: ArrayLike) -> Array:
 
 def _frames(s: Array, n: Array) -> Array:
     g = equinox(s, n)
+    n = np.broadcast_to(n, g.shape)
     return np.stack([g, np.cross(n, g), n], axis=-2)
 
 
@@ -177,19 +181,19 @@ def _segments(knots: Array, step: float) -> tuple[Array, Array, Array]:
 
 def integrate_axis(
     orbit: OrbitHistory,
-    model: SpinAxisModel,
+    model: SpinAxisModel | Sequence[SpinAxisModel],
     times: Array,
     s0: Array,
     step: float = DEFAULT_STEP,
     order: int = 8,
-    rates: Array | None = None,
 ) -> tuple[Array, Array, Array]:
     """Integrate ``s`` from ``s0`` at ``t = 0`` to ``times`` (both ways), densely in steps ≤ ``step``.
 
     Parameters
     ----------
     orbit : OrbitHistory
-    model : SpinAxisModel
+    model : SpinAxisModel or sequence of M of them
+        One model for every run, or one per run.
     times : ndarray, shape (N,)
         Increasing output times (years from J2000).
     s0 : ndarray, shape (M, 3)
@@ -197,9 +201,6 @@ def integrate_axis(
     step : float
         Largest step, years.
     order : {2, 4, 6, 8}
-    rates : ndarray, shape (M, 3), optional
-        Per-run model parameters ``(alpha_sun, tide_spin, tide_moon)`` overriding the
-        model's (ensembles).
 
     Returns
     -------
@@ -221,10 +222,10 @@ def integrate_axis(
         mid, dur = stage_times(starts, sizes, order)
         normals = np.ascontiguousarray(orbit.normal(mid))
         e = np.linalg.norm(orbit.eccentricity_vector(mid), axis=-1) if orbit.has_eccentricity else None
-        if rates is None:
-            alpha = model.rate(mid, e)[None, :]
+        if isinstance(model, SpinAxisModel):
+            alpha = np.broadcast_to(model.rate(mid, e), (len(s0), mid.size))
         else:
-            alpha = np.stack([model.with_parameters(a, w, m).rate(mid, e) for a, w, m in rates])
+            alpha = np.stack([m.rate(mid, e) for m in model])
         out = np.empty((len(s0), len(starts), 3))
         stages = len(dur) // len(starts)
         rotate_stages(np.ascontiguousarray(s0), normals, np.ascontiguousarray(alpha), dur, stages, out)
@@ -332,19 +333,93 @@ def history(
     """Integrate and describe (the work of :func:`andoyer.spin_axis.spin_axis_history`)."""
     s0 = as_vectors(s0, "initial axis")
     s0 = s0 / np.linalg.norm(s0)
-    grid, axes, index = integrate_axis(orbit, model, times, s0[None, :], step, order)
-    axes = axes[0]
-    n_grid = orbit.normal(grid)
+    axes, p = evolve_axes(orbit, model, times, s0, step, order)
+    s = axes[0]
     n0 = orbit.normal(0.0)
-    p = np.unwrap(general_precession(axes, n_grid, s0, n0))
-    p = p - p[np.searchsorted(grid, 0.0)]
-    s = axes[index]
     n, obliquity, e, perihelion = describe_orbit(orbit, times, s)
     e0 = np.linalg.norm(orbit.eccentricity_vector(0.0)) if orbit.has_eccentricity else None
     eps0 = float(np.arctan2(np.linalg.norm(np.cross(s0, n0)), s0 @ n0))
     return SpinAxisHistory(
-        times, s, n, obliquity, p[index], e, perihelion, model.precession_rate(eps0, e0), model, orbit.name
+        times, s, n, obliquity, p[0], e, perihelion, model.precession_rate(eps0, e0), model, orbit.name
     )
+
+
+def evolve_axes(
+    orbit: OrbitHistory,
+    model: SpinAxisModel | Sequence[SpinAxisModel],
+    times: Array,
+    s0: Array,
+    step: float = DEFAULT_STEP,
+    order: int = 8,
+) -> tuple[Array, Array]:
+    """Axes and general precession ``p_A`` of ``M`` runs from one J2000 axis at ``times``.
+
+    Parameters
+    ----------
+    orbit : OrbitHistory
+    model : SpinAxisModel or sequence of M of them
+    times : ndarray, shape (N,)
+    s0 : ndarray, shape (3,)
+        Unit axis at J2000.
+    step : float
+    order : {2, 4, 6, 8}
+
+    Returns
+    -------
+    axes : ndarray, shape (M, N, 3)
+    precession : ndarray, shape (M, N)
+        ``p_A`` (radians), unwrapped between integration steps, zero at J2000.
+    """
+    runs = 1 if isinstance(model, SpinAxisModel) else len(model)
+    grid, axes, index = integrate_axis(orbit, model, times, np.tile(s0, (runs, 1)), step, order)
+    p = np.unwrap(general_precession(axes, orbit.normal(grid), s0, orbit.normal(0.0)), axis=-1)
+    p = p - p[:, np.searchsorted(grid, 0.0)][:, None]
+    return axes[:, index], p[:, index]
+
+
+def build_model(
+    orbit: OrbitHistory,
+    body: str,
+    s0: Array,
+    precession_rate: float | None = None,
+    dynamical_ellipticity: float | None = None,
+    tidal_dissipation: float = 0.0,
+    ellipticity_drift: float = 0.0,
+) -> SpinAxisModel:
+    """The model of ``body`` on ``orbit`` from a precession rate (default) or an ellipticity.
+
+    The precession rate (″/yr, ``ψ̇`` at J2000; default ``DEFAULT_PRECESSION_RATE[body]``) is
+    matched with the obliquity ``∠(s0, n(0))`` and the orbit's ``e(0)`` where it knows it.
+
+    Parameters
+    ----------
+    orbit : OrbitHistory
+    body : str
+    s0 : ndarray, shape (3,)
+        Unit axis at J2000.
+    precession_rate, dynamical_ellipticity : float, optional
+        At most one.
+    tidal_dissipation, ellipticity_drift : float
+
+    Returns
+    -------
+    SpinAxisModel
+    """
+    if precession_rate is not None and dynamical_ellipticity is not None:
+        msg = "expected a precession rate or a dynamical ellipticity, got both"
+        raise ValueError(msg)
+    e0 = float(np.linalg.norm(orbit.eccentricity_vector(0.0))) if orbit.has_eccentricity else None
+    if dynamical_ellipticity is not None:
+        model = SpinAxisModel.from_dynamical_ellipticity(
+            body, dynamical_ellipticity, tidal_dissipation, ellipticity_drift
+        )
+        return model if e0 is None else replace(model, eccentricity=e0)
+    rate = precession_rate
+    if rate is None:
+        rate = DEFAULT_PRECESSION_RATE.get(str(body).strip().lower(), np.nan)
+    n0 = orbit.normal(0.0)
+    eps0 = float(np.arctan2(np.linalg.norm(np.cross(s0, n0)), s0 @ n0))
+    return SpinAxisModel.from_precession_rate(body, rate, eps0, e0, tidal_dissipation, ellipticity_drift)
 
 
 def integrate_axis_dop853(

@@ -247,22 +247,6 @@ class SpinAxisModel:
         spin, moon = cls._tides(key, tidal_dissipation)
         return cls(key, float(alpha), float(beta), e, spin, moon, float(ellipticity_drift))
 
-    def with_parameters(self, alpha_sun: float, tide_spin: float, tide_moon: float) -> SpinAxisModel:
-        """A copy with other ``alpha_sun``, ``tide_spin``, ``tide_moon`` (ensembles).
-
-        Parameters
-        ----------
-        alpha_sun, tide_spin, tide_moon : float
-
-        Returns
-        -------
-        SpinAxisModel
-        """
-        return SpinAxisModel(
-            self.body, float(alpha_sun), self.beta, self.eccentricity, float(tide_spin), float(tide_moon),
-            self.ellipticity_drift,
-        )  # fmt: skip
-
     def rate(self, t: ArrayLike, e: ArrayLike | None = None) -> Array:
         """``α(t, e)``, radians per Julian year.
 
