@@ -140,8 +140,10 @@ def general_precession(s: ArrayLike, n: ArrayLike, s0: ArrayLike, n0: ArrayLike)
     Parameters
     ----------
     s, n : array_like, shape (..., 3)
-    s0, n0 : array_like, shape (3,)
-        Axis and orbit normal at J2000.
+    s0 : array_like, shape (3,) or (M, 3)
+        Axis at J2000 (one per run when ``s`` has shape (M, K, 3)).
+    n0 : array_like, shape (3,)
+        Orbit normal at J2000.
 
     Returns
     -------
@@ -162,9 +164,10 @@ def general_precession(s: ArrayLike, n: ArrayLike, s0: ArrayLike, n0: ArrayLike)
     >>> round(float(p / ARCSEC), 3)
     5029.9
     """
-    r = _frames(np.asarray(s, dtype=float), np.asarray(n, dtype=float)) @ _frames(
-        np.asarray(s0, dtype=float), np.asarray(n0, dtype=float)
-    ).T
+    start = _frames(np.asarray(s0, dtype=float), np.asarray(n0, dtype=float))
+    if start.ndim == 3:  # one J2000 frame per run (M, 3, 3), against dates (M, K, 3, 3)
+        start = start[:, None]
+    r = _frames(np.asarray(s, dtype=float), np.asarray(n, dtype=float)) @ np.swapaxes(start, -1, -2)
     return -np.arctan2(r[..., 0, 1] - r[..., 1, 0], r[..., 0, 0] + r[..., 1, 1])
 
 
@@ -359,8 +362,8 @@ def evolve_axes(
     orbit : OrbitHistory
     model : SpinAxisModel or sequence of M of them
     times : ndarray, shape (N,)
-    s0 : ndarray, shape (3,)
-        Unit axis at J2000.
+    s0 : ndarray, shape (3,) or (M, 3)
+        Unit axis at J2000 (shared, or one per run).
     step : float
     order : {2, 4, 6, 8}
 
@@ -371,7 +374,9 @@ def evolve_axes(
         ``p_A`` (radians), unwrapped between integration steps, zero at J2000.
     """
     runs = 1 if isinstance(model, SpinAxisModel) else len(model)
-    grid, axes, index = integrate_axis(orbit, model, times, np.tile(s0, (runs, 1)), step, order)
+    s0 = np.broadcast_to(s0, (runs, 3)) if np.ndim(s0) == 1 else np.asarray(s0)
+    s0 = np.ascontiguousarray(s0, dtype=float)
+    grid, axes, index = integrate_axis(orbit, model, times, s0, step, order)
     p = np.unwrap(general_precession(axes, orbit.normal(grid), s0, orbit.normal(0.0)), axis=-1)
     p = p - p[:, np.searchsorted(grid, 0.0)][:, None]
     return axes[:, index], p[:, index]
