@@ -41,6 +41,20 @@ def test_daily_insolation_matches_hour_angle_quadrature(lat, lam, eps, e, varpi)
 
 
 def test_daily_insolation_65n_june_solstice_today():
-    """About 478 W/m² with S0 = 1361 (Berger & Loutre 1991 list 65° N July insolation near 480 W/m²)."""
+    """About 478 W/m² with S0 = 1361: the commonly quoted present-day value is near 480 W/m²."""
     q = float(daily_insolation(np.radians(65), np.pi / 2, np.radians(23.439), 0.0167, np.radians(102.94)))
     assert 470.0 <= q <= 490.0
+
+
+def test_history_insolation_uses_its_obliquity_and_perihelion():
+    from spin_cases import PrecessingOrbit
+
+    from andoyer.spin_axis import spin_axis_history
+
+    orbit = PrecessingOrbit()
+    h = spin_axis_history(orbit, "mars", [-50000.0, 0.0, 30000.0], precession_rate=7.597)
+    got = h.insolation(np.radians(65.0), np.pi / 2)
+    expected = [_quadrature(np.radians(65.0), np.pi / 2, eps, e, w) for eps, e, w in
+                zip(h.obliquity, h.eccentricity, h.perihelion, strict=True)]
+    assert np.allclose(got, expected, rtol=1e-10)
+    assert np.allclose(h.eccentricity, orbit.e, rtol=1e-14)

@@ -206,3 +206,11 @@ def test_tidal_dissipation_follows_zeebe_lourens_convention():
     expected = (1 + W * t) * (s + beta * (1 + 2 * N * t)) / (s + beta)
     assert abs(ratio - expected) <= 1e-14
     assert tidal.rate(0.0) == base.rate(0.0)
+
+
+def test_ellipticity_drift_scales_the_whole_torque():
+    base = SpinAxisModel.from_dynamical_ellipticity("earth", 0.00327)
+    drift = SpinAxisModel.from_dynamical_ellipticity("earth", 0.00327, ellipticity_drift=2e-8)
+    t = np.array([-1e6, 0.0, 5e5])
+    assert np.allclose(drift.rate(t, 0.02) / base.rate(t, 0.02), 1 + 2e-8 * t, rtol=1e-14, atol=0)
+    assert drift.dynamical_ellipticity() == pytest.approx(0.00327, rel=1e-14)
