@@ -79,7 +79,7 @@ def test_history_matches_gurfil_precessing_frame_andoyer_form(inclination):
     and ḣ = ∂K/∂H, Ḣ = −∂K/∂h (eq. 127 with the convective terms of eq. 126).
     """
     orbit = PrecessingOrbit(inclination=inclination, node_rate=-2 * np.pi / 3000.0, e=0.0)
-    model = SpinAxisModel("mars", 2 * np.pi / 170000.0 * 3, 0.0, 0.0)  # ~3 precessions per orbit-node turn
+    model = SpinAxisModel("mars", 2 * np.pi / 57000.0, 0.0, 0.0)  # α: one turn in 57 kyr at s·n = 1
     alpha = float(model.rate(0.0))
     mu = orbit.g * np.array([0.0, np.sin(inclination), np.cos(inclination)])  # z in the frame (u, n×u, n)
     G = 1.0
@@ -154,14 +154,19 @@ def test_iau2006_rates_at_j2000_vondrak():
     assert np.abs(h.obliquity / ARCSEC - eps).max() <= 0.1
 
 
-def test_obliquity_follows_vcw2011_equator_over_ten_kyr():
-    """Against the long-term equator of Vondrák et al. 2011 (erfa.ltpequ): measured 0.012° at ±10 kyr."""
-    t = output_times(-10000.0, 10000.0, 1000.0)
+@pytest.mark.parametrize(("span", "obliquity_tol", "pole_tol"), [(1e4, 0.02, 0.03), (2e5, 0.4, 4.0)])
+def test_obliquity_follows_vcw2011_equator(span, obliquity_tol, pole_tol):
+    """Against the long-term equator of Vondrák et al. 2011 (erfa.ltpequ), degrees.
+
+    Measured: obliquity 0.012° and pole 0.023° over ±10 kyr; 0.37° and 3.6° (mostly the phase of
+    the precession) over ±200 kyr, where VCW's fits themselves reach a few tenths of a degree.
+    """
+    t = output_times(-span, span, span / 20)
     h = spin_axis_history(VondrakEcliptic(), "earth", t, precession_rate=50.3848)
     pole = _ecliptic(erfa.ltpequ(2000.0 + t))
     eps = angle(pole, h.orbit_normal)
-    assert np.degrees(np.abs(h.obliquity - eps)).max() <= 0.02
-    assert np.degrees(angle(h.axis, pole)).max() <= 0.03
+    assert np.degrees(np.abs(h.obliquity - eps)).max() <= obliquity_tol
+    assert np.degrees(angle(h.axis, pole)).max() <= pole_tol
 
 
 def test_climatic_precession_at_j2000_convention():
@@ -191,6 +196,12 @@ def test_model_rejects_bad_parameters_with_expected_messages():
         spin_axis_history(FixedOrbit(), "earth", [0.0], precession_rate=50.0, dynamical_ellipticity=0.003)
     with pytest.raises(ValueError, match="expected times within the vondrak orbit's span"):
         spin_axis_history(VondrakEcliptic(), "earth", [0.0, 3e5])
+
+    class Past(FixedOrbit):
+        span = (-1e7, -1e6)
+
+    with pytest.raises(ValueError, match="expected an orbit span containing J2000"):
+        spin_axis_history(Past(), "earth", [-2e6])
 
 
 def test_tidal_dissipation_follows_zeebe_lourens_convention():

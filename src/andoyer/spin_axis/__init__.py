@@ -166,7 +166,11 @@ def spin_axis_history(
     if t.ndim != 1 or t.size == 0 or np.any(np.diff(t) <= 0):
         msg = f"expected increasing output times (1-D, non-empty), got shape {t.shape}"
         raise ValueError(msg)
-    check_times(np.concatenate([t, [0.0]]), orbit.span, orbit.name)
+    lo, hi = orbit.span
+    if not lo <= 0.0 <= hi:
+        msg = f"expected an orbit span containing J2000 (the axis starts there), got {lo:g} to {hi:g}"
+        raise ValueError(msg)
+    check_times(t, orbit.span, orbit.name)
     s0 = default_axis(body) if axis is None else as_finite(axis, "axis")
     if s0.shape != (3,) or not np.linalg.norm(s0) > 0:
         msg = f"expected a non-zero axis of shape (3,), got shape {s0.shape}"
