@@ -93,3 +93,17 @@ def test_obliquity_bad_input_in_a_process_has_no_traceback(tmp_path):
     assert result.stderr.count("\n") == 1
     assert "Traceback" not in result.stderr
     assert list(tmp_path.iterdir()) == []
+
+
+def test_spin_axis_figure_script_writes_png(tmp_path, capsys):
+    import importlib.util
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parents[2] / "scripts" / "spin_axis_figure.py"
+    spec = importlib.util.spec_from_file_location("spin_axis_figure_script", path)
+    script = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(script)
+    script.main(["--orbit", "vondrak", "--span", "-3000", "0", "--step", "500", "--out", str(tmp_path)])
+    assert (tmp_path / "spin-axis.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    out = capsys.readouterr().out
+    assert "wrote" in out
