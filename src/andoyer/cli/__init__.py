@@ -43,6 +43,10 @@ COMMANDS: dict[str, tuple[str, str]] = {
         "andoyer.cli.cassini_cmd",
         "Cassini states (equilibria of Colombo's top) of the Moon, Mercury or any body",
     ),
+    "obliquity": (
+        "andoyer.cli.obliquity_cmd",
+        "obliquity, general and climatic precession of the Earth or Mars over 10^3-10^7 years",
+    ),
     "ensemble": (
         "andoyer.cli.ensemble_cmd",
         "propagate a seeded Monte-Carlo ensemble of states on Dask (Zarr or NetCDF, resumable)",

@@ -2,7 +2,8 @@
 
 :func:`run_ensemble` samples initial conditions (and optionally parameters) chunk by
 chunk from seeds derived from ``(seed, chunk index)``, propagates them with the exact
-free flow (:class:`FreePropagator`) or any callable ``(State (n,), times (T,),
+free flow (:class:`FreePropagator`), the secular spin-axis flow along an orbit history
+(:class:`SpinAxisPropagator`, with :class:`SpinParameterSampler`), or any callable ``(State (n,), times (T,),
 **parameters) -> State (n, T)``, and writes an :class:`xarray.Dataset` with dims
 ``sample`` and ``time`` to Zarr (chunk by chunk, with a completion marker per chunk,
 so an interrupted run resumes where it stopped) or to NetCDF (assembled atomically at
@@ -34,6 +35,7 @@ from andoyer.ensemble.sampling import (
     Sampler,
     chunk_rng,
 )
+from andoyer.ensemble.spin_axis import SpinAxisPropagator, SpinParameterSampler
 from andoyer.ensemble.store import completed_chunks
 
 __all__ = [
@@ -46,6 +48,8 @@ __all__ = [
     "MomentumSampler",
     "Propagator",
     "Sampler",
+    "SpinAxisPropagator",
+    "SpinParameterSampler",
     "chunk_rng",
     "completed_chunks",
     "local_client",

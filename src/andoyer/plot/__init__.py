@@ -12,6 +12,7 @@ of Colombo's top, whose separatrix is exact).
 * :func:`polhode`, :func:`herpolhode`, :func:`poinsot` — Poinsot's construction for a state;
 * :func:`precession` — precession, obliquity and nutation series of a propagation;
 * :func:`cassini_portrait`, :func:`cassini_geometry` — Colombo's top and its Cassini states.
+* :func:`obliquity_history` — obliquity and climatic precession of spin-axis histories.
 
 Examples
 --------
@@ -36,6 +37,7 @@ from andoyer.plot.poinsot import (
 )
 from andoyer.plot.precession import PrecessionSeries, precession, precession_data
 from andoyer.plot.sphere import MomentumSphere, momentum_sphere, momentum_sphere_data
+from andoyer.plot.spin_axis import obliquity_history
 
 __all__ = [
     "LARA_LEVELS",
@@ -57,6 +59,7 @@ __all__ = [
     "lara_portrait_data",
     "momentum_sphere",
     "momentum_sphere_data",
+    "obliquity_history",
     "phase_portrait",
     "phase_portrait_data",
     "poinsot",

@@ -1,0 +1,159 @@
+"""``andoyer obliquity``: the spin axis of the Earth or Mars along a moving orbit (andoyer.spin_axis)."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+
+import numpy as np
+
+from andoyer.cli.output import CliError, atomic_output, format_rows
+
+EXAMPLES = """examples:
+  andoyer obliquity earth --span -200000 200000 --step 500 --format json
+  andoyer obliquity earth --precession-rate 50.3848 --span -1000 1000 --step 100 --format table
+  andoyer obliquity mars --orbit nbody --span -1000000 0 --step 1000 --plot mars.png
+T0, T1 and DT are Julian years from J2000 (negative = past); output at T0, T0+DT, ..., T1.
+--precession-rate P is the rate of the luni-solar precession psi_A at J2000 in arcsec per Julian
+year (default: Earth 50.38481507, IAU 2006; Mars 7.597); --dynamical-ellipticity H sets
+(C - (A+B)/2)/C instead. --tidal-dissipation TD scales the modern tidal rates of the Earth-Moon
+system (Zeebe & Lourens 2022; 0 = none). Orbit sources: vondrak (the Earth's ecliptic of
+Vondrak et al. 2011, +-200 kyr, no eccentricity), nbody, secular, or a table file PATH.
+JSON keys: t (years), obliquity (deg), precession (deg, p_A accumulated since J2000), axis (N x 3),
+orbit_normal (N x 3, J2000 ecliptic frame), eccentricity and climatic_precession (e sin varpi,
+varpi heliocentric from the moving equinox; null without eccentricity), precession_rate (arcsec/yr).
+"""
+
+DEFAULT_ORBIT = {"earth": "vondrak", "mars": "nbody"}
+DEFAULT_SPAN = (-200000.0, 0.0)
+DEFAULT_STEP = 1000.0
+
+
+def _finite(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not math.isfinite(value):
+        msg = f"expected a finite number, got {text!r}"
+        raise argparse.ArgumentTypeError(msg)
+    return value
+
+
+def register(commands: argparse._SubParsersAction) -> None:
+    """Add the sub-command to the parser."""
+    parser = commands.add_parser(
+        "obliquity",
+        epilog=EXAMPLES,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    parser.add_argument("body", type=str.lower, choices=tuple(DEFAULT_ORBIT), metavar="BODY")
+    parser.add_argument(
+        "--orbit", metavar="SOURCE", help="vondrak|nbody|secular|PATH (default: earth vondrak, mars nbody)"
+    )
+    parser.add_argument("--span", nargs=2, type=_finite, metavar=("T0", "T1"), default=DEFAULT_SPAN)
+    parser.add_argument("--step", type=_finite, metavar="DT", default=DEFAULT_STEP, help="output step, years")
+    strength = parser.add_mutually_exclusive_group()
+    strength.add_argument(
+        "--precession-rate", type=_finite, metavar="P", help="psi_A rate at J2000, arcsec/yr"
+    )
+    strength.add_argument("--dynamical-ellipticity", type=_finite, metavar="H")
+    parser.add_argument("--tidal-dissipation", type=_finite, metavar="TD", default=0.0)
+    parser.add_argument("--format", choices=("json", "csv", "table"), default="table")
+    parser.add_argument("--output", metavar="PATH", help="write here instead of standard output")
+    parser.add_argument("--plot", metavar="PATH", help="PNG of obliquity and climatic precession")
+    parser.set_defaults(run=run)
+
+
+def orbit_source(name: str, body: str):
+    """The orbit history named on the command line (:func:`andoyer.orbits.orbit_history`).
+
+    Parameters
+    ----------
+    name : str
+        ``vondrak``, ``nbody``, ``secular`` or a table path.
+    body : str
+
+    Returns
+    -------
+    OrbitHistory
+
+    Examples
+    --------
+    >>> orbit_source("vondrak", "earth").name
+    'vondrak'
+    """
+    from andoyer.orbits import orbit_history
+
+    return orbit_history(name, body)
+
+
+def _fields(h) -> dict:
+    cp = h.climatic_precession
+    return {
+        "t": h.t.tolist(),
+        "obliquity": np.degrees(h.obliquity).tolist(),
+        "precession": np.degrees(h.precession).tolist(),
+        "axis": h.axis.tolist(),
+        "orbit_normal": h.orbit_normal.tolist(),
+        "eccentricity": None if h.eccentricity is None else h.eccentricity.tolist(),
+        "climatic_precession": None if cp is None else cp.tolist(),
+        "precession_rate": h.precession_rate,
+    }
+
+
+def _table(h, fmt: str) -> str:
+    header = ["t_yr", "obliquity_deg", "precession_deg", "sx", "sy", "sz", "nx", "ny", "nz"]
+    cp = h.climatic_precession
+    if cp is not None:  # columns only where the orbit source knows the eccentricity
+        header += ["eccentricity", "climatic_precession"]
+    rows = []
+    for k in range(h.t.size):
+        extra = [] if cp is None else [float(h.eccentricity[k]), float(cp[k])]
+        rows.append([float(h.t[k]), float(np.degrees(h.obliquity[k])), float(np.degrees(h.precession[k])),
+                     *map(float, h.axis[k]), *map(float, h.orbit_normal[k]), *extra])
+    return format_rows(header, rows, fmt)
+
+
+def run(args: argparse.Namespace) -> int:
+    """Integrate the axis and write the table (and the plot)."""
+    from andoyer.spin_axis import output_times, spin_axis_history
+
+    t0, t1 = args.span
+    if not args.step > 0:
+        msg = f"expected --step DT > 0 years, got {args.step!r}"
+        raise CliError(msg)
+    if t1 < t0:
+        msg = f"expected --span T0 T1 with T1 >= T0, got {t0!r} {t1!r}"
+        raise CliError(msg)
+    if args.plot is not None and not args.plot.lower().endswith(".png"):
+        msg = f"expected --plot PATH ending in .png, got {args.plot!r}"
+        raise CliError(msg)
+    orbit = orbit_source(args.orbit or DEFAULT_ORBIT[args.body], args.body)
+    times = output_times(t0, t1, args.step)
+    h = spin_axis_history(
+        orbit,
+        args.body,
+        times,
+        precession_rate=args.precession_rate,
+        dynamical_ellipticity=args.dynamical_ellipticity,
+        tidal_dissipation=args.tidal_dissipation,
+    )
+    text = json.dumps(_fields(h)) + "\n" if args.format == "json" else _table(h, args.format)
+    figure = None
+    if args.plot is not None:
+        from andoyer.plot import obliquity_history
+
+        figure = obliquity_history(h)
+    with atomic_output(args.output) as stream:
+        stream.write(text)
+    if figure is not None:
+        with atomic_output(args.plot) as stream:
+            stream.flush()
+            binary = getattr(stream, "buffer", None)
+            if binary is None:  # pragma: no cover - a file stream always has one
+                msg = "expected a binary stream for --plot"
+                raise CliError(msg)
+            figure.savefig(binary, format="png", dpi=120)
+    return 0

@@ -1,0 +1,306 @@
+r"""The averaged torque on a planet's spin axis: strengths, precession rate, tides.
+
+**Derivation.** :class:`~andoyer.integrate.secular.SecularGravityGradient` averages the
+gravity-gradient disturbance of a perturber ``p`` (gravitational parameter ``μ_p``, orbit
+``a_p, e_p``, normal ``k_p``) over the body's rotation and the perturber's mean anomaly:
+``⟨ΔH⟩ = κ_p (m̂·k_p)²`` with ``κ_p = −3μ_p (C − (A+B)/2)(3cos²J − 1)/(8 a_p³(1−e_p²)^{3/2})``
+and ``dM/dt = 2κ_p (M·k_p) k_p×M / G²``. For a planet spinning about its figure axis
+(``J = 0``, ``M = G s``, ``G = C ω``) this is, for the unit spin axis ``s``,
+
+.. math:: \dot{\mathbf s} = \alpha_p\,(1-e_p^2)^{-3/2}\,(\mathbf s\cdot\mathbf k_p)
+   \,(\mathbf s\times\mathbf k_p),
+   \qquad \alpha_p = \frac{3}{2}\frac{\mu_p}{a_p^3\,\omega}\,H, \qquad H = \frac{C - (A+B)/2}{C},
+
+``H`` the dynamical ellipticity. For the Sun ``k_p`` is the planet's own orbit normal
+``n``, and ``e_p`` its eccentricity ``e(t)``. The Moon's orbit is inclined by
+``i_M = 5.145°`` to the ecliptic and its node regresses in 18.6 years; averaging
+``(s·k)(s×k)`` over the node (``k = n cos i_M + u sin i_M``, ``⟨u uᵀ⟩ = (1 − n nᵀ)/2``)
+gives ``(1 − 3/2 sin² i_M)(s·n)(s×n)``. The total is
+
+.. math:: \dot{\mathbf s} = \alpha(t)\,(\mathbf s\cdot\mathbf n)\,(\mathbf s\times\mathbf n), \qquad
+   \alpha(t) = \alpha_\odot\Big[(1-e(t)^2)^{-3/2} + \beta\Big], \qquad
+   \beta = \frac{\mu_M a^3}{\mu_\odot a_M^3}\,\frac{1 - \tfrac32\sin^2 i_M}{(1-e_M^2)^{3/2}},
+
+with ``β ≈ 2.16`` for the Earth (the Moon's share is 68 %) and ``β = 0`` for Mars. With
+``s·n > 0`` the axis turns about ``n`` at the angular velocity ``−α (s·n) n``: westward
+(retrograde), the luni-solar precession.
+
+**The precession rate.** At J2000 the axis turns about the ecliptic of J2000 at
+``ψ̇ = α(0) cos ε₀`` (``ε₀`` the obliquity at J2000): the rate of the IAU 2006 angle ``ψ_A``
+(luni-solar precession of the equator on the *fixed* ecliptic of J2000; 5038.481507″/cy,
+Capitaine, Wallace & Chapront 2003, A&A 412, 567, eq. 37). A user's precession rate ``P`` (″/yr)
+is that ``ψ̇``, from which ``α_⊙ = P / (cos ε₀ [(1−e(0)²)^{-3/2} + β])``. It absorbs
+everything that acts like a constant precession at J2000: the geodetic precession
+(−0.0191″/yr in ``ψ_A``) and the second-order nutation terms are in the IAU value and hence in
+``α``; their (tiny) changes with the obliquity over time are not modelled.
+
+**Tidal dissipation** (Zeebe & Lourens 2022, Paleoceanography and Paleoclimatology 37,
+e2021PA004349, their C code ``snvec``; after Quinn, Tremaine & Duncan 1991, AJ 101, 2287,
+eqs. 3 and 11, and Lambeck 1980): ``T_d`` scales the modern tidal rates linearly, the Moon's
+mean motion by ``ṅ_M/n_M = −4.6×10⁻¹⁸ s⁻¹ · T_d`` and the Earth's spin by
+``ω̇/ω = 51 (n_M/ω) ṅ_M/n_M`` (Lambeck 1980). With a hydrostatic ellipticity ``H ∝ ω²``
+the constant ``α ∝ H/ω ∝ ω``, and the Moon's torque ``∝ a_M^{−3} ∝ n_M²``; to first order in
+``t`` (years from J2000)
+
+.. math:: \alpha(t) = \alpha_\odot\,(1 + W T_d t)\,(1 + \dot H_r t)\,
+   \Big[(1-e^2)^{-3/2} + \beta\,(1 + 2 N T_d t)\Big],
+
+``N = ṅ_M/n_M`` and ``W = ω̇/ω`` per year at ``T_d = 1``, and ``Ḣ_r`` an optional linear
+drift of ``H`` (fraction per year). ``T_d = 0`` (the default) is no tidal change.
+
+Sources of the constants: :mod:`andoyer.perturbations.solar_system` (the Sun's and the
+Moon's mean orbits), :mod:`andoyer.bodies` (rotation periods); the Earth's ``H`` =
+0.0032737949 (IERS Conventions 2010, Table 1.1).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from andoyer import bodies
+from andoyer.perturbations.solar_system import JULIAN_YEAR, mean_perturbers
+
+__all__ = [
+    "ARCSEC",
+    "DEFAULT_PRECESSION_RATE",
+    "EARTH_DYNAMICAL_ELLIPTICITY",
+    "MOON_MEAN_MOTION_RATE",
+    "SpinAxisModel",
+]
+
+Array = NDArray[np.float64]
+
+#: One arcsecond in radians.
+ARCSEC = np.pi / 648000.0
+#: Default ``ψ̇`` at J2000, ″/yr: the Earth's IAU 2006 ``dψ_A/dt`` (5038.481507″/cy, Capitaine
+#: et al. 2003, eq. 37); Mars 7.597″/yr (radio tracking of landers and orbiters gives
+#: 7.59–7.61″/yr: Konopliv et al. 2016, Icarus 274, 253; Le Maistre et al. 2023, Nature 619, 733).
+DEFAULT_PRECESSION_RATE = {"earth": 50.38481507, "mars": 7.597}
+#: The Earth's dynamical ellipticity ``H = (C − A)/C`` (IERS Conventions 2010, Table 1.1).
+EARTH_DYNAMICAL_ELLIPTICITY = 0.0032737949
+#: ``ṅ_M/n_M`` of the Moon at ``T_d = 1``, per second (Quinn et al. 1991, eq. 3; Zeebe & Lourens 2022).
+MOON_MEAN_MOTION_RATE = -4.6e-18
+#: ``ω̇/ω = 51 (n_M/ω) ṅ_M/n_M`` (Lambeck 1980, as in Zeebe & Lourens 2022).
+_LAMBECK = 51.0
+
+
+def _solar_terms(body: str) -> tuple[float, float, float, float, float]:
+    """``(n_⊙² [rad²/s²], e(J2000), β, ω [rad/s], n_M/ω)`` of the named planet."""
+    perturbers = mean_perturbers(body)
+    sun = perturbers[0]
+    n2 = sun.gm / sun.orbit.semi_major_axis**3
+    omega = 2 * np.pi / bodies.info(body).rotation_period
+    beta = 0.0
+    ratio = 0.0
+    for moon in perturbers[1:]:
+        o = moon.orbit
+        beta += (
+            moon.gm
+            / o.semi_major_axis**3
+            / n2
+            * (1 - 1.5 * np.sin(o.inclination) ** 2)
+            / ((1 - o.eccentricity) * (1 + o.eccentricity)) ** 1.5
+        )
+        ratio = o.mean_motion / omega
+    return n2, sun.orbit.eccentricity, beta, omega, ratio
+
+
+@dataclass(frozen=True)
+class SpinAxisModel:
+    r"""Strength of the averaged solar (and lunar) torque on a spin axis, and its slow changes.
+
+    ``α(t, e) = alpha_sun (1 + tide_spin·t)(1 + ellipticity_drift·t)
+    [(1−e²)^{−3/2} + beta (1 + tide_moon·t)]`` in radians per Julian year, ``t`` in Julian
+    years from J2000 (see the module docstring).
+
+    Parameters
+    ----------
+    body : str
+    alpha_sun : float
+        ``α_⊙``, rad/yr.
+    beta : float
+        The Moon's share relative to a circular-orbit Sun (0 without a moon).
+    eccentricity : float
+        The orbit's eccentricity used when the orbit source does not know it.
+    tide_spin, tide_moon : float
+        ``W T_d`` and ``2 N T_d``, per year.
+    ellipticity_drift : float
+        ``Ḣ/H``, per year.
+
+    Examples
+    --------
+    >>> model = SpinAxisModel.from_precession_rate("earth", 50.38481507, np.radians(84381.406 / 3600))
+    >>> round(model.precession_rate(np.radians(84381.406 / 3600)), 8)
+    50.38481507
+    >>> round(model.beta, 3)
+    2.161
+    """
+
+    body: str
+    alpha_sun: float
+    beta: float
+    eccentricity: float
+    tide_spin: float = 0.0
+    tide_moon: float = 0.0
+    ellipticity_drift: float = 0.0
+
+    @staticmethod
+    def _tides(body: str, tidal_dissipation: float) -> tuple[float, float]:
+        if not np.isfinite(tidal_dissipation):
+            msg = f"expected a finite tidal dissipation T_d, got {tidal_dissipation!r}"
+            raise ValueError(msg)
+        _, _, beta, _, ratio = _solar_terms(body)
+        if tidal_dissipation != 0 and beta == 0:
+            msg = f"expected tidal dissipation 0 for a planet without a moon, got {tidal_dissipation!r}"
+            raise ValueError(msg)
+        nu = MOON_MEAN_MOTION_RATE * JULIAN_YEAR * tidal_dissipation
+        return _LAMBECK * ratio * nu, 2 * nu
+
+    @classmethod
+    def from_dynamical_ellipticity(
+        cls,
+        body: str,
+        ellipticity: float,
+        tidal_dissipation: float = 0.0,
+        ellipticity_drift: float = 0.0,
+    ) -> SpinAxisModel:
+        """The model of ``body`` from its dynamical ellipticity ``H = (C − (A+B)/2)/C``.
+
+        ``α_⊙ = (3/2) n_⊙² H / ω`` with the project's mean orbits and rotation periods.
+
+        Parameters
+        ----------
+        body : {"earth", "mars"}
+        ellipticity : float
+            ``H``, positive.
+        tidal_dissipation : float
+            ``T_d`` (Zeebe & Lourens 2022), 1 = modern rates.
+        ellipticity_drift : float
+            ``Ḣ/H`` per Julian year.
+
+        Returns
+        -------
+        SpinAxisModel
+
+        Examples
+        --------
+        >>> model = SpinAxisModel.from_dynamical_ellipticity("earth", EARTH_DYNAMICAL_ELLIPTICITY)
+        >>> round(model.precession_rate(np.radians(84381.406 / 3600)), 2)  # ″/yr; IAU 2006: 50.38
+        50.4
+        """
+        key = _body(body)
+        if not (np.isfinite(ellipticity) and ellipticity > 0):
+            msg = f"expected a positive dynamical ellipticity, got {ellipticity!r}"
+            raise ValueError(msg)
+        n2, e0, beta, omega, _ = _solar_terms(key)
+        alpha = 1.5 * n2 * ellipticity / omega * JULIAN_YEAR
+        spin, moon = cls._tides(key, tidal_dissipation)
+        return cls(key, float(alpha), float(beta), float(e0), spin, moon, float(ellipticity_drift))
+
+    @classmethod
+    def from_precession_rate(
+        cls,
+        body: str,
+        rate: float,
+        obliquity: float,
+        eccentricity: float | None = None,
+        tidal_dissipation: float = 0.0,
+        ellipticity_drift: float = 0.0,
+    ) -> SpinAxisModel:
+        """The model whose precession rate ``ψ̇ = α(0) cos ε₀`` at J2000 is ``rate`` (″/yr).
+
+        Parameters
+        ----------
+        body : {"earth", "mars"}
+        rate : float
+            ``ψ̇`` at J2000, arcseconds per Julian year (positive: westward).
+        obliquity : float
+            ``ε₀``, the obliquity at J2000 (radians).
+        eccentricity : float, optional
+            The orbit's ``e`` at J2000 (default: the body's mean orbit).
+        tidal_dissipation, ellipticity_drift : float
+            As in :meth:`from_dynamical_ellipticity`.
+
+        Returns
+        -------
+        SpinAxisModel
+
+        Examples
+        --------
+        >>> model = SpinAxisModel.from_precession_rate("mars", 7.597, np.radians(25.19))
+        >>> round(model.dynamical_ellipticity(), 5)
+        0.00537
+        """
+        key = _body(body)
+        if not (np.isfinite(rate) and rate > 0):
+            msg = f"expected a positive precession rate in arcsec per year, got {rate!r}"
+            raise ValueError(msg)
+        if not (np.isfinite(obliquity) and 0 <= obliquity < np.pi / 2):
+            msg = f"expected an obliquity at J2000 in [0, π/2) radians, got {obliquity!r}"
+            raise ValueError(msg)
+        _, e0, beta, _, _ = _solar_terms(key)
+        e = e0 if eccentricity is None else float(eccentricity)
+        alpha = rate * ARCSEC / (np.cos(obliquity) * (((1 - e) * (1 + e)) ** -1.5 + beta))
+        spin, moon = cls._tides(key, tidal_dissipation)
+        return cls(key, float(alpha), float(beta), e, spin, moon, float(ellipticity_drift))
+
+    def rate(self, t: ArrayLike, e: ArrayLike | None = None) -> Array:
+        """``α(t, e)``, radians per Julian year.
+
+        Parameters
+        ----------
+        t : array_like, shape (...)
+            Julian years from J2000.
+        e : array_like, shape (...), optional
+            The orbit's eccentricity (default: ``self.eccentricity``).
+
+        Returns
+        -------
+        numpy.ndarray, shape (...)
+
+        Examples
+        --------
+        >>> model = SpinAxisModel("mars", 1.0, 0.0, 0.0)
+        >>> float(model.rate(0.0, 0.6))  # (1 - 0.36)^(-3/2)
+        1.953125
+        """
+        t = np.asarray(t, dtype=np.float64)
+        e = self.eccentricity if e is None else np.asarray(e, dtype=np.float64)
+        factor = (1 + self.tide_spin * t) * (1 + self.ellipticity_drift * t)
+        return self.alpha_sun * factor * (((1 - e) * (1 + e)) ** -1.5 + self.beta * (1 + self.tide_moon * t))
+
+    def precession_rate(self, obliquity: float, e: float | None = None) -> float:
+        """``ψ̇ = α(0) cos ε`` in arcseconds per Julian year.
+
+        Parameters
+        ----------
+        obliquity : float
+            Radians.
+        e : float, optional
+
+        Returns
+        -------
+        float
+        """
+        return float(self.rate(0.0, e) * np.cos(obliquity) / ARCSEC)
+
+    def dynamical_ellipticity(self) -> float:
+        """``H = 2 α_⊙ ω / (3 n_⊙²)`` implied by ``α_⊙``.
+
+        Returns
+        -------
+        float
+        """
+        n2, _, _, omega, _ = _solar_terms(self.body)
+        return float(self.alpha_sun / JULIAN_YEAR * omega / (1.5 * n2))
+
+
+def _body(body: str) -> str:
+    key = str(body).strip().lower()
+    if key not in DEFAULT_PRECESSION_RATE:
+        msg = f"expected a body in {', '.join(DEFAULT_PRECESSION_RATE)}, got {body!r}"
+        raise ValueError(msg)
+    return key
