@@ -32,7 +32,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer.ensemble.sampling import Draw, _interval
-from andoyer.orbits.base import OrbitHistory
+from andoyer.orbits.protocol import OrbitHistory
 from andoyer.spin_axis import DEFAULT_PRECESSION_RATE, build_model, default_axis, evolve_axes
 from andoyer.spin_axis.history import DEFAULT_STEP
 from andoyer.state import State
@@ -160,7 +160,7 @@ class SpinAxisPropagator:
         tidal_dissipation: ArrayLike | None = None,
     ) -> State:
         """States (n, T) in the orbit frame of date: obliquity ``θ``, ``φ = π − p_A`` (Euler angles)."""
-        from andoyer.orbits.base import check_times
+        from andoyer.orbits.protocol import check_times
 
         times = check_times(times, self.orbit.span, self.orbit.name)
         n = state.size

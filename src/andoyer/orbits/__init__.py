@@ -28,7 +28,7 @@ Examples
 True
 """
 
-from andoyer.orbits.base import OrbitHistory, check_times
+from andoyer.orbits.protocol import OrbitHistory, check_times
 from andoyer.orbits.factory import SOURCES, orbit_history
 from andoyer.orbits.nbody import NBodyOrbit
 from andoyer.orbits.planets import PLANETS

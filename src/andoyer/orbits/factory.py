@@ -6,7 +6,7 @@ import os
 from pathlib import Path
 from typing import Any
 
-from andoyer.orbits.base import OrbitHistory
+from andoyer.orbits.protocol import OrbitHistory
 from andoyer.orbits.planets import PLANETS, check_planet
 
 __all__ = ["SOURCES", "orbit_history"]

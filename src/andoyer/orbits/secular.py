@@ -56,7 +56,7 @@ from functools import cache
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from andoyer.orbits.base import check_times
+from andoyer.orbits.protocol import check_times
 from andoyer.orbits.elements import eccentricity_from_elements
 from andoyer.orbits.laplace import laplace_coefficient
 from andoyer.orbits.planets import PLANETS, check_planet, planet_data

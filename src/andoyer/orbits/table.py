@@ -4,7 +4,7 @@ r"""Orbit histories read from tables: CSV files and La2010-style ``alkhqp`` file
 two column sets (extra columns are ignored):
 
 * vectors: ``t_years, nx, ny, nz`` and optionally ``ex, ey, ez``: the orbit normal and the
-  eccentricity vector in the J2000 ecliptic frame (as :class:`~andoyer.orbits.base.OrbitHistory`
+  eccentricity vector in the J2000 ecliptic frame (as :class:`~andoyer.orbits.protocol.OrbitHistory`
   returns them);
 * elements: ``t_years, e, inclination_deg, node_deg, varpi_deg``: eccentricity, inclination,
   longitude of the node and of perihelion (``ϖ = Ω + ω``) in degrees, J2000 ecliptic.
@@ -36,7 +36,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from andoyer._validation import as_vectors
 from andoyer.orbits._files import atomic_write_bytes
-from andoyer.orbits.base import OrbitHistory, check_times
+from andoyer.orbits.protocol import OrbitHistory, check_times
 from andoyer.orbits.elements import eccentricity_from_elements, normal_from_elements
 
 __all__ = ["TableOrbit", "read_alkhqp", "read_orbit_csv", "write_orbit_csv"]

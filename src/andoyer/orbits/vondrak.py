@@ -17,7 +17,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from andoyer.orbits.base import check_times
+from andoyer.orbits.protocol import check_times
 
 __all__ = ["EPSILON_0", "VondrakEcliptic"]
 

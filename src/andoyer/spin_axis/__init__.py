@@ -28,7 +28,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from andoyer._validation import as_finite
-from andoyer.orbits.base import OrbitHistory, check_times
+from andoyer.orbits.protocol import OrbitHistory, check_times
 from andoyer.spin_axis.history import (
     DEFAULT_STEP,
     EPSILON_0,

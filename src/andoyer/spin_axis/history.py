@@ -29,7 +29,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer._validation import as_vectors
-from andoyer.orbits.base import OrbitHistory
+from andoyer.orbits.protocol import OrbitHistory
 from andoyer.spin_axis.insolation import daily_insolation
 from andoyer.spin_axis.model import ARCSEC, DEFAULT_PRECESSION_RATE, SpinAxisModel
 from andoyer.spin_axis.stepping import rotate_stages, stage_times
