@@ -28,10 +28,10 @@ Examples
 True
 """
 
-from andoyer.orbits.protocol import OrbitHistory, check_times
 from andoyer.orbits.factory import SOURCES, orbit_history
 from andoyer.orbits.nbody import NBodyOrbit
 from andoyer.orbits.planets import PLANETS
+from andoyer.orbits.protocol import OrbitHistory, check_times
 from andoyer.orbits.secular import SecularOrbit
 from andoyer.orbits.table import TableOrbit, read_alkhqp, read_orbit_csv, write_orbit_csv
 from andoyer.orbits.vondrak import VondrakEcliptic

@@ -6,8 +6,8 @@ import os
 from pathlib import Path
 from typing import Any
 
-from andoyer.orbits.protocol import OrbitHistory
 from andoyer.orbits.planets import PLANETS, check_planet
+from andoyer.orbits.protocol import OrbitHistory
 
 __all__ = ["SOURCES", "orbit_history"]
 

@@ -56,10 +56,10 @@ from functools import cache
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from andoyer.orbits.protocol import check_times
 from andoyer.orbits.elements import eccentricity_from_elements
 from andoyer.orbits.laplace import laplace_coefficient
 from andoyer.orbits.planets import PLANETS, check_planet, planet_data
+from andoyer.orbits.protocol import check_times
 
 __all__ = ["LA2004_G", "LA2004_S", "SecularOrbit", "secular_matrices"]
 

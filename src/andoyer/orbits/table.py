@@ -36,8 +36,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from andoyer._validation import as_vectors
 from andoyer.orbits._files import atomic_write_bytes
-from andoyer.orbits.protocol import OrbitHistory, check_times
 from andoyer.orbits.elements import eccentricity_from_elements, normal_from_elements
+from andoyer.orbits.protocol import OrbitHistory, check_times
 
 __all__ = ["TableOrbit", "read_alkhqp", "read_orbit_csv", "write_orbit_csv"]
 
