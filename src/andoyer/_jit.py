@@ -1,6 +1,7 @@
-"""Optional compilation of the scalar kernels with numba (the ``fast`` extra).
+"""Compilation of the scalar kernels with numba (a base dependency), with a pure-Python fallback.
 
-``NUMBA`` tells whether numba is importable and not switched off; :func:`jit` compiles a
+``NUMBA`` tells whether numba is importable and not switched off (the fallback serves
+``ANDOYER_NUMBA=0`` and an environment where numba could not be installed); :func:`jit` compiles a
 function with ``numba.njit(cache=True)`` when it is, and returns it unchanged otherwise, so
 every kernel also runs (slowly, but identically) as plain Python. ``ANDOYER_NUMBA=0`` in the
 environment, read at import, forces the interpreted path, which the tests also run.
