@@ -4,8 +4,9 @@
 chunk from seeds derived from ``(seed, chunk index)``, propagates them with the exact
 free flow (:class:`FreePropagator`) or any callable ``(State (n,), times (T,),
 **parameters) -> State (n, T)``, and writes an :class:`xarray.Dataset` with dims
-``sample`` and ``time`` to Zarr (chunk by chunk, with a completion marker per chunk,
-so an interrupted run resumes where it stopped) or to NetCDF (assembled atomically at
+``sample`` and ``time`` to Zarr (chunk by chunk, with a checksum per chunk in a ledger,
+so an interrupted or damaged run resumes where it stopped and recomputes what does not
+match) or to NetCDF (assembled atomically at
 the end). Work runs on a ``distributed.LocalCluster`` by default, or on any Dask
 scheduler given by address. See ``docs/ensembles.md``.
 
@@ -34,11 +35,12 @@ from andoyer.ensemble.sampling import (
     Sampler,
     chunk_rng,
 )
-from andoyer.ensemble.store import completed_chunks
+from andoyer.ensemble.store import DamagedChunkWarning, completed_chunks
 
 __all__ = [
     "OUTPUTS",
     "AndoyerSampler",
+    "DamagedChunkWarning",
     "Draw",
     "EnsembleSpec",
     "FreePropagator",
