@@ -8,11 +8,12 @@ in a warning, and leave files identical byte for byte to an undamaged run's.
 
 from __future__ import annotations
 
-import hashlib
 import os
 import shutil
+import zlib
 from pathlib import Path
 
+import google_crc32c
 import numpy as np
 import pytest
 import zarr
@@ -153,17 +154,25 @@ def test_ensemble_zarr_damage_repaired_on_a_cluster(zarr_copy, clean, loopback_c
     assert_repaired(ds, [DAMAGED, 4], clean["zarr"], zarr_copy, record, again, clean["memory"])
 
 
-def test_ensemble_zarr_ledger_entry_is_the_documented_sha256(clean):
-    # The documented digest, written out here: SHA-256 over the variables in name order, each as
-    # its name, its shape and its values as little-endian float64.
+def documented_entry(memory, k):
+    """The ledger entry as documented: CRC-32C and CRC-32 of the variables in name order, each as
+    its name, its shape and its values as little-endian float64 (big-endian CRCs)."""
+    region = slice(k * CHUNK, min((k + 1) * CHUNK, N))
+    values = {name: memory[name].values[region].astype("<f8") for name in VARIABLES}
+    message = b"".join(f"{name}{v.shape}".encode() + v.tobytes() for name, v in values.items())
+    return google_crc32c.value(message).to_bytes(4, "big") + zlib.crc32(message).to_bytes(4, "big")
+
+
+def test_ensemble_ledger_crcs_match_the_catalogue():
+    # Check values of the two CRCs (Greg Cook's CRC catalogue: CRC-32/ISCSI and CRC-32/ISO-HDLC).
+    assert google_crc32c.value(b"123456789") == 0xE3069283
+    assert zlib.crc32(b"123456789") == 0xCBF43926
+
+
+def test_ensemble_zarr_ledger_entry_is_the_documented_checksum(clean):
     group = zarr.open_group(clean["zarr"], mode="r")
     for k in range(N_CHUNKS):
-        region = slice(k * CHUNK, min((k + 1) * CHUNK, N))
-        h = hashlib.sha256()
-        for name in VARIABLES:
-            values = clean["memory"][name].values[region].astype("<f8")
-            h.update(f"{name}{values.shape}".encode() + values.tobytes())
-        assert bytes(group["chunk_digest"][k]) == h.digest()
+        assert bytes(group["chunk_digest"][k]) == documented_entry(clean["memory"], k)
 
 
 def test_ensemble_zarr_unfinished_store_resumes_without_warning(zarr_copy, clean):
@@ -199,12 +208,8 @@ def test_ensemble_netcdf_damaged_chunk_is_recomputed_bit_for_bit(how, nc_copy, c
         data[start:stop] = np.full((stop - start) // 8, np.nan).astype(">f8").tobytes()
         nc_copy.write_bytes(bytes(data))
     else:  # one hexadecimal digit of chunk DAMAGED's digest in the header's attribute
-        digest = hashlib.sha256()
-        for name in VARIABLES:
-            values = memory[name].values[DAMAGED * CHUNK : (DAMAGED + 1) * CHUNK].astype("<f8")
-            digest.update(f"{name}{values.shape}".encode() + values.tobytes())
         data = nc_copy.read_bytes()
-        at = data.index(digest.hexdigest().encode())
+        at = data.index(documented_entry(memory, DAMAGED).hex().encode())
         flipped = b"0" if data[at : at + 1] != b"0" else b"1"
         nc_copy.write_bytes(data[:at] + flipped + data[at + 1 :])
     again = []
@@ -298,11 +303,10 @@ def test_ensemble_output_symlink_is_written_through(suffix, tmp_path, clean):
     assert again == []
 
 
-@pytest.mark.parametrize(("suffix", "make", "got"), [
-    ("zarr", "file", "regular file"),
-    ("nc", "dir", "directory"),
-    ("nc", "fifo", "special file"),
-])
+@pytest.mark.parametrize(
+    ("suffix", "make", "got"),
+    [("zarr", "file", "regular file"), ("nc", "dir", "directory"), ("nc", "fifo", "special file")],
+)
 def test_ensemble_output_of_the_wrong_kind_is_refused(suffix, make, got, tmp_path):
     out = tmp_path / f"e.{suffix}"
     if make == "file":

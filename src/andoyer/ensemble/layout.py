@@ -10,7 +10,7 @@ Dataset layout (dimensions ``sample``, ``time``, ``component``/``axis``):
 * the initial states ``quaternion0`` (sample, quaternion_component) and ``m_body0`` (sample, axis);
 * the sampler's per-sample parameters under their own names (sample, ...), e.g. ``moments``
   (sample, axis);
-* in a Zarr store, the ledger ``chunk_digest`` (chunk, digest_byte): the SHA-256 digest of chunk
+* in a Zarr store, the ledger ``chunk_digest`` (chunk, digest_byte): the checksum of chunk
   ``k``'s values once it is written, zeros before (see :mod:`andoyer.ensemble.ledger`); in a
   NetCDF file the same digests as the attribute ``andoyer_chunk_digests``.
 """

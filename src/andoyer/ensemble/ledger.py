@@ -1,23 +1,31 @@
 """The completed-chunk ledger: a checksum per chunk, written after the chunk, verified before resuming.
 
 Chunk ``k`` of a store counts as done only if its ledger entry ``chunk_digest[k]`` is set
-(not all zero) **and** the chunk's values read back from the store hash to that entry.
-The digest is SHA-256 over every variable of the chunk in name order, each as its name,
-its shape and its values as little-endian float64 bytes:
+(not all zero) **and** the chunk's values read back from the store give that entry. The
+entry is 8 bytes, two 32-bit cyclic redundancy checks of different polynomials over every
+variable of the chunk in name order, each as its name, its shape (Python's text of the
+tuple) and its values as little-endian float64 bytes:
 
-    digest_k = SHA256( ‖_{name sorted} name · shape · bytes_LE(values[k·chunk : (k+1)·chunk]) )
+    M_k = ‖_{name sorted} name · shape · bytes_LE(name[k·chunk : (k+1)·chunk])
+    entry_k = CRC-32C(M_k) ‖ CRC-32(M_k)      (each big-endian; Castagnoli, then zlib's)
 
-so a deleted chunk file (read back as the NaN fill value), garbled or truncated bytes, a
-chunk moved to another place, or a damaged ledger entry all fail the check, and the chunk
-is computed again (its numbers depend on ``(seed, chunk size, k)`` only, so the repaired
-store is identical bit for bit to an undamaged one). SHA-256 rather than BLAKE2b: with
-the processors' SHA extensions it hashes about 2 GB/s against 1.5 GB/s (measured on the
-development machine), about 3 % of a worker's time per chunk of the free flow.
+A deleted chunk file (read back as the NaN fill value), garbled or truncated bytes, a
+chunk moved to another place or a damaged ledger entry all fail the check (any burst of
+up to 32 bits always; random garbage but for a chance of about 2⁻⁶⁴), and the chunk is
+computed again: its numbers depend on ``(seed, chunk size, k)`` only, so the repaired
+store is identical bit for bit to an undamaged one.
+
+Why CRCs and not a cryptographic hash: the ledger guards against accidents, not an
+adversary, and the check runs on the workers after every chunk. Measured per chunk of
+2¹⁸ pairs (14.7 MB) on the development machine: CRC-32C 0.4 ms (hardware instruction,
+``google_crc32c``, which zarr requires) plus 0.4 ms to copy it into bytes, zlib's CRC-32
+2 ms, against 7–15 ms for SHA-256 or 10–18 ms for BLAKE2b, for a chunk whose free-flow
+computation takes about 90 ms.
 """
 
 from __future__ import annotations
 
-import hashlib
+import zlib
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
@@ -36,11 +44,11 @@ __all__ = [
     "verify",
 ]
 
-DIGEST_SIZE = 32
+DIGEST_SIZE = 8
 
 
 def chunk_digest(arrays: Mapping[str, NDArray[np.float64]]) -> NDArray[np.uint8]:
-    """The ledger entry of one chunk: SHA-256 of its variables (name, shape, little-endian values).
+    """The ledger entry of one chunk: CRC-32C and CRC-32 of its variables (name, shape, values).
 
     Parameters
     ----------
@@ -49,23 +57,26 @@ def chunk_digest(arrays: Mapping[str, NDArray[np.float64]]) -> NDArray[np.uint8]
 
     Returns
     -------
-    ndarray of uint8, shape (32,)
+    ndarray of uint8, shape (8,)
 
     Examples
     --------
     >>> import numpy as np
     >>> a = chunk_digest({"x": np.arange(3.0), "y": np.ones((3, 2))})
     >>> a.shape, bool((a == chunk_digest({"y": np.ones((3, 2)), "x": np.arange(3.0)})).all())
-    ((32,), True)
+    ((8,), True)
     >>> bool((a == chunk_digest({"x": np.arange(3.0), "y": np.zeros((3, 2))})).all())
     False
     """
-    h = hashlib.sha256()
+    import google_crc32c
+
+    castagnoli = iso = 0
     for name in sorted(arrays):
         values = np.ascontiguousarray(arrays[name], dtype="<f8")
-        h.update(f"{name}{values.shape}".encode())
-        h.update(values)
-    return np.frombuffer(h.digest(), dtype=np.uint8)
+        for part in (f"{name}{values.shape}".encode(), values.tobytes()):
+            castagnoli = google_crc32c.extend(castagnoli, part)
+            iso = zlib.crc32(part, iso)
+    return np.frombuffer(castagnoli.to_bytes(4, "big") + iso.to_bytes(4, "big"), dtype=np.uint8)
 
 
 def digests_to_hex(entries: NDArray[np.uint8]) -> str:

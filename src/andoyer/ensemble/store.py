@@ -5,7 +5,7 @@ with NaN, an empty ledger) in a temporary directory renamed into place, so it
 exists complete or not at all. Workers then write chunk ``k`` into its own region
 — Zarr chunks are aligned with ensemble chunks, so no two workers touch one file,
 and the local store replaces each file atomically — and only afterwards its ledger
-entry, the SHA-256 digest of the chunk's values (:mod:`andoyer.ensemble.ledger`).
+entry, a checksum of the chunk's values (:mod:`andoyer.ensemble.ledger`).
 Once every chunk is stored the group is marked finished. On a rerun a chunk counts
 as done only if its entry is set and its data read back hash to it; anything else
 is computed again (its region may be rewritten at will: the numbers depend on
@@ -306,7 +306,10 @@ def finalize_netcdf(parts: Path, path: Path) -> None:
 
     digests = digests_to_hex(zarr.open_group(parts, mode="r")[LEDGER][:])
     with xr.open_zarr(parts, consolidated=False) as ds:
+        # Variables in name order: zarr lists them in no fixed order, and the file's bytes
+        # (its header) would depend on it.
         data = ds.drop_vars(LEDGER).load()
+    data = data[sorted(data.data_vars)]
     data.attrs.pop(FINISHED, None)
     data.attrs[DIGESTS_ATTR] = digests
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".part", dir=path.parent)
