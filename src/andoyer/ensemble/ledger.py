@@ -2,30 +2,30 @@
 
 Chunk ``k`` of a store counts as done only if its ledger entry ``chunk_digest[k]`` is set
 (not all zero) **and** the chunk's values read back from the store give that entry. The
-entry is 8 bytes, two 32-bit cyclic redundancy checks of different polynomials over every
-variable of the chunk in name order, each as its name, its shape (Python's text of the
-tuple) and its values as little-endian float64 bytes:
+entry is 8 bytes: the CRC-32C (Castagnoli) of every variable of the chunk in name order,
+each as its name, its shape (Python's text of the tuple) and its values as little-endian
+float64 bytes, then the number of samples of the chunk (never 0, so a written entry is
+never all zero):
 
     M_k = ‖_{name sorted} name · shape · bytes_LE(name[k·chunk : (k+1)·chunk])
-    entry_k = CRC-32C(M_k) ‖ CRC-32(M_k)      (each big-endian; Castagnoli, then zlib's)
+    entry_k = CRC-32C(M_k) ‖ n_k      (both 32-bit big-endian)
 
 A deleted chunk file (read back as the NaN fill value), garbled or truncated bytes, a
 chunk moved to another place or a damaged ledger entry all fail the check (any burst of
-up to 32 bits always; random garbage but for a chance of about 2⁻⁶⁴), and the chunk is
-computed again: its numbers depend on ``(seed, chunk size, k)`` only, so the repaired
-store is identical bit for bit to an undamaged one.
+up to 32 bits, and any odd number of flipped bits, always; random garbage but for a
+chance of 2⁻³²), and the chunk is computed again: its numbers depend on ``(seed, chunk
+size, k)`` only, so the repaired store is identical bit for bit to an undamaged one.
 
-Why CRCs and not a cryptographic hash: the ledger guards against accidents, not an
-adversary, and the check runs on the workers after every chunk. Measured per chunk of
-2¹⁸ pairs (14.7 MB) on the development machine: CRC-32C 0.4 ms (hardware instruction,
-``google_crc32c``, which zarr requires) plus 0.4 ms to copy it into bytes, zlib's CRC-32
-2 ms, against 7–15 ms for SHA-256 or 10–18 ms for BLAKE2b, for a chunk whose free-flow
-computation takes about 90 ms.
+Why a CRC and not a cryptographic hash: the ledger guards against accidents, not an
+adversary (as Zarr's own ``crc32c`` codec, ext4 and Btrfs do), and it is computed on the
+workers for every chunk. Measured for a default chunk of the benchmark (26,214 samples ×
+10 epochs, 16 MB, whose ``compute_chunk`` takes 51 ms of CPU): CRC-32C 0.5 ms (the
+processor's instruction, through ``google_crc32c``, which zarr requires), against 2.2 ms
+more for zlib's CRC-32 as a second 32 bits, 7.7 ms for SHA-256 and more for BLAKE2b.
 """
 
 from __future__ import annotations
 
-import zlib
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
@@ -48,7 +48,7 @@ DIGEST_SIZE = 8
 
 
 def chunk_digest(arrays: Mapping[str, NDArray[np.float64]]) -> NDArray[np.uint8]:
-    """The ledger entry of one chunk: CRC-32C and CRC-32 of its variables (name, shape, values).
+    """The ledger entry of one chunk: CRC-32C of its variables (name, shape, values), its size.
 
     Parameters
     ----------
@@ -67,16 +67,19 @@ def chunk_digest(arrays: Mapping[str, NDArray[np.float64]]) -> NDArray[np.uint8]
     ((8,), True)
     >>> bool((a == chunk_digest({"x": np.arange(3.0), "y": np.zeros((3, 2))})).all())
     False
+    >>> a[4:].tolist()  # three samples
+    [0, 0, 0, 3]
     """
     import google_crc32c
 
-    castagnoli = iso = 0
+    crc = 0
+    n = 0
     for name in sorted(arrays):
         values = np.ascontiguousarray(arrays[name], dtype="<f8")
-        for part in (f"{name}{values.shape}".encode(), values.tobytes()):
-            castagnoli = google_crc32c.extend(castagnoli, part)
-            iso = zlib.crc32(part, iso)
-    return np.frombuffer(castagnoli.to_bytes(4, "big") + iso.to_bytes(4, "big"), dtype=np.uint8)
+        n = values.shape[0]
+        crc = google_crc32c.extend(crc, f"{name}{values.shape}".encode())
+        crc = google_crc32c.extend(crc, values)  # the array's buffer, no copy
+    return np.frombuffer(crc.to_bytes(4, "big") + n.to_bytes(4, "big"), dtype=np.uint8)
 
 
 def digests_to_hex(entries: NDArray[np.uint8]) -> str:
