@@ -16,9 +16,12 @@ import google_crc32c
 import numpy as np
 import pytest
 import zarr
+from hypothesis import given
+from hypothesis import strategies as st
 
 from andoyer import bodies
 from andoyer.ensemble import AndoyerSampler, DamagedChunkWarning, completed_chunks, run_ensemble
+from andoyer.ensemble.ledger import digests_from_hex, digests_to_hex
 
 EROS = bodies.get("eros")
 TIMES = np.array([0.0, 1.5, 40.0])
@@ -165,6 +168,14 @@ def documented_entry(memory, k):
 def test_ensemble_ledger_crc_matches_the_catalogue():
     # The check value of CRC-32C (CRC-32/ISCSI in Greg Cook's catalogue of parametrised CRCs).
     assert google_crc32c.value(b"123456789") == 0xE3069283
+
+
+@given(st.lists(st.binary(min_size=8, max_size=8), min_size=1, max_size=12))
+def test_ensemble_ledger_hex_round_trip(entries):
+    array = np.frombuffer(b"".join(entries), dtype=np.uint8).reshape(-1, 8)
+    text = digests_to_hex(array)
+    assert text.split() == [e.hex() for e in entries]
+    np.testing.assert_array_equal(digests_from_hex(text, len(entries)), array)
 
 
 def test_ensemble_zarr_ledger_entry_is_the_documented_checksum(clean):

@@ -83,12 +83,25 @@ def chunk_digest(arrays: Mapping[str, NDArray[np.float64]]) -> NDArray[np.uint8]
 
 
 def digests_to_hex(entries: NDArray[np.uint8]) -> str:
-    """Ledger entries (n_chunks, 32) as one line of space-separated hexadecimal digests."""
+    """Ledger entries, shape (n_chunks, 8), as one line of space-separated hexadecimal entries.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> digests_to_hex(np.array([[0, 1, 2, 3, 4, 5, 6, 255], [0] * 8]))
+    '00010203040506ff 0000000000000000'
+    """
     return " ".join(bytes(row).hex() for row in np.asarray(entries, dtype=np.uint8))
 
 
 def digests_from_hex(text: str, n_chunks: int) -> NDArray[np.uint8]:
-    """Inverse of :func:`digests_to_hex`; an entry that does not parse reads as unset (zeros)."""
+    """Inverse of :func:`digests_to_hex`: shape (n_chunks, 8); an entry that does not parse is unset (zeros).
+
+    Examples
+    --------
+    >>> digests_from_hex("00010203040506ff zz", 3)[:, -1].tolist()
+    [255, 0, 0]
+    """
     entries = np.zeros((n_chunks, DIGEST_SIZE), dtype=np.uint8)
     words = text.split() if isinstance(text, str) else []
     for k, word in enumerate(words[:n_chunks]):

@@ -143,6 +143,7 @@ def _expected_arrays(spec: EnsembleSpec, shapes: dict[str, tuple[int, ...]]) -> 
 def _check(path: Path, spec: EnsembleSpec, shapes: dict[str, tuple[int, ...]]) -> None:
     import zarr
 
+    _check_files(path)  # first: even reading the metadata would block on a pipe
     try:
         group = zarr.open_group(path, mode="r")
         stored = json.loads(group.attrs["andoyer_ensemble"])
@@ -174,7 +175,6 @@ def _check(path: Path, spec: EnsembleSpec, shapes: dict[str, tuple[int, ...]]) -
             "remove it or choose another output"
         )
         raise ValueError(msg)
-    _check_files(path)
 
 
 def _check_files(path: Path) -> None:
