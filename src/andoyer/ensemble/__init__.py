@@ -10,7 +10,7 @@ match) or to NetCDF (assembled atomically at
 the end). Work runs on a ``distributed.LocalCluster`` by default, or on any Dask
 scheduler given by address. See ``docs/ensembles.md``.
 
-Requires the ``ensemble`` extra (dask[distributed], xarray, zarr).
+Requires the ``ensemble`` extra (dask[distributed], xarray, zarr, google-crc32c).
 
 Examples
 --------
