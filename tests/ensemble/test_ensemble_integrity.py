@@ -147,6 +147,14 @@ def test_ensemble_zarr_damaged_chunk_is_recomputed_bit_for_bit(how, zarr_copy, c
     assert third == []
 
 
+@given(st.lists(st.binary(min_size=8, max_size=8), min_size=1, max_size=12))
+def test_ensemble_ledger_hex_round_trip(entries):
+    array = np.frombuffer(b"".join(entries), dtype=np.uint8).reshape(-1, 8)
+    text = digests_to_hex(array)
+    assert text.split() == [e.hex() for e in entries]
+    np.testing.assert_array_equal(digests_from_hex(text, len(entries)), array)
+
+
 def test_ensemble_zarr_damage_repaired_on_a_cluster(zarr_copy, clean, loopback_cluster):
     damage_zarr(zarr_copy, "garble")
     shutil.rmtree(zarr_copy / "m_body" / "c" / "4")  # and the short last chunk
@@ -168,14 +176,6 @@ def documented_entry(memory, k):
 def test_ensemble_ledger_crc_matches_the_catalogue():
     # The check value of CRC-32C (CRC-32/ISCSI in Greg Cook's catalogue of parametrised CRCs).
     assert google_crc32c.value(b"123456789") == 0xE3069283
-
-
-@given(st.lists(st.binary(min_size=8, max_size=8), min_size=1, max_size=12))
-def test_ensemble_ledger_hex_round_trip(entries):
-    array = np.frombuffer(b"".join(entries), dtype=np.uint8).reshape(-1, 8)
-    text = digests_to_hex(array)
-    assert text.split() == [e.hex() for e in entries]
-    np.testing.assert_array_equal(digests_from_hex(text, len(entries)), array)
 
 
 def test_ensemble_zarr_ledger_entry_is_the_documented_checksum(clean):
@@ -229,6 +229,33 @@ def test_ensemble_netcdf_damaged_chunk_is_recomputed_bit_for_bit(how, nc_copy, c
     third = []
     run(nc_copy, on_chunk=third.append)
     assert third == []
+
+
+class StopError(Exception):
+    """Raised from the chunk callback: the run is interrupted."""
+
+
+def test_ensemble_netcdf_interrupted_run_with_damaged_parts_is_repaired(tmp_path, clean):
+    out = tmp_path / "e.nc"
+    seen = []
+
+    def stop_after_three(k):
+        seen.append(k)
+        if len(seen) == 3:
+            raise StopError
+
+    with pytest.raises(StopError):
+        run(out, on_chunk=stop_after_three)
+    parts = tmp_path / "e.nc.parts.zarr"
+    garble(parts / "quaternion" / "c" / "1" / "0" / "0")
+    again = []
+    with pytest.warns(DamagedChunkWarning) as record:
+        ds = run(out, on_chunk=again.append)
+    np.testing.assert_array_equal(ds.quaternion.values, clean["memory"].quaternion.values)
+    assert sorted(again) == [1, 3, 4]  # the damaged chunk and the two never written
+    assert str(record[0].message).endswith("(chunk(s) 1)")
+    assert file_bytes(out) == file_bytes(clean["nc"])
+    assert not parts.exists()
 
 
 def test_ensemble_netcdf_truncated_file_is_recomputed(nc_copy, clean):
