@@ -180,7 +180,8 @@ def run_ensemble(
     and converts them to the ``output`` chart. With ``out`` the workers write their chunks
     straight into a Zarr store (or a parts store assembled into NetCDF at the end), so
     memory stays bounded by a few chunks per worker, and a rerun with the same arguments
-    resumes an interrupted ensemble, computing only the chunks not yet written.
+    resumes an interrupted ensemble: it checks every stored chunk against its checksum in
+    the store's ledger and computes only the chunks not written or no longer matching.
 
     Parameters
     ----------
@@ -223,6 +224,18 @@ def run_ensemble(
     xarray.Dataset
         Dims ``sample``, ``time`` (and ``quaternion_component``/``axis``); lazily read
         from Zarr, loaded from NetCDF, or in memory.
+
+    Raises
+    ------
+    ValueError
+        Bad arguments; ``out`` holds another ensemble, unreadable metadata, links or special
+        files, or is of the wrong kind (a file for ``*.zarr``, not a regular file for ``*.nc``).
+
+    Warns
+    -----
+    DamagedChunkWarning
+        Some chunks of ``out`` had been written but are missing, damaged or do not match
+        their checksum; they are computed again (the warning names them).
 
     Examples
     --------
