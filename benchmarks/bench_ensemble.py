@@ -11,6 +11,8 @@ set-up of the store, sampling, propagation and writing.
 
 Checks before reporting: the one- and two-worker stores are identical bit for bit, and
 the first and last chunks equal the direct ``FreeRotation(body).propagate`` call.
+Then, in this process, the cost of the ledger checksum of one default chunk against its
+computation (best of repeats of CPU time).
 
 Run: ``python3 benchmarks/bench_ensemble.py [--samples N] [--epochs T] [--repeats R] [--dir D]``
 (``--quick``: 10⁵ × 10). Wall-clock figures: note the machine's load (printed).
@@ -39,7 +41,8 @@ import xarray as xr  # noqa: E402
 
 from andoyer import FreeRotation, bodies  # noqa: E402
 from andoyer.ensemble import AndoyerSampler, FreePropagator, chunk_rng, local_client, run_ensemble  # noqa: E402
-from andoyer.ensemble.layout import EnsembleSpec  # noqa: E402
+from andoyer.ensemble.layout import EnsembleSpec, compute_chunk  # noqa: E402
+from andoyer.ensemble.ledger import chunk_digest  # noqa: E402
 
 
 def warm() -> None:
@@ -132,6 +135,28 @@ def equals_direct(store, args, times):
     return True
 
 
+def best_cpu(f, repeats: int) -> float:
+    """Least CPU time (s) of ``repeats`` calls of ``f`` after one warm-up call."""
+    f()
+    spent = []
+    for _ in range(repeats):
+        start = time.process_time()
+        f()
+        spent.append(time.process_time() - start)
+    return min(spent)
+
+
+def checksum_cost(args, times) -> tuple[float, float, int]:
+    """CPU seconds to compute one chunk and to checksum it for the ledger, and its bytes."""
+    spec = EnsembleSpec.build(
+        AndoyerSampler(), FreePropagator(bodies.get("eros")), args.samples, times, args.chunk
+    )
+    arrays = compute_chunk(spec, 0)
+    compute = best_cpu(lambda: compute_chunk(spec, 0), 5)
+    digest = best_cpu(lambda: chunk_digest(arrays), 21)
+    return compute, digest, sum(a.nbytes for a in arrays.values())
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--samples", type=int, default=1_000_000)
@@ -194,6 +219,11 @@ def main():
     print(f"one- and two-worker stores identical bit for bit: {identical}")
     print(f"first and last chunks equal FreeRotation.propagate bit for bit: {direct}")
     print(f"load average now (1, 5, 15 min): {', '.join(f'{x:.2f}' for x in os.getloadavg())}")
+    compute, digest, size = checksum_cost(args, times)
+    print(
+        f"ledger checksum of one chunk ({size / 1e6:.1f} MB): {digest * 1e3:.2f} ms CPU against "
+        f"{compute * 1e3:.1f} ms to compute it ({100 * digest / compute:.1f} %)"
+    )
 
 
 if __name__ == "__main__":

@@ -8,7 +8,7 @@ import xarray as xr
 
 from andoyer import bodies
 from andoyer.cli import main
-from andoyer.ensemble import AndoyerSampler, MomentumSampler, run_ensemble
+from andoyer.ensemble import AndoyerSampler, DamagedChunkWarning, MomentumSampler, run_ensemble
 
 
 def test_cli_ensemble_zarr_equals_library(tmp_path, capsys, loopback_cluster):
@@ -154,3 +154,29 @@ def test_cli_ensemble_refuses_other_settings_on_resume(tmp_path, capsys, loopbac
     assert main(base) == 0
     assert main([*base, "--seed", "1"]) == 2
     assert "expected the settings of the ensemble already in" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("suffix", ["zarr", "nc"])
+def test_cli_ensemble_rerun_repairs_a_damaged_output(suffix, tmp_path, capsys):
+    out = tmp_path / f"e.{suffix}"
+    argv = ["ensemble", "--body", "eros", "--samples", "9", "--times", "0", "7", "--chunk", "4"]
+    argv += ["--seed", "3", "--out", str(out), "--quiet", "--scheduler", "synchronous"]
+    assert main(argv) == 0
+    eros = bodies.get("eros")
+    ref = run_ensemble(AndoyerSampler(), 9, [0.0, 7.0], body=eros, chunk=4, seed=3, scheduler="synchronous",
+                       progress=False)
+    if suffix == "zarr":
+        (out / "m_body" / "c" / "1" / "0" / "0").unlink()  # chunk 1 would read back as NaN
+    else:  # chunk 1 of m_body, found by its big-endian bytes, set to NaN
+        data = out.read_bytes()
+        needle = ref.m_body.values[4:8].astype(">f8").tobytes()
+        at = data.index(needle)
+        nans = np.full(len(needle) // 8, np.nan).astype(">f8").tobytes()
+        out.write_bytes(data[:at] + nans + data[at + len(needle) :])
+    with pytest.warns(DamagedChunkWarning, match=r"^1 chunk\(s\) of the ensemble in .*\(chunk\(s\) 1\)$"):
+        assert main(argv) == 0
+    ds = xr.open_zarr(out, consolidated=False) if suffix == "zarr" else xr.load_dataset(out, engine="scipy")
+    with ds:
+        np.testing.assert_array_equal(ds.m_body.values, ref.m_body.values)
+        np.testing.assert_array_equal(ds.quaternion.values, ref.quaternion.values)
+    assert capsys.readouterr().err == ""

@@ -96,7 +96,8 @@ def test_ensemble_zarr_partial_chunk_without_marker_is_recomputed(tmp_path):
     run_ensemble(AndoyerSampler(), N, TIMES, **kwargs)
     group = zarr.open_group(store, mode="r+")
     group["quaternion"][8:12] = 0.5  # a worker killed half-way through chunk 2: data, no marker
-    group["completed"][2:3] = np.zeros(1, dtype=np.uint8)
+    group["chunk_digest"][2:3] = np.zeros((1, 32), dtype=np.uint8)  # its ledger entry not yet written
+    del group.attrs["andoyer_finished"]  # and the run not finished
     again = []
     ds = run_ensemble(AndoyerSampler(), N, TIMES, on_chunk=again.append, **kwargs)
     assert again == [2]

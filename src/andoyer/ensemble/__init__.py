@@ -2,15 +2,15 @@
 
 :func:`run_ensemble` samples initial conditions (and optionally parameters) chunk by
 chunk from seeds derived from ``(seed, chunk index)``, propagates them with the exact
-free flow (:class:`FreePropagator`), the secular spin-axis flow along an orbit history
-(:class:`SpinAxisPropagator`, with :class:`SpinParameterSampler`), or any callable ``(State (n,), times (T,),
-**parameters) -> State (n, T)``, and writes an :class:`xarray.Dataset` with dims
-``sample`` and ``time`` to Zarr (chunk by chunk, with a completion marker per chunk,
-so an interrupted run resumes where it stopped) or to NetCDF (assembled atomically at
-the end). Work runs on a ``distributed.LocalCluster`` by default, or on any Dask
+free flow (:class:`FreePropagator`), the secular spin-axis flow along an orbit
+history (:class:`SpinAxisPropagator`, with :class:`SpinParameterSampler`), or any callable
+``(State (n,), times (T,), **parameters) -> State (n, T)``, and writes an
+:class:`xarray.Dataset` with dims ``sample`` and ``time`` to Zarr (chunk by chunk, with a
+checksum per chunk in a ledger, so an interrupted or damaged run resumes where it stopped
+and recomputes what does not match) or to NetCDF (assembled atomically at the end). Work runs on a ``distributed.LocalCluster`` by default, or on any Dask
 scheduler given by address. See ``docs/ensembles.md``.
 
-Requires the ``ensemble`` extra (dask[distributed], xarray, zarr).
+Requires the ``ensemble`` extra (dask[distributed], xarray, zarr, google-crc32c).
 
 Examples
 --------
@@ -36,11 +36,12 @@ from andoyer.ensemble.sampling import (
     chunk_rng,
 )
 from andoyer.ensemble.spin_axis import SpinAxisPropagator, SpinParameterSampler
-from andoyer.ensemble.store import completed_chunks
+from andoyer.ensemble.store import DamagedChunkWarning, completed_chunks
 
 __all__ = [
     "OUTPUTS",
     "AndoyerSampler",
+    "DamagedChunkWarning",
     "Draw",
     "EnsembleSpec",
     "FreePropagator",

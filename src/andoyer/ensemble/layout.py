@@ -10,7 +10,9 @@ Dataset layout (dimensions ``sample``, ``time``, ``component``/``axis``):
 * the initial states ``quaternion0`` (sample, quaternion_component) and ``m_body0`` (sample, axis);
 * the sampler's per-sample parameters under their own names (sample, ...), e.g. ``moments``
   (sample, axis);
-* in a Zarr store, ``completed`` (chunk): 1 once chunk ``k`` is written (the resume marker).
+* in a Zarr store, the ledger ``chunk_digest`` (chunk, digest_byte): the checksum of chunk
+  ``k``'s values once it is written, zeros before (see :mod:`andoyer.ensemble.ledger`); in a
+  NetCDF file the same digests as the attribute ``andoyer_chunk_digests``.
 """
 
 from __future__ import annotations
@@ -28,11 +30,20 @@ from numpy.typing import NDArray
 from andoyer.ensemble.sampling import Draw, Sampler, chunk_rng
 from andoyer.state import State
 
-__all__ = ["OUTPUTS", "EnsembleSpec", "compute_chunk", "dataset_from_arrays", "describe_object"]
+__all__ = [
+    "LEDGER",
+    "OUTPUTS",
+    "EnsembleSpec",
+    "compute_chunk",
+    "dataset_from_arrays",
+    "describe_object",
+]
 
 Arrays = dict[str, NDArray[np.float64]]
 QUAT_DIM = "quaternion_component"
 AXIS_DIM = "axis"
+#: The ledger variable of a Zarr store: one checksum per chunk.
+LEDGER = "chunk_digest"
 
 #: Output charts: name → function of a State (n, T) giving {variable: array (n, T, ...)}.
 OUTPUTS: dict[str, Callable[[State], Arrays]] = {
@@ -159,7 +170,7 @@ class EnsembleSpec:
     def fingerprint(self) -> dict[str, Any]:
         """JSON-able description checked before resuming (the times are compared separately)."""
         return {
-            "format": "andoyer-ensemble/1",
+            "format": "andoyer-ensemble/2",
             "n_samples": self.n_samples,
             "n_times": int(self.times.size),
             "chunk": self.chunk,
@@ -199,7 +210,7 @@ def compute_chunk(spec: EnsembleSpec, index: int) -> Arrays:
     arrays["quaternion0"] = state.quaternion
     arrays["m_body0"] = state.m_body
     for name, given in parameters.items():
-        if name in arrays or name in ("time", "completed"):
+        if name in arrays or name in ("time", LEDGER):
             msg = f"expected sampler parameters not named like ensemble variables, got {name!r}"
             raise ValueError(msg)
         value = np.asarray(given, dtype=np.float64)

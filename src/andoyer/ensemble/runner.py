@@ -5,7 +5,9 @@ from __future__ import annotations
 import contextlib
 import itertools
 import os
+import shutil
 import uuid
+import warnings
 from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
@@ -18,11 +20,14 @@ from andoyer.ensemble.layout import EnsembleSpec, compute_chunk, dataset_from_ar
 from andoyer.ensemble.propagators import FreePropagator
 from andoyer.ensemble.sampling import Sampler
 from andoyer.ensemble.store import (
-    completed_chunks,
+    DamagedChunkWarning,
+    check_netcdf,
+    check_store,
     create_or_check_store,
     finalize_netcdf,
-    netcdf_matches,
+    mark_finished,
     parts_path,
+    require_kind,
     write_chunk,
 )
 
@@ -175,7 +180,8 @@ def run_ensemble(
     and converts them to the ``output`` chart. With ``out`` the workers write their chunks
     straight into a Zarr store (or a parts store assembled into NetCDF at the end), so
     memory stays bounded by a few chunks per worker, and a rerun with the same arguments
-    resumes an interrupted ensemble, computing only the chunks not yet written.
+    resumes an interrupted ensemble: it checks every stored chunk against its checksum in
+    the store's ledger and computes only the chunks not written or no longer matching.
 
     Parameters
     ----------
@@ -219,6 +225,18 @@ def run_ensemble(
         Dims ``sample``, ``time`` (and ``quaternion_component``/``axis``); lazily read
         from Zarr, loaded from NetCDF, or in memory.
 
+    Raises
+    ------
+    ValueError
+        Bad arguments; ``out`` holds another ensemble, unreadable metadata, links or special
+        files, or is of the wrong kind (a file for ``*.zarr``, not a regular file for ``*.nc``).
+
+    Warns
+    -----
+    DamagedChunkWarning
+        Some chunks of ``out`` had been written but are missing, damaged or do not match
+        their checksum; they are computed again (the warning names them).
+
     Examples
     --------
     >>> import numpy as np
@@ -241,30 +259,49 @@ def run_ensemble(
         sampler, propagator or FreePropagator(body), n_samples, times, chunk, seed, output
     )
     kind = _output_kind(out)
+    # Written through a symbolic link, never replacing it: work on the path it points to.
+    target = None if out is None else Path(os.path.realpath(out))
+    store = target
+    intact = None  # a NetCDF file to repair: (its dataset, its check)
     if kind == "nc":
-        final = Path(out)  # type: ignore[arg-type]
-        store = parts_path(final)
-        if final.exists() and netcdf_matches(final, spec):
-            if store.exists():  # a crash between the rename and the clean-up
-                import shutil
-
+        require_kind(target, "regular file")
+        store = parts_path(target)
+        if target.exists():
+            intact = check_netcdf(target, spec)
+            if store.exists():  # a crash between the rename and the clean-up, or an interrupted repair
                 shutil.rmtree(store)
-            return _load_netcdf(final)
-    else:
-        store = None if out is None else Path(out)
+            if intact[1].done.all():
+                return intact[0]
     if store is not None:
         create_or_check_store(store, spec)
-        todo = [int(i) for i in np.flatnonzero(~completed_chunks(store))]
+        if intact is None:
+            check = check_store(store)
+        else:
+            # Rebuild from the intact chunks: the parts store gets them (and their ledger
+            # entries) from the file; only the damaged ones are computed.
+            ds, check = intact
+            for index in map(int, np.flatnonzero(check.done)):
+                write_chunk(store, spec, index, {n: ds[n].values[spec.bounds(index)] for n in ds.data_vars})
+        damaged = check.damaged
+        todo = [int(i) for i in np.flatnonzero(~check.done)]
     else:
-        todo = list(range(spec.n_chunks))
+        damaged, todo = (), list(range(spec.n_chunks))
+    if damaged:
+        shown = ", ".join(map(str, damaged[:20])) + (", ..." if len(damaged) > 20 else "")
+        msg = (
+            f"{len(damaged)} chunk(s) of the ensemble in {str(target)!r} were written but are missing, "
+            f"damaged or do not match their checksum: computing them again (chunk(s) {shown})"
+        )
+        warnings.warn(msg, DamagedChunkWarning, stacklevel=2)
     results = _run(
         spec, todo, None if store is None else str(store), scheduler, n_workers, processes, progress, on_chunk
     )
     if kind is None:
         return _assemble(spec, results)
+    mark_finished(store)
     if kind == "nc":
-        finalize_netcdf(store, final)
-        return _load_netcdf(final)
+        finalize_netcdf(store, target)
+        return _load_netcdf(target)
     import xarray as xr
 
     return xr.open_zarr(store, consolidated=False)
