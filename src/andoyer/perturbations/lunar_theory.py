@@ -192,7 +192,9 @@ def _series_angles(args: Array, table: Array) -> Array:
     return basis @ table[:, :4].T
 
 
-def moon_ecliptic(t: ArrayLike, args: ArrayLike | None = None) -> tuple[Array, Array, Array]:
+def moon_ecliptic(
+    t: ArrayLike, args: ArrayLike | None = None, planetary: bool = True
+) -> tuple[Array, Array, Array]:
     """The Moon's geocentric longitude, latitude (radians) and distance (m), mean ecliptic and equinox of date.
 
     Parameters
@@ -203,6 +205,10 @@ def moon_ecliptic(t: ArrayLike, args: ArrayLike | None = None) -> tuple[Array, A
     args : array_like, shape (..., 5), optional
         Delaunay arguments to use instead of :func:`delaunay_arguments` ``(t)``
         (a point of the torus, for Fourier analysis).
+    planetary : bool
+        Include Meeus' additive terms in Venus' and Jupiter's arguments
+        (``A₁, A₂, A₃``, not functions of the Delaunay arguments; at most 14″);
+        the terms in ``L`` (the Earth's flattening, ``−8.0″ sin L``) stay.
 
     Returns
     -------
@@ -225,15 +231,11 @@ def moon_ecliptic(t: ArrayLike, args: ArrayLike | None = None) -> tuple[Array, A
     A1 = (119.75 + 131.849 * T) * _DEGREE
     A2 = (53.09 + 479264.290 * T) * _DEGREE
     A3 = (313.45 + 481266.484 * T) * _DEGREE
-    extra_lon = 3958 * np.sin(A1) + 1962 * np.sin(L - a[..., 2]) + 318 * np.sin(A2)
-    extra_lat = (
-        -2235 * np.sin(L)
-        + 382 * np.sin(A3)
-        + 175 * np.sin(A1 - a[..., 2])
-        + 175 * np.sin(A1 + a[..., 2])
-        + 127 * np.sin(L - a[..., 0])
-        - 115 * np.sin(L + a[..., 0])
-    )
+    extra_lon = 1962 * np.sin(L - a[..., 2])
+    extra_lat = -2235 * np.sin(L) + 127 * np.sin(L - a[..., 0]) - 115 * np.sin(L + a[..., 0])
+    if planetary:
+        extra_lon = extra_lon + 3958 * np.sin(A1) + 318 * np.sin(A2)
+        extra_lat = extra_lat + 382 * np.sin(A3) + 175 * np.sin(A1 - a[..., 2]) + 175 * np.sin(A1 + a[..., 2])
     lon = L + (np.sum(_LR[:, 4] * eccentric * np.sin(lr), axis=-1) + extra_lon) * 1e-6 * _DEGREE
     distance = _R0 + np.sum(_LR[:, 5] * eccentric * np.cos(lr), axis=-1)
     b = _series_angles(a, _B)
