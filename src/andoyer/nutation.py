@@ -90,14 +90,19 @@ __all__ = [
     "AXES",
     "EARTH_ROTATION",
     "H_MHB2000",
+    "IAU2000A",
     "MEAN_OBLIQUITY",
     "PRINCIPAL_TERMS",
+    "REN2000_NODE",
+    "WOOLARD1953",
     "NutationSeries",
     "fit_terms",
     "luni_solar_precession",
     "minimum_span",
     "nutation",
     "nutation_series",
+    "numeric_terms",
+    "terms_table",
 ]
 
 Array = NDArray[np.float64]
@@ -607,3 +612,81 @@ def numeric_terms(
     periodic = np.sin(theta) @ fitted[:, 0] + np.cos(theta) @ fitted[:, 1]
     drift = np.linalg.lstsq(design, psi[inside] - periodic, rcond=None)[0][1]
     return fitted[: wanted.shape[0]] / ARCSEC, (run.precession + drift) / ARCSEC
+
+
+#: IAU 2000A (MHB2000, non-rigid) in-phase amplitudes ``(Δψ sin, Δε cos)`` of the principal terms,
+#: arcsec (IERS Conventions 2010, Table 5.3a/5.3b; ``erfa.nut00a`` sums the same series).
+IAU2000A = {
+    "Ω": (-17.2064161, 9.2052331),
+    "2Ω": (0.2074554, -0.0897492),
+    "2(F−D+Ω)": (-1.3170906, 0.5730336),
+    "2(F+Ω)": (-0.2276413, 0.0978459),
+    "l′": (0.1475877, 0.0073871),
+    "l": (0.0711159, -0.0006750),
+}
+#: Rigid-Earth 18.6-year amplitudes of the figure axis, REN-2000 (Souchay, Loysel, Kinoshita &
+#: Folgueira 1999, A&AS 135, 111, Table 5.2; H = 0.0032737548, which MHB2000 rescaled by
+#: 1.0000122 to H = 0.0032737949: 0.2 mas here), arcsec.
+REN2000_NODE = (-17.2806, 9.2282)
+#: Woolard's (1953) rigid-Earth series (rotation axis; Astron. Pap. Amer. Eph. 15, part 1, as in
+#: the Explanatory Supplement 1961), in-phase ``(Δψ sin, Δε cos)``, arcsec. His ``H`` and lunar
+#: mass (1/81.45) are older: compare ratios to the 18.6-year term.
+WOOLARD1953 = {
+    "Ω": (-17.2327, 9.2100),
+    "2Ω": (0.2088, -0.0904),
+    "2(F−D+Ω)": (-1.2729, 0.5522),
+    "2(F+Ω)": (-0.2037, 0.0884),
+    "l′": (0.1261, 0.0),
+    "l": (0.0675, 0.0),
+}
+
+
+def terms_table(
+    span: tuple[float, float], dynamical_ellipticity: float = H_MHB2000, axis: str = "figure"
+) -> dict:
+    """The principal terms fitted over ``span`` beside the analytic series, REN-2000 and IAU 2000A.
+
+    Parameters
+    ----------
+    span : (float, float)
+        Julian years from J2000, at least :func:`minimum_span` long.
+    dynamical_ellipticity : float
+    axis : {"figure", "momentum", "rotation"}
+
+    Returns
+    -------
+    dict
+        ``terms``: one dict per principal term (``argument``, ``multipliers``,
+        ``period_days``, fitted ``dpsi_sin``, ``dpsi_cos``, ``deps_cos``,
+        ``deps_sin``, ``analytic_dpsi``, ``analytic_deps``, ``ren2000_dpsi``,
+        ``ren2000_deps`` (the 18.6-year term only, else ``None``),
+        ``iau2000a_dpsi``, ``iau2000a_deps``), arcsec; ``precession``: ″/yr.
+    """
+    H = check_dynamical_ellipticity(dynamical_ellipticity)
+    key = _axis(axis)
+    t0, t1 = (float(v) for v in span)
+    fitted, precession = numeric_terms((t0, t1), H, key)
+    series = nutation_series(H, key, 0.5 * (t0 + t1))
+    rates = delaunay_rates(0.5 * (t0 + t1))
+    rows = []
+    for (name, n), amp in zip(PRINCIPAL_TERMS.items(), fitted, strict=True):
+        analytic = series.term(n)
+        ren = REN2000_NODE if name == "Ω" and key == "figure" else (None, None)
+        rows.append(
+            {
+                "argument": name,
+                "multipliers": list(n),
+                "period_days": float(2 * np.pi / abs(np.dot(n, rates)) * JULIAN_YEAR / DAY),
+                "dpsi_sin": float(amp[0]),
+                "dpsi_cos": float(amp[1]),
+                "deps_cos": float(amp[2]),
+                "deps_sin": float(amp[3]),
+                "analytic_dpsi": analytic[0],
+                "analytic_deps": analytic[2],
+                "ren2000_dpsi": ren[0],
+                "ren2000_deps": ren[1],
+                "iau2000a_dpsi": IAU2000A[name][0],
+                "iau2000a_deps": IAU2000A[name][1],
+            }
+        )
+    return {"terms": rows, "precession": float(precession)}
