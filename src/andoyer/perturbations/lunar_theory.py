@@ -291,7 +291,9 @@ def ecliptic_vector(lon: ArrayLike, lat: ArrayLike, distance: ArrayLike) -> Arra
     return distance[..., None] * np.stack([cb * np.cos(lon), cb * np.sin(lon), np.sin(lat) + 0 * lon], -1)
 
 
-def precise_perturbers(planet: str = "earth", precession_rate: float = GENERAL_PRECESSION) -> list[PointMass]:
+def precise_perturbers(
+    planet: str = "earth", precession_rate: float = GENERAL_PRECESSION, planetary: bool = True
+) -> list[PointMass]:
     """The Sun and the Moon from :func:`sun_ecliptic` and :func:`moon_ecliptic`, for the torque models.
 
     Times are seconds TT from J2000.0 (the torque models' unit). The frame is
@@ -304,6 +306,8 @@ def precise_perturbers(planet: str = "earth", precession_rate: float = GENERAL_P
     ----------
     planet : {"earth"}
     precession_rate : float
+    planetary : bool
+        Keep the Moon's additive planetary terms (see :func:`moon_ecliptic`).
 
     Returns
     -------
@@ -323,7 +327,10 @@ def precise_perturbers(planet: str = "earth", precession_rate: float = GENERAL_P
     def place(body: str):  # type: ignore[no-untyped-def]
         def position(seconds: Array) -> Array:
             years = np.asarray(seconds, dtype=float) / JULIAN_YEAR
-            lon, lat, r = (moon_ecliptic if body == "moon" else sun_ecliptic)(years)
+            if body == "moon":
+                lon, lat, r = moon_ecliptic(years, planetary=planetary)
+            else:
+                lon, lat, r = sun_ecliptic(years)
             return ecliptic_vector(lon - rate * years, lat, r)
 
         return position
