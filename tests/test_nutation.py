@@ -60,7 +60,7 @@ def test_delaunay_rates_match_finite_differences():
 
 @pytest.mark.parametrize("years", [-12.3, 0.0, 0.37, 7.3, 21.9])
 def test_moon_position_matches_erfa_moon98(years):
-    """Same Meeus (ELP-2000/82) tables, different code: pyerfa's moon98 (GCRS), rotated to the ecliptic of date.
+    """Same Meeus (ELP-2000/82) tables, other code: pyerfa's moon98 (GCRS) rotated to the ecliptic of date.
 
     The arguments differ slightly (Meeus' vs IERS 2010 polynomials) and moon98 includes a frame bias:
     agreement to 0.1″ in direction and 50 m in distance.
@@ -76,8 +76,11 @@ def test_moon_position_matches_erfa_moon98(years):
 
 @pytest.mark.parametrize("years", [-5.0, 0.0, 3.25, 14.6])
 def test_sun_position_matches_erfa_epv00(years):
-    """Against VSOP-based erfa.epv00 (geocentric Sun = −Earth heliocentric): the Kepler Sun omits the planetary
-    perturbations (≤ 20″) and the Earth's offset from the barycentre (6.4″)."""
+    """Against VSOP-based erfa.epv00 (geocentric Sun = −Earth heliocentric).
+
+    The Kepler Sun omits the planetary perturbations (≤ 20″) and the Earth's offset from the
+    barycentre (6.4″).
+    """
     helio, _ = erfa.epv00(J2000, years * 365.25)
     position = _ecliptic_of_date(-helio["p"], years) * erfa.DAU
     lon, lat, r = sun_ecliptic(years)
@@ -89,7 +92,7 @@ def test_sun_position_matches_erfa_epv00(years):
 
 def test_precise_perturbers_frame_is_fixed_equinox():
     """At t the fixed-frame longitude is the longitude of date minus p t."""
-    sun, moon = precise_perturbers(precession_rate=1e-3)
+    _, moon = precise_perturbers(precession_rate=1e-3)
     years = 3.0
     lon, lat, r = moon_ecliptic(years)
     expected = ecliptic_vector(lon - 3e-3, lat, r)
@@ -100,7 +103,7 @@ def test_precise_perturbers_frame_is_fixed_equinox():
 
 @pytest.mark.parametrize("seed", [0, 1, 2])
 def test_spin_averaged_rate_is_the_gravity_gradient_torque(seed):
-    """(3H/ω)(S m)×m, the nutation's equation, equals GravityGradient's torque / (Cω) on an axisymmetric body."""
+    """(3H/ω)(S m)×m, the nutation's equation, is GravityGradient's torque / (Cω) on an axisymmetric body."""
     rng = np.random.default_rng(seed)
     years = rng.uniform(-10, 10)
     m = rng.normal(size=3)
@@ -128,12 +131,13 @@ def test_node_term_matches_ren2000():
     ref_psi, ref_eps = nutation.REN2000_NODE
     assert abs(psi / ref_psi - 1) < 1e-3
     assert abs(eps / ref_eps - 1) < 1e-3
-    assert abs(psi - ref_psi) < 1e-3 and abs(eps - ref_eps) < 1e-3  # in fact within 1 mas
+    assert abs(psi - ref_psi) < 1e-3  # in fact within 1 mas
+    assert abs(eps - ref_eps) < 1e-3
 
 
 @pytest.mark.parametrize("name", [k for k in nutation.PRINCIPAL_TERMS if k != "Ω"])
 def test_principal_terms_match_woolard_ratios(name):
-    """Woolard (1953), rigid Earth, rotation axis: each term relative to the 18.6-year term within 1 % or 1 mas.
+    """Woolard (1953), rigid Earth, rotation axis: each term relative to the 18.6-yr term, 1 % or 1 mas.
 
     Ratios cancel Woolard's older H; his lunar mass (1/81.45) shifts the solar terms by 0.2 %.
     """
@@ -158,18 +162,19 @@ def test_iau2000a_differs_from_rigid_as_the_transfer_function():
     series = nutation.nutation_series(H, "figure")
     ratio = {k: nutation.IAU2000A[k][0] / series.term(n)[0] for k, n in nutation.PRINCIPAL_TERMS.items()}
     assert 0.994 < ratio["Ω"] < 0.997
-    assert 1.02 < ratio["2(F−D+Ω)"] < 1.05 and 1.02 < ratio["2(F+Ω)"] < 1.05
+    assert 1.02 < ratio["2(F−D+Ω)"] < 1.05
+    assert 1.02 < ratio["2(F+Ω)"] < 1.05
     assert 1.1 < ratio["l′"] < 1.25
 
 
 def test_iau2000a_table_matches_erfa_nut00a_fit():
-    """The fit of erfa.nut00a over 18.7 years recovers the tabulated IAU 2000A amplitudes (checks fit_terms)."""
+    """A fit of erfa.nut00a over 18.7 years recovers the tabulated IAU 2000A amplitudes (checks fit_terms)."""
     t = np.arange(0.0, 18.7, 1.5 / 365.25)
     dpsi, deps = erfa.nut00a(J2000, t * 365.25)
     series = nutation.nutation_series(H, "figure", 9.35)
     regressors = nutation._resolved(
         nutation._large(series), 18.7, 9.35, first=np.array(list(nutation.PRINCIPAL_TERMS.values()), float)
-    )
+    )  # fmt: skip
     fitted = nutation.fit_terms(t, dpsi / ARCSEC, deps / ARCSEC, regressors)
     for k, name in enumerate(nutation.PRINCIPAL_TERMS):
         if name in ("l′", "2(F−D+Ω)"):  # their unresolved neighbours (Sun's perigee) leak in
@@ -189,7 +194,7 @@ def test_iau2000a_table_matches_erfa_nut00a_fit():
 def test_numeric_matches_analytic_series():
     """The integrated torque vs the second-order series: same Δψ(t), Δε(t) to 0.5 mas, up to the mean
     pole's constant and trend (terms slower than the span cannot be told from the mean pole)."""
-    t = np.arange(0.0, 18.7, 0.02)
+    t = np.arange(0.0, 18.0, 0.02)  # the integration covers 18.63 years (the CLI test reuses it)
     numeric = nutation.nutation(t, H, "figure", "numeric")
     analytic = nutation.nutation(t, H, "figure", "analytic")
     design = np.stack([np.ones_like(t), t], -1)
@@ -221,7 +226,7 @@ def test_numeric_node_term_matches_ren2000():
 
 
 def test_oppolzer_terms_size_at_13_66_days():
-    """Figure minus momentum axis, 2(F+Ω): about 7 mas in Δψ sin ε and in Δε (Kinoshita 1977's Oppolzer terms)."""
+    """Figure minus momentum axis, 2(F+Ω): about 7 mas in Δψ sin ε and in Δε (Kinoshita 1977's Oppolzer)."""
     n = nutation.PRINCIPAL_TERMS["2(F+Ω)"]
     fig = nutation.nutation_series(H, "figure").term(n)
     mom = nutation.nutation_series(H, "momentum").term(n)
@@ -254,7 +259,7 @@ def test_bad_axis_method_and_span_raise():
         nutation.nutation([0.0], axis="spin")
     with pytest.raises(ValueError, match="expected method"):
         nutation.nutation([0.0], method="euler")
-    with pytest.raises(ValueError, match="expected a span of at least 18.6"):
+    with pytest.raises(ValueError, match=r"expected a span of at least 18\.6"):
         nutation.numeric_terms((0.0, 10.0))
     with pytest.raises(ValueError, match="expected finite times"):
         nutation.nutation([np.nan])
@@ -287,21 +292,32 @@ def test_precession_rates_accept_dynamical_ellipticity():
 
 
 def _cli(*args, cwd=None):
-    return subprocess.run(
-        [sys.executable, "-m", "andoyer", *args], capture_output=True, text=True, cwd=cwd, timeout=600
-    )
+    command = [sys.executable, "-m", "andoyer", *args]
+    return subprocess.run(command, capture_output=True, text=True, cwd=cwd, timeout=600, check=False)
 
 
 def test_cli_nutation_json_keys(tmp_path):
     out = tmp_path / "nut.json"
-    result = _cli("nutation", "earth", "--span", "0", "1", "--step", "0.25", "--format", "json", "--output", str(out))
-    assert result.returncode == 0, result.stderr
+    argv = ["nutation", "earth", "--span", "0", "1", "--step", "0.25", "--format", "json"]
+    assert main([*argv, "--output", str(out)]) == 0
     fields = json.loads(out.read_text())
     assert set(fields) == {"t", "dpsi", "deps"}
     assert fields["t"] == [0.0, 0.25, 0.5, 0.75, 1.0]
     expected = nutation.nutation(np.array(fields["t"]), method="analytic")
     assert np.allclose(fields["dpsi"], expected[0], atol=0.03)  # up to the slow terms' offset
     assert np.allclose(fields["deps"], expected[1], atol=0.03)
+
+
+@pytest.mark.slow
+def test_cli_nutation_subprocess_csv_and_plot(tmp_path):
+    """``python -m andoyer`` end to end: CSV columns and a PNG."""
+    argv = ["nutation", "earth", "--span", "0", "0.1", "--step", "0.05", "--format", "csv", "--plot", "n.png"]
+    result = _cli(*argv, cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    lines = result.stdout.splitlines()
+    assert lines[0] == "t,dpsi,deps"
+    assert len(lines) == 4
+    assert (tmp_path / "n.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
 @pytest.mark.parametrize(
@@ -328,7 +344,9 @@ def test_cli_nutation_bad_input_exit_2(tmp_path, monkeypatch, capsys, args):
         code = exc.code
     assert code == 2
     err = capsys.readouterr().err
-    assert err.endswith("\n") and err.count("\n") == 1 and "Traceback" not in err
+    assert err.endswith("\n")
+    assert err.count("\n") == 1
+    assert "Traceback" not in err
     assert list(tmp_path.iterdir()) == []
 
 

@@ -27,7 +27,8 @@ obliquity ``Δε = δε`` (IERS sign conventions: ``Δψ`` adds to longitudes).
    \dot\psi = \frac{1}{G\sin\varepsilon}\frac{\partial V}{\partial\varepsilon}
    = \frac{3H}{2\omega\sin\varepsilon}\big[(P - R)\sin 2\varepsilon + Q\cos 2\varepsilon\big],\qquad
    \dot\varepsilon = -\frac{1}{G\sin\varepsilon}\frac{\partial V}{\partial\psi}
-   = -\frac{3H}{2\omega\sin\varepsilon}\big[P_\lambda\sin^2\varepsilon + Q_\lambda\sin\varepsilon\cos\varepsilon\big],
+   = -\frac{3H}{2\omega\sin\varepsilon}\big[P_\lambda\sin^2\varepsilon
+     + Q_\lambda\sin\varepsilon\cos\varepsilon\big],
 
 with ``P = Σ μ/r³ cos²β sin²λ``, ``Q = 2Σ μ/r³ sinβ cosβ sinλ``,
 ``R = Σ μ/r³ sin²β`` and their longitude derivatives ``P_λ, Q_λ`` (``λ, β``
@@ -99,9 +100,9 @@ __all__ = [
     "fit_terms",
     "luni_solar_precession",
     "minimum_span",
+    "numeric_terms",
     "nutation",
     "nutation_series",
-    "numeric_terms",
     "terms_table",
 ]
 
@@ -110,7 +111,8 @@ Array = NDArray[np.float64]
 ARCSEC = np.pi / 648000.0
 #: Earth's nominal mean angular velocity, rad/s (IERS Conventions 2010, Table 1.2).
 EARTH_ROTATION = 7.292115e-5
-#: Dynamical ellipticity ``(C − (A+B)/2)/C`` of MHB2000 (Mathews et al. 2002; IERS Conventions 2010 Table 1.1).
+#: Dynamical ellipticity ``(C − (A+B)/2)/C`` of MHB2000 (Mathews et al. 2002; IERS Conventions 2010,
+#: Table 1.1).
 H_MHB2000 = 0.0032737949
 #: Mean obliquity of the ecliptic at J2000.0, IAU 2006: 84381.406″.
 MEAN_OBLIQUITY = 84381.406 * ARCSEC
@@ -147,7 +149,8 @@ def _axis(axis: str) -> str:
 def _forcing(t: float, args: Array, H: float, eps: float) -> tuple[Array, Array]:
     """``ψ̇, ε̇`` (rad per Julian year) of the first-order equations at Delaunay arguments ``args``."""
     P = Q = R = Pl = Ql = 0.0
-    for gm, (lon, lat, r) in ((GM_MOON, moon_ecliptic(t, args, planetary=False)), (GM_SUN, sun_ecliptic(t, args))):
+    bodies = ((GM_MOON, moon_ecliptic(t, args, planetary=False)), (GM_SUN, sun_ecliptic(t, args)))
+    for gm, (lon, lat, r) in bodies:
         w = gm / r**3
         cb, sb = np.cos(lat), np.sin(lat)
         sl, cl = np.sin(lon), np.cos(lon)
@@ -163,8 +166,11 @@ def _forcing(t: float, args: Array, H: float, eps: float) -> tuple[Array, Array]
 
 
 def _spectrum(t: float, H: float, eps: float) -> tuple[float, Array, Array, Array]:
-    """Fourier analysis of the forcing to second order: ``⟨ψ̇⟩`` and, per multiplier ``n``, the complex
-    coefficients ``c_n`` of ``ψ̇`` and ``ε̇`` (their first-order parts ∝ H, second-order ∝ H²)."""
+    """Fourier analysis of the forcing to second order: ``⟨ψ̇⟩`` and ``c_n`` of ``ψ̇`` and ``ε̇``.
+
+    Per multiplier ``n`` the complex coefficients; their first-order parts are
+    proportional to ``H``, the second-order parts to ``H²``.
+    """
     first, second = _unit_spectrum(float(t), float(eps))
     constant, index, cpsi, ceps = (H * v for v in first[:1]), first[1], H * first[2], H * first[3]
     (constant,) = constant
@@ -174,7 +180,7 @@ def _spectrum(t: float, H: float, eps: float) -> tuple[float, Array, Array, Arra
 
 @functools.lru_cache(maxsize=8)
 def _unit_spectrum(t: float, eps: float) -> tuple[tuple, tuple]:
-    """For H = 1: ``(⟨ψ̇⟩, index, c_ψ, c_ε)`` of the first-order forcing and ``(⟨g_ψ⟩, g_ψ, g_ε)`` of the second.
+    """For H = 1: ``(⟨ψ̇⟩, index, c_ψ, c_ε)`` of the first-order forcing, ``(⟨g_ψ⟩, g_ψ, g_ε)`` of the second.
 
     The second-order forcing is ``g = (∂f/∂ε) Δε₁ + (∂f/∂ψ) Δψ₁`` with ``Δ₁`` the
     first-order solution on the torus; ``∂/∂ψ`` shifts every longitude, i.e.
@@ -242,7 +248,8 @@ class NutationSeries:
         if hit.size == 0:
             return 0.0, 0.0, 0.0, 0.0
         k = hit[0]
-        return (float(self.psi_sin[k]), float(self.psi_cos[k]), float(self.eps_cos[k]), float(self.eps_sin[k]))
+        parts = (self.psi_sin, self.psi_cos, self.eps_cos, self.eps_sin)
+        return tuple(float(part[k]) for part in parts)  # type: ignore[return-value]
 
 
 def _oppolzer(psi_s, psi_c, eps_c, eps_s, rate, axis, H, eps):  # type: ignore[no-untyped-def]
@@ -311,7 +318,9 @@ def nutation_series(
     )
 
 
-def luni_solar_precession(dynamical_ellipticity: float = H_MHB2000, obliquity: float = MEAN_OBLIQUITY) -> float:
+def luni_solar_precession(
+    dynamical_ellipticity: float = H_MHB2000, obliquity: float = MEAN_OBLIQUITY
+) -> float:
     """First-order luni-solar precession in longitude, ``⟨ψ̇⟩``, arcsec per Julian year.
 
     Examples
@@ -323,7 +332,7 @@ def luni_solar_precession(dynamical_ellipticity: float = H_MHB2000, obliquity: f
     return _unit_spectrum(0.0, float(obliquity))[0][0] * H / ARCSEC
 
 
-def minimum_span(multipliers: ArrayLike = tuple(PRINCIPAL_TERMS.values()), epoch: float = 0.0) -> float:
+def minimum_span(multipliers: ArrayLike | None = None, epoch: float = 0.0) -> float:
     """The shortest span (Julian years) over which the terms ``multipliers`` (K, 5) can be fitted.
 
     The rule: the span must cover one period of the slowest term (18.613 years
@@ -335,6 +344,8 @@ def minimum_span(multipliers: ArrayLike = tuple(PRINCIPAL_TERMS.values()), epoch
     >>> round(minimum_span(), 3)
     18.613
     """
+    if multipliers is None:
+        multipliers = list(PRINCIPAL_TERMS.values())
     rates = np.abs(np.asarray(multipliers, dtype=float) @ delaunay_rates(epoch))
     return float(2 * np.pi / np.min(rates))
 
@@ -368,7 +379,10 @@ def fit_terms(t: ArrayLike, dpsi: ArrayLike, deps: ArrayLike, multipliers: Array
     n = np.atleast_2d(np.asarray(multipliers, dtype=float))
     values = np.stack([np.asarray(dpsi, dtype=float), np.asarray(deps, dtype=float)], axis=-1)
     if t.ndim != 1 or values.shape != (t.size, 2) or n.shape[-1] != 5:
-        msg = f"expected t (T,), dpsi and deps (T,) and multipliers (K, 5), got {t.shape}, {values.shape}, {n.shape}"
+        msg = (
+            "expected t (T,), dpsi and deps (T,) and multipliers (K, 5), "
+            f"got {t.shape}, {values.shape}, {n.shape}"
+        )
         raise ValueError(msg)
     span = float(t.max() - t.min()) if t.size else 0.0
     need = minimum_span(n, float(np.mean(t)) if t.size else 0.0)
@@ -440,7 +454,7 @@ class _Integration:
     precession: float  # frame rate p, rad per year
 
 
-def _integrate(t0: float, t1: float, H: float, eps: float, p: float, start: tuple[float, float]) -> _Integration:
+def _integrate(t0: float, t1: float, H: float, p: float, start: tuple[float, float]) -> _Integration:
     h = _STEP_DAYS * DAY / JULIAN_YEAR
     steps = max(int(np.ceil((t1 - t0) / h)), 1)
     half = t0 + 0.5 * h * np.arange(2 * steps + 1)
@@ -510,18 +524,22 @@ def nutation(
     return CubicSpline(run.t, dpsi)(times), CubicSpline(run.t, deps)(times)
 
 
-@functools.lru_cache(maxsize=2)
 def _numeric_run(t0: float, t1: float, H: float, eps: float) -> tuple[_Integration, NutationSeries]:
     """Integrate over ``[t0, max(t1, t0 + span)]`` from the forced state at ``t0`` (mean pole ``ε₀``).
 
     The start sets only the free constants (where the mean pole lies); the
-    analytic series supplies them, which spares a second pass.
+    analytic series supplies them, which spares a second pass. Runs are cached
+    per window, so the series and the terms of one span share one integration.
     """
-    series = nutation_series(H, "momentum", 0.5 * (t0 + t1), eps)
-    end = max(t1, t0 + minimum_span() * 1.001)
+    return _window_run(t0, max(t1, t0 + minimum_span() * 1.001), H, eps)
+
+
+@functools.lru_cache(maxsize=2)
+def _window_run(t0: float, end: float, H: float, eps: float) -> tuple[_Integration, NutationSeries]:
+    series = nutation_series(H, "momentum", 0.5 * (t0 + end), eps)
     dpsi0, deps0 = series(t0)
     start = (float(dpsi0) * ARCSEC, eps + float(deps0) * ARCSEC)
-    return _integrate(t0, end, H, eps, series.precession * ARCSEC, start), series
+    return _integrate(t0, end, H, series.precession * ARCSEC, start), series
 
 
 def _large(series: NutationSeries) -> Array:
@@ -562,7 +580,7 @@ def _split(multipliers: Array, span: float, epoch: float, first: Array | None = 
 
 
 def _residuals(run: _Integration, axis: str, H: float, series: NutationSeries) -> tuple[Array, Array]:
-    """``Δψ, Δε`` (arcsec) of ``axis`` on the grid: the angles minus their fitted mean pole (constant + trend)."""
+    """``Δψ, Δε`` (arcsec) of ``axis`` on the grid: the angles minus their mean pole (constant + trend)."""
     psi, eps = _angles(_axis_vectors(run, axis, H))
     n = _resolved(_large(series), run.t[-1] - run.t[0], float(run.t.mean()))
     theta = delaunay_arguments(run.t) @ n.T
@@ -578,7 +596,7 @@ def numeric_terms(
     span: tuple[float, float],
     dynamical_ellipticity: float = H_MHB2000,
     axis: str = "figure",
-    multipliers: ArrayLike = tuple(PRINCIPAL_TERMS.values()),
+    multipliers: ArrayLike | None = None,
     obliquity: float = MEAN_OBLIQUITY,
 ) -> tuple[Array, float]:
     """Fitted amplitudes (K, 4) of the integrated nutation over ``span``, and the precession rate (″/yr).
@@ -594,7 +612,8 @@ def numeric_terms(
         Julian years from J2000.
     dynamical_ellipticity : float
     axis : {"figure", "momentum", "rotation"}
-    multipliers : array_like, shape (K, 5)
+    multipliers : array_like, shape (K, 5), optional
+        Default: the :data:`PRINCIPAL_TERMS`.
     obliquity : float
 
     Returns
@@ -605,8 +624,10 @@ def numeric_terms(
     """
     H = check_dynamical_ellipticity(dynamical_ellipticity)
     key = _axis(axis)
+    eps0 = float(obliquity)
     t0, t1 = (float(v) for v in span)
-    wanted = np.atleast_2d(np.asarray(multipliers, dtype=float))
+    chosen = list(PRINCIPAL_TERMS.values()) if multipliers is None else multipliers
+    wanted = np.atleast_2d(np.asarray(chosen, dtype=float))
     need = minimum_span(wanted, 0.5 * (t0 + t1))
     if not (t1 - t0 >= need * (1 - 1e-9)):
         msg = f"expected a span of at least {need:.3f} years to fit these terms, got {t1 - t0:.3f}"
@@ -618,8 +639,9 @@ def numeric_terms(
     # Terms closer in frequency to a regressor than one cycle over the span cannot be told apart
     # from it (l′ and 2F − 2D + 2Ω − l′ differ by the Sun's perigee, 21 000 years): take them
     # out with the analytic series of this axis first.
-    own = nutation_series(H, key, 0.5 * (t0 + t1), float(obliquity))
-    prior = NutationSeries(close, *np.array([own.term(tuple(row)) for row in close]).T.reshape(4, -1), 0.0, H, 0.0, key)
+    own = nutation_series(H, key, float(run.t.mean()), float(obliquity))
+    amplitudes = np.array([own.term(tuple(row)) for row in close]).T.reshape(4, -1)
+    prior = NutationSeries(close, *amplitudes, 0.0, H, eps0, key)
     known_psi, known_eps = prior(run.t)
     psi = psi - known_psi * ARCSEC
     eps = eps - known_eps * ARCSEC

@@ -104,11 +104,13 @@ def run(args: argparse.Namespace) -> int:
         text = json.dumps(fields) + "\n"
     elif table is not None:
         header = list(table["terms"][0])
-        rows = [[row[key] if not isinstance(row[key], list) else " ".join(map(str, row[key])) for key in header]
-                for row in table["terms"]]
+        rows = [
+            [" ".join(map(str, row[key])) if isinstance(row[key], list) else row[key] for key in header]
+            for row in table["terms"]
+        ]
         text = format_rows(header, rows, args.format)
         if args.format == "table":
-            text += f"luni-solar precession (first order + numeric drift): {table['precession']:.4f} arcsec/yr\n"
+            text += f"luni-solar precession (integrated): {table['precession']:.4f} arcsec/yr\n"
     else:
         rows = [[float(a), float(b), float(c)] for a, b, c in zip(t, dpsi, deps, strict=True)]
         text = format_rows(["t", "dpsi", "deps"], rows, args.format)

@@ -195,7 +195,7 @@ def _series_angles(args: Array, table: Array) -> Array:
 def moon_ecliptic(
     t: ArrayLike, args: ArrayLike | None = None, planetary: bool = True
 ) -> tuple[Array, Array, Array]:
-    """The Moon's geocentric longitude, latitude (radians) and distance (m), mean ecliptic and equinox of date.
+    """The Moon's geocentric longitude, latitude (radians) and distance (m), mean ecliptic/equinox of date.
 
     Parameters
     ----------
