@@ -412,11 +412,17 @@ def _angles(vectors: Array) -> tuple[Array, Array]:
 
 def _gradient_matrices(t: Array, H: float) -> Array:
     """``(3H/ω) S`` (rad per Julian year), shape (T, 3, 3), in the frame of date."""
-    total = 0.0
-    for gm, (lon, lat, r) in ((GM_MOON, moon_ecliptic(t, planetary=False)), (GM_SUN, sun_ecliptic(t))):
-        u = ecliptic_vector(lon, lat, np.ones_like(r))
-        total = total + (gm / r**3)[:, None, None] * u[:, :, None] * u[:, None, :]
-    return 3 * H / EARTH_ROTATION * JULIAN_YEAR * total
+    out = np.empty((t.size, 3, 3))
+    block = 20000  # the lunar series makes (block, 60) arrays: keep them small
+    for start in range(0, t.size, block):
+        times = t[start : start + block]
+        total = 0.0
+        places = ((GM_MOON, moon_ecliptic(times, planetary=False)), (GM_SUN, sun_ecliptic(times)))
+        for gm, (lon, lat, r) in places:
+            u = ecliptic_vector(lon, lat, np.ones_like(r))
+            total = total + (gm / r**3)[:, None, None] * u[:, :, None] * u[:, None, :]
+        out[start : start + block] = total
+    return 3 * H / EARTH_ROTATION * JULIAN_YEAR * out
 
 
 def _rk4(S: Array, m0: Array, h: float, p: float) -> Array:
