@@ -355,3 +355,12 @@ def test_cli_precession_dynamical_ellipticity(capsys):
     assert abs(json.loads(capsys.readouterr().out)["secular_arcsec_per_year"] - 50.40) < 0.01
     assert main(["precession", "earth", "--dynamical-ellipticity", "0.5"]) == 2
     assert capsys.readouterr().err.strip().count("\n") == 0
+
+
+def test_cli_nutation_bad_output_writes_no_plot(tmp_path, monkeypatch, capsys):
+    """A missing --output directory is caught before the picture is drawn: nothing is written."""
+    monkeypatch.chdir(tmp_path)
+    argv = ["nutation", "earth", "--span", "0", "1", "--step", "0.1", "--plot", "n.png"]
+    assert main([*argv, "--output", str(tmp_path / "missing" / "out.csv")]) == 2
+    assert "expected an existing directory for --output" in capsys.readouterr().err
+    assert list(tmp_path.iterdir()) == []

@@ -20,8 +20,8 @@ With ``m = (sin ε sin h, −sin ε cos h, cos ε)`` (Andoyer's node ``h``, the
 equinox at ``h + π``), the nutation in longitude is ``Δψ = −δh`` and in
 obliquity ``Δε = δε`` (IERS sign conventions: ``Δψ`` adds to longitudes).
 
-**Analytic solution (first order, Kinoshita 1977).** With ``V = (3/2)(C −
-Ā)Σ μ/r³ (u·m)²`` and the canonical pair ``(h, G cos ε)``,
+**Analytic solution (second-order averaging of Kinoshita's 1977 Hamiltonian).**
+With ``V = (3/2)(C − Ā)Σ μ/r³ (u·m)²`` and the canonical pair ``(h, G cos ε)``,
 
 .. math::
    \dot\psi = \frac{1}{G\sin\varepsilon}\frac{\partial V}{\partial\varepsilon}
@@ -32,21 +32,23 @@ obliquity ``Δε = δε`` (IERS sign conventions: ``Δψ`` adds to longitudes).
 
 with ``P = Σ μ/r³ cos²β sin²λ``, ``Q = 2Σ μ/r³ sinβ cosβ sinλ``,
 ``R = Σ μ/r³ sin²β`` and their longitude derivatives ``P_λ, Q_λ`` (``λ, β``
-ecliptic coordinates of date; a shift of the equinox moves every longitude).
-These right-hand sides are functions on the torus of the Delaunay arguments
-``θ = (l, l′, F, D, Ω)``; :func:`nutation_series` computes their Fourier
-coefficients exactly (a five-dimensional FFT of the lunar theory on a grid),
-and each term ``a cos(n·θ) + b sin(n·θ)`` integrates to
-``(a sin(n·θ) − b cos(n·θ))/(n·θ̇)`` (the first-order Lie transform, or direct
-averaging, of Kinoshita's Hamiltonian). The constant term of ``ψ̇`` is the
-first-order luni-solar precession (:func:`luni_solar_precession`).
+ecliptic coordinates of date; a shift of the equinox moves every longitude,
+i.e. shifts ``Ω`` at fixed ``l, l′, F, D``). These right-hand sides are
+functions on the torus of the Delaunay arguments ``θ = (l, l′, F, D, Ω)``;
+:func:`nutation_series` takes their Fourier coefficients by a five-dimensional
+FFT of the lunar theory on a grid, and each term ``c e^{in·θ}`` integrates to
+``c e^{in·θ}/(i n·θ̇)``. The second order repeats this for
+``g = (∂f/∂ε) Δε₁ + (∂f/∂ψ) Δψ₁`` with ``Δ₁`` the first-order solution: the
+dependence of the precession rate on the obliquity (2.9 mas on the 18.6-year
+``Δψ``) and the crossed nutations (1.2 mas on ``2Ω``). The constant term of
+``ψ̇`` is the luni-solar precession (:func:`luni_solar_precession`: first order).
 
 **Numeric solution.** :func:`nutation` with ``method="numeric"`` integrates
-the vector equation above (RK4 on a quarter-day grid of precomputed ``S``),
-from the mean pole (``J = 0``: the figure, momentum and rotation axes
-together), then removes the mean pole (a constant and a linear drift fitted
-together with the periodic terms; the starting point is corrected once so that
-the mean obliquity is ``ε₀``).
+the vector equation above (RK4 on a quarter-day grid of precomputed ``S``) over
+at least 18.63 years, from the forced state at the start (the series only sets
+the free constants: where the mean pole lies), then removes the mean pole (a
+constant and a linear drift fitted together with the periodic terms). Terms
+slower than the span cannot be told from the mean pole.
 
 **Axes (Oppolzer terms).** With ``ω⊥ = k × k̇`` the rotation vector's
 equatorial part, ``L = Cω₃ k + Ā ω⊥`` and ``ω = ω₃ k + ω⊥``, so to first
@@ -221,7 +223,7 @@ class NutationSeries:
         Of ``(l, l′, F, D, Ω)``.
     psi_sin, psi_cos, eps_cos, eps_sin : numpy.ndarray, shape (K,)
     precession : float
-        First-order luni-solar precession in longitude, arcsec per Julian year.
+        Luni-solar precession in longitude (to second order), arcsec per Julian year.
     dynamical_ellipticity, obliquity : float
     axis : str
     """
@@ -268,7 +270,7 @@ def nutation_series(
     epoch: float = 0.0,
     obliquity: float = MEAN_OBLIQUITY,
 ) -> NutationSeries:
-    """The first-order analytic nutation series (see the module docstring), terms above 0.02 mas.
+    """The analytic nutation series to second order (see the module docstring), terms above 0.02 mas.
 
     Parameters
     ----------
@@ -627,6 +629,13 @@ def numeric_terms(
     amplitudes : numpy.ndarray, shape (K, 4)
         ``(ψs, ψc, εc, εs)``, arcsec.
     precession : float
+
+    Examples
+    --------
+    >>> numeric_terms((0.0, 10.0))
+    Traceback (most recent call last):
+    ...
+    ValueError: expected a span of at least 18.613 years to fit these terms, got 10.000
     """
     H = check_dynamical_ellipticity(dynamical_ellipticity)
     key = _axis(axis)
@@ -706,6 +715,13 @@ def terms_table(
         ``deps_sin``, ``analytic_dpsi``, ``analytic_deps``, ``ren2000_dpsi``,
         ``ren2000_deps`` (the 18.6-year term only, else ``None``),
         ``iau2000a_dpsi``, ``iau2000a_deps``), arcsec; ``precession``: ″/yr.
+
+    Examples
+    --------
+    >>> terms_table((0.0, 5.0), axis="momentum")
+    Traceback (most recent call last):
+    ...
+    ValueError: expected a span of at least 18.613 years to fit these terms, got 5.000
     """
     H = check_dynamical_ellipticity(dynamical_ellipticity)
     key = _axis(axis)

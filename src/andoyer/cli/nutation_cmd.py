@@ -86,10 +86,21 @@ def _plot_format(path: str) -> str:
     return fmt
 
 
+def _check_directory(path: str | None, option: str) -> None:
+    from pathlib import Path
+
+    if path not in (None, "-") and not Path(path).parent.exists():
+        msg = f"expected an existing directory for {option}, got {str(Path(path).parent)!r}"
+        raise CliError(msg)
+
+
 def run(args: argparse.Namespace) -> int:
     """Compute the nutation and write it (and the terms, and the picture)."""
     from andoyer import nutation
 
+    # Check both destinations first: a bad one must leave nothing written.
+    _check_directory(args.output, "--output")
+    _check_directory(args.plot, "--plot")
     H = nutation.check_dynamical_ellipticity(args.dynamical_ellipticity)
     t0, t1 = args.span
     t = _times(t0, t1, args.step)
