@@ -51,17 +51,19 @@ constant and a linear drift fitted together with the periodic terms). Terms
 slower than the span cannot be told from the mean pole.
 
 **Axes (Oppolzer terms).** With ``ω⊥ = k × k̇`` the rotation vector's
-equatorial part, ``L = Cω₃ k + Ā ω⊥`` and ``ω = ω₃ k + ω⊥``, so to first
-order in ``1/ω``
+equatorial part, ``L = Cω₃ k + Ā ω⊥`` and ``ω = ω₃ k + ω⊥``; with
+``a = (1−H)/ω`` and iterating once,
 
 .. math::
-   \mathbf k = \mathbf m - \frac{1-H}{\omega}\,\mathbf m\times\dot{\mathbf m}, \qquad
+   \mathbf k = \mathbf m - a\,\mathbf m\times\dot{\mathbf m} - a^2\,\ddot{\mathbf m}_\perp, \qquad
    \hat{\boldsymbol\omega} = \mathbf m + \frac{H}{\omega}\,\mathbf m\times\dot{\mathbf m}
 
-(inertial ``ṁ``): a term ``Δψ = A sin θ``, ``Δε = B cos θ`` of the
-momentum axis becomes ``A − (1−H)B θ̇/(ω sin ε)`` and
-``B − (1−H)A sin ε θ̇/ω`` for the figure axis (about 7 mas at 13.66 days);
-the rotation axis differs from the momentum axis by ``H`` times less. The
+(inertial ``ṁ``; the ``a²`` term is ``(σ/ω)²`` of a term of frequency ``σ``,
+0.5 mas at 13.66 days; the rotation axis's is ``H`` times smaller and left
+out). A term ``Δψ = A sin θ``, ``Δε = B cos θ`` of the momentum axis becomes
+``A(1 + a²θ̇²) − aB θ̇/sin ε`` and ``B(1 + a²θ̇²) − aA sin ε θ̇`` for the figure
+axis (about 7 mas at 13.66 days); the rotation axis differs from the momentum
+axis by ``H`` times less. The
 constant part of ``m × ṁ`` (the precession, 8.7 mas in obliquity) belongs to
 the mean pole, not to the nutation.
 
@@ -254,13 +256,23 @@ class NutationSeries:
         return tuple(float(part[k]) for part in parts)  # type: ignore[return-value]
 
 
+def _axis_coefficients(axis: str, H: float) -> tuple[float, float]:
+    """``(c, d)`` of ``axis = m + c m × ṁ + d m̈⊥`` (time in Julian years; see the module docstring)."""
+    a = (1 - H) / (EARTH_ROTATION * JULIAN_YEAR)
+    return {"momentum": (0.0, 0.0), "figure": (-a, -a * a), "rotation": (H / (1 - H) * a, 0.0)}[axis]
+
+
 def _oppolzer(psi_s, psi_c, eps_c, eps_s, rate, axis, H, eps):  # type: ignore[no-untyped-def]
-    """Map momentum-axis amplitudes to ``axis`` (``a = m + c m × ṁ``; ``rate`` = ``θ̇`` in rad/yr)."""
-    omega = EARTH_ROTATION * JULIAN_YEAR
-    c = {"momentum": 0.0, "figure": -(1 - H) / omega, "rotation": H / omega}[axis]
+    """Map momentum-axis amplitudes to ``axis`` (``rate`` = ``θ̇`` in rad/yr).
+
+    In the tangent plane ``(x, y) = (Δψ sin ε, Δε)``, ``m × ṁ = (−ẏ, ẋ)`` and
+    ``m̈⊥ = (ẍ, ÿ) = −θ̇² (x, y)`` for one term.
+    """
+    c, d = _axis_coefficients(axis, H)
     se = np.sin(eps)
-    x_s, x_c = se * psi_s + c * rate * eps_c, se * psi_c - c * rate * eps_s
-    y_c, y_s = eps_c + c * se * rate * psi_s, eps_s - c * se * rate * psi_c
+    grow = 1 - d * rate**2
+    x_s, x_c = grow * se * psi_s + c * rate * eps_c, grow * se * psi_c - c * rate * eps_s
+    y_c, y_s = grow * eps_c + c * se * rate * psi_s, grow * eps_s - c * se * rate * psi_c
     return x_s / se, x_c / se, y_c, y_s
 
 
@@ -474,10 +486,14 @@ def _integrate(t0: float, t1: float, H: float, p: float, start: tuple[float, flo
 
 
 def _axis_vectors(run: _Integration, axis: str, H: float) -> Array:
-    omega = EARTH_ROTATION * JULIAN_YEAR
-    c = {"momentum": 0.0, "figure": -(1 - H) / omega, "rotation": H / omega}[axis]
-    a = run.m + c * np.cross(run.m, run.mdot)
-    return a / np.linalg.norm(a, axis=-1, keepdims=True)
+    c, d = _axis_coefficients(axis, H)
+    vectors = run.m + c * np.cross(run.m, run.mdot)
+    if d:
+        # m̈ by central differences of the torque's ṁ on the quarter-day grid (its own error is
+        # (hσ)²/6 ≈ 1 % of a term that is itself 0.5 mas at 13.66 days).
+        mdd = np.gradient(run.mdot, run.t, axis=0)
+        vectors += d * (mdd - run.m * np.sum(run.m * mdd, axis=-1, keepdims=True))
+    return vectors / np.linalg.norm(vectors, axis=-1, keepdims=True)
 
 
 def nutation(
