@@ -541,11 +541,18 @@ def nutation(
     if method != "numeric":
         msg = f"expected method 'numeric' or 'analytic', got {method!r}"
         raise ValueError(msg)
-    run, series = _numeric_run(float(times.min()), float(times.max()), H, float(obliquity))
-    dpsi, deps = _residuals(run, key, H, series)
+    t0, t1 = float(times.min()), float(times.max())
+    grid, dpsi, deps = _window_residuals(t0, max(t1, t0 + minimum_span() * 1.001), H, float(obliquity), key)
     from scipy.interpolate import CubicSpline
 
-    return CubicSpline(run.t, dpsi)(times), CubicSpline(run.t, deps)(times)
+    return CubicSpline(grid, dpsi)(times), CubicSpline(grid, deps)(times)
+
+
+@functools.lru_cache(maxsize=4)
+def _window_residuals(t0: float, end: float, H: float, eps: float, axis: str) -> tuple[Array, Array, Array]:
+    """The grid and ``Δψ, Δε`` of ``axis`` on it for one integration window (cached with the run)."""
+    run, series = _window_run(t0, end, H, eps)
+    return (run.t, *_residuals(run, axis, H, series))
 
 
 def _numeric_run(t0: float, t1: float, H: float, eps: float) -> tuple[_Integration, NutationSeries]:
