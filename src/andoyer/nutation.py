@@ -703,7 +703,8 @@ IAU2000A = {
 }
 #: Rigid-Earth 18.6-year amplitudes of the figure axis, REN-2000 (Souchay, Loysel, Kinoshita &
 #: Folgueira 1999, A&AS 135, 111, Table 5.2; H = 0.0032737548, which MHB2000 rescaled by
-#: 1.0000122 to H = 0.0032737949: 0.2 mas here), arcsec.
+#: 1.0000122 to H = 0.0032737949: 0.2 mas here), arcsec. The digits are those quoted in issue 15;
+#: the paper's tables are images online and were not re-read when this was written.
 REN2000_NODE = (-17.2806, 9.2282)
 #: Woolard's (1953) rigid-Earth series (rotation axis; Astron. Pap. Amer. Eph. 15, part 1, as in
 #: the Explanatory Supplement 1961), in-phase ``(Δψ sin, Δε cos)``, arcsec. His ``H`` and lunar
