@@ -5,7 +5,7 @@ Model: the spin-averaged torque of the Moon and the Sun (lunar theory of
 ``ṁ = (3H/ω)(S m) × m + p ẑ × m`` in the frame of date, over 18.63 years (the shortest span
 the nutation fits accept), from the same initial state.
 
-* andoyer: :func:`andoyer.nutation._window_run` — ``S`` tabulated once on the half-step grid
+* andoyer: :func:`andoyer.nutation.numeric._window_run` — ``S`` tabulated once on the half-step grid
   (vectorised lunar theory), then RK4 at a quarter day in plain Python floats;
 * peer: :func:`scipy.integrate.solve_ivp` (DOP853, rtol 1e-11, atol 1e-14), evaluating the lunar
   theory at every right-hand-side call, as a general integrator must;
@@ -29,6 +29,7 @@ import numpy as np  # noqa: E402
 from scipy.integrate import solve_ivp  # noqa: E402
 
 from andoyer import nutation  # noqa: E402
+from andoyer.nutation.numeric import _gradient_matrices, _window_run  # noqa: E402
 
 
 def main() -> None:
@@ -39,12 +40,12 @@ def main() -> None:
     series = nutation.nutation_series(H, "momentum", 0.5 * end, eps)
     series_cpu = time.process_time() - start
     start = time.process_time()
-    run, _ = nutation._window_run(0.0, end, H, eps)
+    run, _ = _window_run(0.0, end, H, eps)
     ours_cpu = time.process_time() - start
     p = series.precession * nutation.ARCSEC
 
     def rate(t: float, m: np.ndarray) -> np.ndarray:
-        S = nutation._gradient_matrices(np.array([t]), H)[0]
+        S = _gradient_matrices(np.array([t]), H)[0]
         return np.cross(S @ m, m) + p * np.cross([0.0, 0.0, 1.0], m)
 
     start = time.process_time()

@@ -13,6 +13,8 @@ from scipy.spatial.transform import Rotation
 
 from andoyer import RigidBody, nutation
 from andoyer.cli import main
+from andoyer.nutation.fit import _large, _resolved
+from andoyer.nutation.numeric import _gradient_matrices, _integrate
 from andoyer.perturbations import GravityGradient
 from andoyer.perturbations.lunar_theory import (
     delaunay_arguments,
@@ -116,7 +118,7 @@ def test_spin_averaged_rate_is_the_gravity_gradient_torque(seed):
     G = nutation.EARTH_ROTATION  # C = 1
     tau_body = torque_model.torque(years * JULIAN_YEAR, q, G * np.array([0.0, 0.0, 1.0]))
     expected = rotation.apply(tau_body) / G * JULIAN_YEAR  # rad per year
-    S = nutation._gradient_matrices(np.array([years]), H)[0]
+    S = _gradient_matrices(np.array([years]), H)[0]
     assert np.allclose(np.cross(S @ m, m), expected, rtol=1e-10, atol=1e-14)
 
 
@@ -172,8 +174,8 @@ def test_iau2000a_table_matches_erfa_nut00a_fit():
     t = np.arange(0.0, 18.7, 1.5 / 365.25)
     dpsi, deps = erfa.nut00a(J2000, t * 365.25)
     series = nutation.nutation_series(H, "figure", 9.35)
-    regressors = nutation._resolved(
-        nutation._large(series), 18.7, 9.35, first=np.array(list(nutation.PRINCIPAL_TERMS.values()), float)
+    regressors = _resolved(
+        _large(series), 18.7, 9.35, first=np.array(list(nutation.PRINCIPAL_TERMS.values()), float)
     )  # fmt: skip
     fitted = nutation.fit_terms(t, dpsi / ARCSEC, deps / ARCSEC, regressors)
     for k, name in enumerate(nutation.PRINCIPAL_TERMS):
@@ -390,7 +392,7 @@ def test_splitting_rigid_body_confirms_spin_averaged_model_and_oppolzer_terms():
     figure = Rotation.from_quat(run.quaternion).apply([0.0, 0.0, 1.0])
     m = run.m_reference / np.linalg.norm(run.m_reference, axis=-1, keepdims=True)
     mas = ARCSEC * 1e-3
-    averaged = nutation._integrate(0.0, 30 * day / JULIAN_YEAR, H, 0.0, (0.0, eps))
+    averaged = _integrate(0.0, 30 * day / JULIAN_YEAR, H, 0.0, (0.0, eps))
     assert np.max(np.abs(CubicSpline(averaged.t * JULIAN_YEAR, averaged.m)(t) - m)) < 0.01 * mas
     a = (1 - H) / w
     mdot = np.gradient(m, t, axis=0)

@@ -97,11 +97,12 @@ def _check_directory(path: str | None, option: str) -> None:
 def run(args: argparse.Namespace) -> int:
     """Compute the nutation and write it (and the terms, and the picture)."""
     from andoyer import nutation
+    from andoyer.precession import check_dynamical_ellipticity
 
     # Check both destinations first: a bad one must leave nothing written.
     _check_directory(args.output, "--output")
     _check_directory(args.plot, "--plot")
-    H = nutation.check_dynamical_ellipticity(args.dynamical_ellipticity)
+    H = check_dynamical_ellipticity(args.dynamical_ellipticity)
     t0, t1 = args.span
     t = _times(t0, t1, args.step)
     fmt_plot = None if args.plot is None else _plot_format(args.plot)
