@@ -43,6 +43,10 @@ COMMANDS: dict[str, tuple[str, str]] = {
         "andoyer.cli.cassini_cmd",
         "Cassini states (equilibria of Colombo's top) of the Moon, Mercury or any body",
     ),
+    "nutation": (
+        "andoyer.cli.nutation_cmd",
+        "rigid-Earth luni-solar nutation (dpsi, deps) of the figure, momentum or rotation axis",
+    ),
     "obliquity": (
         "andoyer.cli.obliquity_cmd",
         "obliquity, general and climatic precession of the Earth or Mars over 10^3-10^7 years",

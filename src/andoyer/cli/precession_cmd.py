@@ -12,6 +12,7 @@ EXAMPLES = """examples:
   andoyer precession earth
   andoyer precession mars --integrate 2 --format json
   andoyer precession earth --integrate 1 --step 8.227 --output earth.json --format json
+  andoyer precession earth --dynamical-ellipticity 0.0032737949
 Rates are arcseconds per Julian year of regression of the angular momentum's node on the
 planet's ecliptic: from the averaged (secular) model, and with --integrate YEARS from a full
 splitting integration of the Sun's (and Moon's) gravity-gradient torque (see andoyer.precession).
@@ -51,6 +52,12 @@ def register(commands: argparse._SubParsersAction) -> None:
         help="splitting step (default: andoyer.precession.default_step)",
     )
     parser.add_argument("--order", type=int, choices=(2, 4, 6), default=2, help="splitting order")
+    parser.add_argument(
+        "--dynamical-ellipticity",
+        type=float,
+        metavar="H",
+        help="H = (C - (A+B)/2)/C instead of the named body's (0 < H < 1/2)",
+    )
     parser.add_argument("--format", choices=("text", "json"), default="text")
     parser.add_argument("--output", metavar="FILE", help="write here instead of standard output")
     parser.set_defaults(run=run)
@@ -81,7 +88,13 @@ def run(args: argparse.Namespace) -> int:
         msg = "expected --step only with --integrate YEARS, got --step alone"
         raise CliError(msg)
     step = None if args.step is None else args.step * DAY
-    rates = precession_rates(args.body, integrate=args.integrate, step=step, order=args.order)
+    rates = precession_rates(
+        args.body,
+        integrate=args.integrate,
+        step=step,
+        order=args.order,
+        dynamical_ellipticity=args.dynamical_ellipticity,
+    )
     fields = rates.as_dict()
     text = json.dumps(fields, indent=2) + "\n" if args.format == "json" else render_text(fields)
     with atomic_output(args.output) as stream:

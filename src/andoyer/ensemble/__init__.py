@@ -7,8 +7,9 @@ history (:class:`SpinAxisPropagator`, with :class:`SpinParameterSampler`), or an
 ``(State (n,), times (T,), **parameters) -> State (n, T)``, and writes an
 :class:`xarray.Dataset` with dims ``sample`` and ``time`` to Zarr (chunk by chunk, with a
 checksum per chunk in a ledger, so an interrupted or damaged run resumes where it stopped
-and recomputes what does not match) or to NetCDF (assembled atomically at the end). Work runs on a ``distributed.LocalCluster`` by default, or on any Dask
-scheduler given by address. See ``docs/ensembles.md``.
+and recomputes what does not match) or to NetCDF (assembled atomically at the end). Work
+runs on a ``distributed.LocalCluster`` by default, or on any Dask scheduler given by address.
+See ``docs/ensembles.md``.
 
 Requires the ``ensemble`` extra (dask[distributed], xarray, zarr, google-crc32c).
 

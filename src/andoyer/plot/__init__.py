@@ -12,7 +12,8 @@ of Colombo's top, whose separatrix is exact).
 * :func:`polhode`, :func:`herpolhode`, :func:`poinsot` — Poinsot's construction for a state;
 * :func:`precession` — precession, obliquity and nutation series of a propagation;
 * :func:`cassini_portrait`, :func:`cassini_geometry` — Colombo's top and its Cassini states.
-* :func:`obliquity_history` — obliquity and climatic precession of spin-axis histories.
+* :func:`obliquity_history` — obliquity and climatic precession of spin-axis histories;
+* :func:`nutation_plot` — the nutation in longitude and obliquity.
 
 Examples
 --------
@@ -25,6 +26,7 @@ Examples
 from andoyer.plot.cassini import CassiniPortrait, cassini_geometry, cassini_portrait, cassini_portrait_data
 from andoyer.plot.contours import default_energies, energy_contour, separatrix_contour
 from andoyer.plot.lara import LARA_LEVELS, LaraPortrait, lara_portrait, lara_portrait_data
+from andoyer.plot.nutation import nutation_plot
 from andoyer.plot.phase import PhasePortrait, phase_portrait, phase_portrait_data
 from andoyer.plot.poinsot import (
     Herpolhode,
@@ -59,6 +61,7 @@ __all__ = [
     "lara_portrait_data",
     "momentum_sphere",
     "momentum_sphere_data",
+    "nutation_plot",
     "obliquity_history",
     "phase_portrait",
     "phase_portrait_data",

@@ -1,0 +1,141 @@
+"""``andoyer nutation``: the rigid-Earth luni-solar nutation of the figure (or another) axis."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+
+from andoyer.cli.output import CliError, atomic_output, format_rows
+
+EXAMPLES = """examples:
+  andoyer nutation earth --span 0 20 --step 0.01 --format csv --output nutation.csv
+  andoyer nutation earth --span 0 18.7 --step 0.1 --terms
+  andoyer nutation earth --span -10 10 --step 0.05 --axis momentum --format json --plot nut.png
+Times are Julian years TT from J2000; dpsi and deps are the nutations in longitude and in
+obliquity (arcsec) of the chosen axis, referred to the mean ecliptic and equinox of date, from an
+integration of the Moon's and the Sun's torque on the oblate Earth (andoyer.nutation).
+--terms fits the principal terms over the span, which must cover one period of the slowest
+(the 18.6-year node, 18.613 years), and lists them beside IAU 2000A (non-rigid).
+JSON keys: t, dpsi, deps (and with --terms: terms, precession_arcsec_per_year).
+"""
+
+_MAX_POINTS = 2_000_000
+
+
+def _finite(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not math.isfinite(value):
+        msg = f"expected a finite number, got {text!r}"
+        raise argparse.ArgumentTypeError(msg)
+    return value
+
+
+def register(commands: argparse._SubParsersAction) -> None:
+    """Add the sub-command to the parser."""
+    from andoyer.nutation import AXES, H_MHB2000
+
+    parser = commands.add_parser(
+        "nutation",
+        epilog=EXAMPLES,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    parser.add_argument("body", type=str.lower, choices=("earth",))
+    parser.add_argument("--span", nargs=2, type=_finite, metavar=("T0", "T1"), required=True)
+    parser.add_argument("--step", type=_finite, metavar="DT", required=True, help="years")
+    parser.add_argument(
+        "--dynamical-ellipticity",
+        type=_finite,
+        metavar="H",
+        default=H_MHB2000,
+        help=f"H = (C - (A+B)/2)/C (default {H_MHB2000}, MHB2000)",
+    )
+    parser.add_argument("--axis", choices=AXES, default="figure")
+    parser.add_argument("--terms", action="store_true", help="print the fitted principal terms")
+    parser.add_argument("--format", choices=("json", "csv", "table"), default="table")
+    parser.add_argument("--output", metavar="PATH", help="write here instead of standard output")
+    parser.add_argument("--plot", metavar="PATH", help="also draw dpsi and deps (PNG, SVG or PDF)")
+    parser.set_defaults(run=run)
+
+
+def _times(t0: float, t1: float, step: float):  # type: ignore[no-untyped-def]
+    import numpy as np
+
+    if not step > 0:
+        msg = f"expected --step DT > 0, got {step!r}"
+        raise CliError(msg)
+    if t1 < t0:
+        msg = f"expected --span T0 T1 with T1 >= T0, got {t0!r} {t1!r}"
+        raise CliError(msg)
+    count = math.floor((t1 - t0) / step * (1 + 1e-12)) + 1
+    if count > _MAX_POINTS:
+        msg = f"expected at most {_MAX_POINTS} output times, got {count} (raise --step)"
+        raise CliError(msg)
+    return t0 + step * np.arange(count)
+
+
+def _plot_format(path: str) -> str:
+    fmt = path.rsplit(".", 1)[-1].lower() if "." in path else ""
+    if fmt not in ("png", "svg", "pdf"):
+        msg = f"expected a --plot file ending in .png, .svg or .pdf, got {path!r}"
+        raise CliError(msg)
+    return fmt
+
+
+def _check_directory(path: str | None, option: str) -> None:
+    from pathlib import Path
+
+    if path not in (None, "-") and not Path(path).parent.exists():
+        msg = f"expected an existing directory for {option}, got {str(Path(path).parent)!r}"
+        raise CliError(msg)
+
+
+def run(args: argparse.Namespace) -> int:
+    """Compute the nutation and write it (and the terms, and the picture)."""
+    from andoyer import nutation
+    from andoyer.precession import check_dynamical_ellipticity
+
+    # Check both destinations first: a bad one must leave nothing written.
+    _check_directory(args.output, "--output")
+    _check_directory(args.plot, "--plot")
+    H = check_dynamical_ellipticity(args.dynamical_ellipticity)
+    t0, t1 = args.span
+    t = _times(t0, t1, args.step)
+    fmt_plot = None if args.plot is None else _plot_format(args.plot)
+    table = nutation.terms_table((t0, t1), H, args.axis) if args.terms else None
+    dpsi, deps = nutation.nutation(t, H, args.axis)
+    if args.format == "json":
+        fields = {"t": t.tolist(), "dpsi": dpsi.tolist(), "deps": deps.tolist()}
+        if table is not None:
+            fields["terms"] = table["terms"]
+            fields["precession_arcsec_per_year"] = table["precession"]
+        text = json.dumps(fields) + "\n"
+    elif table is not None:
+        header = list(table["terms"][0])
+        rows = [
+            [" ".join(map(str, row[key])) if isinstance(row[key], list) else row[key] for key in header]
+            for row in table["terms"]
+        ]
+        text = format_rows(header, rows, args.format)
+        if args.format == "table":
+            text += f"luni-solar precession (integrated): {table['precession']:.4f} arcsec/yr\n"
+    else:
+        rows = [[float(a), float(b), float(c)] for a, b, c in zip(t, dpsi, deps, strict=True)]
+        text = format_rows(["t", "dpsi", "deps"], rows, args.format)
+    if args.plot is not None:
+        from andoyer.plot.nutation import nutation_plot
+
+        figure = nutation_plot(t, dpsi, deps, f"rigid-Earth nutation, {args.axis} axis, H = {H}")
+        with atomic_output(args.plot) as stream:
+            stream.flush()
+            binary = getattr(stream, "buffer", None)
+            if binary is None:
+                msg = "expected a binary standard output for --plot -, got a text-only stream"
+                raise CliError(msg)
+            figure.savefig(binary, format=fmt_plot, dpi=120)
+    with atomic_output(args.output) as stream:
+        stream.write(text)
+    return 0
