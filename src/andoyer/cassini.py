@@ -599,18 +599,20 @@ BODIES: dict[str, CassiniBody] = {
     "moon": CassiniBody(
         name="moon",
         # GRAIL gravity field GL0660B (Konopliv et al. 2013, JGR Planets 118, 1415), unnormalised,
-        # R = 1738 km. UNVERIFIED digits (review, 2026): no source reachable from the project prints
-        # them; a J2 change of 1e-7 moves state 2 by 0.001° (docs/cassini.md), far inside the tests'
-        # 0.03°.
+        # R = 1738 km. The digits are UNVERIFIED (review, 2026: no reachable source prints them), but
+        # they agree to 0.11% and 0.12% with the solid Moon's J2 = 2.0307e-4, C22 = 2.2367e-5 implied
+        # at R = 1738 km by the LLR/GRAIL values below; a J2 change of 1e-7 moves state 2 by 0.001°.
         j2=2.0330e-4,
         c22=2.2394e-5,
-        # C/MR² = I/MR² + 2 J2/3 (I = (A + B + C)/3) with the solid Moon's mean moment
-        # I/MR² = 0.392728 ± 0.000012 at R = 1738 km (Williams et al. 2014, JGR Planets 119, 1546,
-        # §5, as a public repository quoting that section reports it; 0.393112 is the same moment
-        # at R = 1737.151 km, not C/MR²). The whole Moon's I/MR² = 0.3931 ± 0.0002 (Konopliv et
-        # al. 1998, Science 281, 1476) would give 0.3932 and move state 2 by 0.002°. (The earlier
-        # 0.3929, said to be quoted in issue 15, is not in that issue.)
-        moment_of_inertia=0.392728 + 2 * 2.0330e-4 / 3,
+        # Williams et al. (2014, JGR Planets 119, 1546), as SHTOOLS lists them
+        # (pyshtools/constants/Moon.py): the solid Moon's mean moment I/MR² = 0.393112 ± 0.000012 at
+        # the mean radius 1737.151 km, β = (C − A)/B = 631.0213e-6, γ = (B − A)/C = 227.7317e-6. With
+        # B/C = (1 + γ)/(1 + β), A/C = B/C − γ: C/MR² = 3 (I/MR²)/(1 + A/C + B/C), rescaled by
+        # (1737.151/1738)² to the gravity field's R = 1738 km: 0.392863. (0.393112 itself is a mean
+        # moment at another radius, not C/MR²; the earlier 0.3929, said to come from issue 15, is not
+        # in that issue. The whole Moon's I/MR² = 0.3931 ± 0.0002, Konopliv et al. 1998, would move
+        # state 2 by 0.002°.)
+        moment_of_inertia=0.392863,
         # Mean orbit (Astronomical Almanac; Simon et al. 1994): sidereal month 27.321661 d,
         # e = 0.0549, i = 5.145° to the ecliptic (5.145396°, Meeus, Astronomical Algorithms;
         # the Moon's Laplace plane to < 0.01°), node period 6798.38 d (18.613 yr, retrograde).
