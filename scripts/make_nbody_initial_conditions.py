@@ -12,9 +12,13 @@ Sources (typed in from the published tables; no network is needed to run this sc
   the largest for Jupiter and Saturn, whose great inequality the fit absorbs).
   No JPL state vector at J2000 was reachable from this project's machines, so the states
   below are the Keplerian conversion of these elements, stated as such in the data file.
-* Gravitational parameters: JPL DE440 (Park, Folkner, Williams & Boggs 2021, AJ 161, 105,
-  Table 8), km³/s²; the planets' values are those of their systems (planet + moons), the
-  Earth's that of the Earth–Moon system.
+* Gravitational parameters: the constants of the JPL DE440 ephemeris (Park, Folkner, Williams &
+  Boggs 2021, AJ 161, 105), km³/s², as its header lists them (GM1…GM9, GMS, GMB in NAIF's
+  ``de440_tech-comments.txt``, https://naif.jpl.nasa.gov/pub/naif/generic_kernels/spk/planets/);
+  checked digit by digit against that list (2026 review); the table of the paper that prints
+  them was not checked. The planets' values are those of their systems (planet + moons), the
+  Earth's that of the Earth–Moon system (GMB = GM3 + GMM = 403503.235625; the earlier value
+  403503.235502 of this script was DE430's, corrected in the review).
 * Astronomical unit: 149 597 870.700 km (IAU 2012 Resolution B2); the Julian year of
   365.25 days of 86 400 s.
 
@@ -36,12 +40,12 @@ OUT = ROOT / "src" / "andoyer" / "orbits" / "data" / "planets_j2000.json"
 AU_KM = 149597870.700  # IAU 2012 Resolution B2
 YEAR_S = 365.25 * 86400.0  # Julian year
 
-# DE440 GM values (km^3/s^2), Park et al. (2021) Table 8.
+# DE440 GM values (km^3/s^2): the DE440 header constants (de440_tech-comments.txt), see above.
 GM_KM3_S2 = {
     "sun": 132712440041.279419,
     "mercury": 22031.868551,
     "venus": 324858.592000,
-    "earth": 403503.235502,  # Earth-Moon system
+    "earth": 403503.235625,  # Earth-Moon system (DE440 GMB)
     "mars": 42828.375816,
     "jupiter": 126712764.100000,
     "saturn": 37940584.841800,
@@ -51,6 +55,8 @@ GM_KM3_S2 = {
 
 # Standish, JPL "Keplerian Elements for Approximate Positions of the Major Planets", Table 1:
 # a (au), e, I (deg), L (deg), varpi (deg), Omega (deg) at J2000, J2000 ecliptic and equinox.
+# All 48 numbers checked digit by digit (2026 review) against two independent public copies of
+# ssd.jpl.nasa.gov/txt/p_elem_t1.txt (one quoting that URL); they agree with the JPL file.
 STANDISH_TABLE_1 = {
     "mercury": (0.38709927, 0.20563593, 7.00497902, 252.25032350, 77.45779628, 48.33076593),
     "venus": (0.72333566, 0.00677672, 3.39467605, 181.97909950, 131.60246718, 76.67984255),
@@ -90,7 +96,10 @@ def main() -> None:
                 "JPL Solar System Dynamics, Table 1 (1800 AD-2050 AD, fit to DE405); the states are the "
                 "two-body (Keplerian) conversion of these best-fit elements, not DE405 osculating states."
             ),
-            "gm": "JPL DE440: Park, Folkner, Williams & Boggs (2021), AJ 161, 105, Table 8 (system values).",
+            "gm": (
+                "JPL DE440 header constants GM1-GM9, GMS, GMB (system values; NAIF de440_tech-comments.txt); "
+                "Park, Folkner, Williams & Boggs (2021), AJ 161, 105."
+            ),
             "au_km": "149597870.700 km, IAU 2012 Resolution B2.",
         },
         "units": {"length": "au", "time": "Julian year (365.25 d)", "gm": "au^3/yr^2", "angles": "deg"},

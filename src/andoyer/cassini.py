@@ -189,7 +189,7 @@ class CassiniBody:
     --------
     >>> moon = get("moon")
     >>> round(moon.precession_constant / ARCSEC, 1), round(moon.resonance_constant / ARCSEC, 1)
-    (14796.4, 1452.2)
+    (14797.8, 1452.4)
     """
 
     name: str
@@ -599,14 +599,23 @@ BODIES: dict[str, CassiniBody] = {
     "moon": CassiniBody(
         name="moon",
         # GRAIL gravity field GL0660B (Konopliv et al. 2013, JGR Planets 118, 1415), unnormalised,
-        # R = 1738 km; C/MR² = 0.3929 as quoted in issue 15 (Williams et al. 2014, JGR Planets 119, 1546,
-        # give 0.393112; the state moves by 0.001°).
+        # R = 1738 km. The digits are UNVERIFIED (review, 2026: no reachable source prints them), but
+        # they agree to 0.11% and 0.12% with the solid Moon's J2 = 2.0307e-4, C22 = 2.2367e-5 implied
+        # at R = 1738 km by the LLR/GRAIL values below; a J2 change of 1e-7 moves state 2 by 0.001°.
         j2=2.0330e-4,
         c22=2.2394e-5,
-        moment_of_inertia=0.3929,
+        # Williams et al. (2014, JGR Planets 119, 1546), as SHTOOLS lists them
+        # (pyshtools/constants/Moon.py): the solid Moon's mean moment I/MR² = 0.393112 ± 0.000012 at
+        # the mean radius 1737.151 km, β = (C − A)/B = 631.0213e-6, γ = (B − A)/C = 227.7317e-6. With
+        # B/C = (1 + γ)/(1 + β), A/C = B/C − γ: C/MR² = 3 (I/MR²)/(1 + A/C + B/C), rescaled by
+        # (1737.151/1738)² to the gravity field's R = 1738 km: 0.392863. (0.393112 itself is a mean
+        # moment at another radius, not C/MR²; the earlier 0.3929, said to come from issue 15, is not
+        # in that issue. The whole Moon's I/MR² = 0.3931 ± 0.0002, Konopliv et al. 1998, would move
+        # state 2 by 0.002°.)
+        moment_of_inertia=0.392863,
         # Mean orbit (Astronomical Almanac; Simon et al. 1994): sidereal month 27.321661 d,
-        # e = 0.0549, i = 5.145° to the ecliptic (the Moon's Laplace plane to < 0.01°),
-        # node period 6798.38 d (18.613 yr, retrograde).
+        # e = 0.0549, i = 5.145° to the ecliptic (5.145396°, Meeus, Astronomical Algorithms;
+        # the Moon's Laplace plane to < 0.01°), node period 6798.38 d (18.613 yr, retrograde).
         mean_motion=_TURN_PER_DAY / 27.321661,
         eccentricity=0.0549,
         inclination=5.145 * _DEG,
@@ -614,17 +623,24 @@ BODIES: dict[str, CassiniBody] = {
         resonance=1.0,
         # Earth/Moon mass ratio 81.30056 (IAU 2009 system of constants).
         mass_ratio=1 / 81.30056,
-        source="Konopliv et al. 2013 (J2, C22); Williams et al. 2014 (C/MR2); mean lunar orbit",
+        source=(
+            "Konopliv et al. 2013 (J2, C22; unverified digits); Williams et al. 2014 (I/MR2 + 2 J2/3); "
+            "mean lunar orbit"
+        ),
     ),
     "mercury": CassiniBody(
         name="mercury",
         # MESSENGER gravity (Smith et al. 2012, Science 336, 214): J2 = 5.03e-5, C22 = 0.81e-5,
-        # R = 2440 km; C/MR² = 0.346 ± 0.014 (Margot et al. 2012, JGR 117, E00L09).
+        # R = 2440 km (UNVERIFIED digits: the paper is confirmed, these numbers are not);
+        # C/MR² = 0.346 ± 0.014 (Margot et al. 2012, JGR 117, E00L09; confirmed by its abstract).
         j2=5.03e-5,
         c22=0.81e-5,
         moment_of_inertia=0.346,
         # Orbital period 87.969 d, e = 0.20563 (J2000 mean elements, Standish); inclination 8.6° to
-        # the Laplace plane and node period ≈ 325 kyr (Yseboodt & Margot 2006, Icarus 181, 327).
+        # the Laplace plane and node period ≈ 325 kyr (attributed to Yseboodt & Margot 2006, Icarus
+        # 181, 327; UNVERIFIED: not found in a reachable source. The obliquity scales as |g| sin i;
+        # the project's secular theory with La2004 frequencies suggests 7.95° and 328 kyr, i.e.
+        # 1.889′ instead of 2.059′: see docs/cassini.md).
         mean_motion=_TURN_PER_DAY / 87.969257,
         eccentricity=0.20563,
         inclination=8.6 * _DEG,

@@ -54,8 +54,9 @@ def mercury_perihelion(gr, years=1000.0, every=10.0):
 
 
 def test_nbody_gr_precession_of_mercury():
-    # Einstein: Δϖ = 6πGM/(c² a (1 − e²)) per orbit = 42.98″/cy for Mercury (Clemence 1947: 43.03 ± 0.03″/cy
-    # with the then values). Computed here from the shipped a, e, GM and c, independently of REBOUNDx.
+    # Einstein: Δϖ = 6πGM/(c² a (1 − e²)) per orbit = 42.98″/cy for Mercury (Nobili & Will 1986, Nature
+    # 320, 39; Clemence 1947's often-cited 43.03″/cy used unconventional values of the au and c).
+    # Computed here from the shipped a, e, GM and c, independently of REBOUNDx.
     data = planet_data()
     a, e = data.a[0], data.e[0]
     period = 2 * np.pi * np.sqrt(a**3 / (data.sun_gm + data.gm[0]))

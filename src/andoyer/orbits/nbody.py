@@ -33,7 +33,11 @@ own error there). Cost: 84 CPU seconds per Myr integrated (one direction, one co
 wall time per Myr on the shared machine; a cached span is read in milliseconds.
 The initial states are Standish's best-fit elements, not
 DE405's osculating states: an error in the starting orbit of the order of the planets'
-short-period perturbations. The Moon's action on the Earth–Moon barycentre's orbit, the
+short-period perturbations. For Saturn it is large enough to matter: its mean motion comes out
+0.7% fast, the Jupiter–Saturn great inequality's period 431 yr instead of about 880–900 yr, and
+the secular modes ``g6 = 26.05``, ``s6 = −26.93`` ″/yr against La2004's 28.245 and −26.348
+(``scripts/check_outer_frequencies.py``; the other giant-planet modes within 0.05″/yr).
+The Moon's action on the Earth–Moon barycentre's orbit, the
 Sun's J2 and oblateness, asteroids and tides are left out.
 
 **Cache.** Results are stored under ``$ANDOYER_CACHE_DIR``, else ``$XDG_CACHE_HOME/andoyer``,

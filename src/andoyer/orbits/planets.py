@@ -2,7 +2,8 @@
 
 The data file ``data/planets_j2000.json`` is written by
 ``scripts/make_nbody_initial_conditions.py`` from Standish's JPL Table 1 elements (a fit to
-DE405, J2000 ecliptic and equinox) and the DE440 gravitational parameters (Park et al. 2021);
+DE405, J2000 ecliptic and equinox) and the DE440 gravitational parameters (the DE440 header
+constants; Park et al. 2021);
 see that script for the sources. Units: au, Julian years, au³/yr². ``"earth"`` is the
 Earth–Moon barycentre.
 """

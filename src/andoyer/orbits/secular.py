@@ -26,10 +26,11 @@ matches Laskar's labels for the Solar System (``g_8 < g_7 < g_5 < g_1 < g_2 < g_
 Frequencies (``frequencies=``):
 
 * ``"linear"`` (default): the eigenvalues above (the classical theory; Brouwer & van Woerkom 1950
-  without their Jupiter–Saturn great-inequality correction). Computed here:
+  without their Jupiter–Saturn great-inequality correction; the BvW values the tests use are
+  unverified, see ``docs/orbits.md``). Computed here:
   ``g = 5.46, 7.35, 17.33, 18.01, 3.73, 22.51, 2.71, 0.634`` and
   ``s = −5.20, −6.57, −18.75, −17.64, 0, −25.99, −2.91, −0.679`` ″/yr; La2004's
-  (Laskar et al. 2004, A&A 428, 261, Table 3) are
+  (Laskar et al. 2004, A&A 428, 261, Table 3; some digits unverified, see :data:`LA2004_G`) are
   ``g = 5.59, 7.452, 17.368, 17.916, 4.257452, 28.2450, 3.087951, 0.673021`` and
   ``s = −5.59, −7.05, −18.850, −17.755, 0, −26.347855, −2.9925259, −0.691736``: the
   linear theory misses ``g_5`` by 0.53″/yr and ``g_6`` by 5.7″/yr (the 5:2 near-resonance
@@ -66,8 +67,15 @@ __all__ = ["LA2004_G", "LA2004_S", "SecularOrbit", "secular_matrices"]
 ARCSEC = np.pi / (180.0 * 3600.0)
 
 #: La2004 fundamental frequencies g1…g8 (″/yr), Laskar et al. (2004), A&A 428, 261, Table 3.
+#: Confirmed (review, 2026): the table number (A&A's table list for the paper), g2 and g5 (as
+#: Laskar et al. 2011, A&A 532, A89, Table 6 reprints them) and g3, g4. Unverified (typed in
+#: from memory, no reachable source prints them): g1, g6, g7, g8; an N-body frequency analysis
+#: (scripts/check_outer_frequencies.py) corroborates g5, g7, g8 within 0.05″/yr and brackets g6
+#: (26.05–29.35). See docs/orbits.md.
 LA2004_G = np.array([5.59, 7.452, 17.368, 17.916, 4.257452, 28.2450, 3.087951, 0.673021])
 #: La2004 fundamental frequencies s1…s8 (″/yr), same table (s5 = 0: the invariable plane).
+#: Confirmed: s3, s4. Unverified: s1, s2, s6, s7, s8 (s7, s8 corroborated within 0.005″/yr,
+#: s6 bracketed by −26.93 and −26.32, by the same N-body check).
 LA2004_S = np.array([-5.59, -7.05, -18.850, -17.755, 0.0, -26.347855, -2.9925259, -0.691736])
 
 # Rank of each label's frequency among the eight (the Solar System's order, see above).
