@@ -6,20 +6,24 @@ strongest lines (″/yr, amplitude) of each planet's ``z = e exp(iϖ)`` and ``ζ
 frequency-modified Fourier transform (Šidlichovský & Nesvorný 1996; ``rebound.frequency_analysis``).
 
 Two starts: ``--start helio`` uses the shipped heliocentric states (what ``andoyer.orbits.nbody``
-integrates); ``--start jacobi`` reads Standish's elements as Jacobi elements instead. Measured in the
-2026 review (32768 samples every 250 yr, 8.2 Myr, about 40 s):
+integrates: DE421's states at J2000 since 2026-11-25, before that the Keplerian conversion of
+Standish's mean elements); ``--start jacobi`` reads Standish's elements as Jacobi elements instead.
+Measured (32768 samples every 250 yr, 8.2 Myr, about 40 s):
 
 ============  ==========  ==========  ==========  ==========  ==========  ===========  ===========
 start         g5          g6          g7          g8          s6          s7           s8
 ============  ==========  ==========  ==========  ==========  ==========  ===========  ===========
-helio         4.2588      26.0545     3.1314      0.6755      −26.9336    −2.9964      −0.6919
+helio, DE421  4.2454      28.2583     3.0880      0.6727      −26.3384    −2.9941      −0.6924
+helio, old    4.2588      26.0545     3.1314      0.6755      −26.9336    −2.9964      −0.6919
 jacobi        4.2614      29.3539     3.1002      0.6729      −26.3245    −2.9962      −0.6923
 La2004        4.257452    28.2450     3.087951    0.673021    −26.347855  −2.9925259   −0.691736
 ============  ==========  ==========  ==========  ==========  ==========  ===========  ===========
 
 ``g6`` and ``s6`` hang on the distance of Jupiter and Saturn from their 5:2 near-resonance: from the
-heliocentric start Saturn's mean motion is 44320″/yr (Standish's rate: 44010″/yr) and the great
-inequality's period 431 yr; from the Jacobi start 43983″/yr and 988 yr.
+old heliocentric start (Standish's mean elements taken as osculating) Saturn's mean motion was
+44320″/yr (Standish's rate: 44010″/yr) and the great inequality's period 431 yr; from the Jacobi
+start 43983″/yr and 988 yr. From DE421's states every frequency is within 0.02″/yr of La2004 (the
+rest is the inner planets lumped into the Sun here and La2004's own model).
 
 Run from the repository root: ``python3 scripts/check_outer_frequencies.py [--start jacobi]``.
 """

@@ -1,8 +1,18 @@
 """Write ``src/andoyer/orbits/data/planets_j2000.json``: the planets at J2000 for ``andoyer.orbits``.
 
-Sources (typed in from the published tables; no network is needed to run this script):
+Sources:
 
-* Elements: E. M. Standish, "Keplerian Elements for Approximate Positions of the Major
+* States: the JPL DE421 ephemeris (Folkner, Williams & Boggs 2009, IPN Progress Report 42-178),
+  read with ``jplephem`` from the ``de421`` package of PyPI (``pip install jplephem de421``;
+  needed only to run this script): barycentric positions and velocities of the Sun, the
+  Earth-Moon barycentre and the other planets' system barycentres at JD 2451545.0 TDB, ICRF
+  (equatorial) axes. The script turns them into heliocentric states and rotates them by
+  ``ε₀ = 84381.406″`` about ``x`` into the J2000 ecliptic frame (the ICRF-to-J2000 frame bias,
+  ~23 mas, is neglected). These are osculating states of the ephemeris, so the integration
+  starts on the real orbits (mean motions and the Jupiter-Saturn great inequality included).
+
+* Mean elements, shipped beside the states for the secular theory (which needs mean, not
+  osculating, elements): E. M. Standish, "Keplerian Elements for Approximate Positions of the Major
   Planets", JPL Solar System Dynamics, Table 1 (``p_elem_t1.txt``, valid 1800 AD–2050 AD,
   a fit to the JPL DE405 ephemeris), mean ecliptic and equinox of J2000: ``a`` (au), ``e``,
   ``I``, ``L``, ``ϖ``, ``Ω`` (degrees) at J2000 (TDB = JD 2451545.0). The Earth row is the
@@ -10,8 +20,9 @@ Sources (typed in from the published tables; no network is needed to run this sc
   the states derived from them differ from DE405's osculating states by the planets'
   short-period perturbations (Standish's stated position errors over 1800–2050: 15–600″,
   the largest for Jupiter and Saturn, whose great inequality the fit absorbs).
-  No JPL state vector at J2000 was reachable from this project's machines, so the states
-  below are the Keplerian conversion of these elements, stated as such in the data file.
+  Until 2026-11-25 the N-body source started from the Keplerian conversion of these mean
+  elements, which made Saturn's mean motion 0.7 % fast and the great inequality's period
+  431 yr instead of ~900 yr (measured in the review of that date).
 * Gravitational parameters: the constants of the JPL DE440 ephemeris (Park, Folkner, Williams &
   Boggs 2021, AJ 161, 105), km³/s², as its header lists them (GM1…GM9, GMS, GMB in NAIF's
   ``de440_tech-comments.txt``, https://naif.jpl.nasa.gov/pub/naif/generic_kernels/spk/planets/);
@@ -31,8 +42,6 @@ import json
 from pathlib import Path
 
 import numpy as np
-
-from andoyer.orbits.elements import elements_to_state
 
 ROOT = Path(__file__).resolve().parents[1]
 OUT = ROOT / "src" / "andoyer" / "orbits" / "data" / "planets_j2000.json"
@@ -69,14 +78,43 @@ STANDISH_TABLE_1 = {
 }
 
 
+JD_J2000 = 2451545.0
+EPSILON_0 = np.radians(84381.406 / 3600.0)  # IAU 2006 obliquity at J2000
+DE421_NAMES = {"earth": "earthmoon"}
+
+
+def de421_heliocentric_states() -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """Heliocentric (au, au/yr) states at J2000 in the J2000 ecliptic frame, from DE421."""
+    import de421  # the ephemeris data (PyPI package), only for this script
+    from jplephem.ephem import Ephemeris
+
+    ephemeris = Ephemeris(de421)
+    c, s = np.cos(EPSILON_0), np.sin(EPSILON_0)
+    to_ecliptic = np.array([[1.0, 0.0, 0.0], [0.0, c, s], [0.0, -s, c]])
+
+    def state(name: str) -> tuple[np.ndarray, np.ndarray]:
+        r_km, v_km_day = ephemeris.position_and_velocity(name, JD_J2000)
+        return r_km[:, 0], v_km_day[:, 0]
+
+    r_sun, v_sun = state("sun")
+    out = {}
+    for name in STANDISH_TABLE_1:
+        r, v = state(DE421_NAMES.get(name, name))
+        out[name] = (
+            to_ecliptic @ (r - r_sun) / AU_KM,
+            to_ecliptic @ (v - v_sun) * 365.25 / AU_KM,
+        )
+    return out
+
+
 def main() -> None:
-    """Convert the elements to heliocentric states and write the JSON file."""
+    """Write the DE421 states, the mean elements and the GM values to the JSON file."""
     to_au3_yr2 = YEAR_S**2 / AU_KM**3
     gm = {name: value * to_au3_yr2 for name, value in GM_KM3_S2.items()}
+    states = de421_heliocentric_states()
     planets = {}
     for name, (a, e, inc, L, varpi, node) in STANDISH_TABLE_1.items():
-        mu = gm["sun"] + gm[name]
-        r, v = elements_to_state(mu, a, e, *np.radians([inc, node, varpi, L]))
+        r, v = states[name]
         planets[name] = {
             "gm": gm[name],
             "elements": {"a": a, "e": e, "inclination_deg": inc, "node_deg": node, "varpi_deg": varpi,
@@ -91,10 +129,15 @@ def main() -> None:
             "equinox frame, and GM (au^3/yr^2). Written by scripts/make_nbody_initial_conditions.py."
         ),
         "sources": {
+            "states": (
+                "JPL DE421 (Folkner, Williams & Boggs 2009) via jplephem and the de421 package: "
+                "barycentric states at JD 2451545.0 TDB made heliocentric and rotated by eps0 = "
+                "84381.406 arcsec from ICRF to the J2000 ecliptic (frame bias neglected)."
+            ),
             "elements": (
                 "E. M. Standish, Keplerian Elements for Approximate Positions of the Major Planets, "
-                "JPL Solar System Dynamics, Table 1 (1800 AD-2050 AD, fit to DE405); the states are the "
-                "two-body (Keplerian) conversion of these best-fit elements, not DE405 osculating states."
+                "JPL Solar System Dynamics, Table 1 (1800 AD-2050 AD, fit to DE405): mean elements, "
+                "for the secular theory; not the source of the states."
             ),
             "gm": (
                 "JPL DE440 header constants GM1-GM9, GMS, GMB (system values; NAIF de440_tech-comments.txt); "

@@ -2,8 +2,8 @@ r"""The Sun and the eight planets integrated with REBOUND: osculating orbits, ca
 
 **Model.** Nine point masses (the Earth–Moon barycentre as one body; each planet with the
 GM of its system, JPL DE440), started at J2000 from the shipped heliocentric states
-(:mod:`andoyer.orbits.planets`: Standish's JPL Table 1 elements, a fit to DE405, turned
-into states; see ``scripts/make_nbody_initial_conditions.py``), integrated forwards and
+(:mod:`andoyer.orbits.planets`: the JPL DE421 ephemeris' states at JD 2451545.0 TDB; see
+``scripts/make_nbody_initial_conditions.py``), integrated forwards and
 backwards from J2000 with WHFast (Wisdom–Holman in Jacobi coordinates, symplectic corrector
 of order 17) at a step of about 4 days (``step_days``; Mercury's 88-day orbit in 22 steps;
 the step is adjusted so that a whole number of steps fills each sampling interval).
@@ -31,12 +31,12 @@ over ±100 kyr and 0.106° over ±200 kyr (VCW 2011 state a few tenths of a degr
 own error there). Cost: 84 CPU seconds per Myr integrated (one direction, one core,
 ``benchmarks/bench_orbits.py``; GR adds 2–3 %; REBOUND's IAS15 is 31× slower), 250–290 s of
 wall time per Myr on the shared machine; a cached span is read in milliseconds.
-The initial states are Standish's best-fit elements, not
-DE405's osculating states: an error in the starting orbit of the order of the planets'
-short-period perturbations. For Saturn it is large enough to matter: its mean motion comes out
-0.7% fast, the Jupiter–Saturn great inequality's period 431 yr instead of about 880–900 yr, and
-the secular modes ``g6 = 26.05``, ``s6 = −26.93`` ″/yr against La2004's 28.245 and −26.348
-(``scripts/check_outer_frequencies.py``; the other giant-planet modes within 0.05″/yr).
+The initial states are DE421's osculating states, so the mean motions and the
+Jupiter–Saturn great inequality start right: the giant planets' secular frequencies from
+them are within 0.02″/yr of La2004's (``g5`` 4.2454, ``g6`` 28.2583, ``g7`` 3.0880,
+``g8`` 0.6727, ``s6`` −26.3384, ``s7`` −2.9941, ``s8`` −0.6924 ″/yr over 8.2 Myr,
+``scripts/check_outer_frequencies.py``; from Standish's mean elements taken as osculating,
+as before 2026-11-25, Saturn ran 0.7% fast and ``g6`` came out 26.05″/yr).
 The Moon's action on the Earth–Moon barycentre's orbit, the
 Sun's J2 and oblateness, asteroids and tides are left out.
 

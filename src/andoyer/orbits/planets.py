@@ -1,9 +1,9 @@
 """The planets at J2000 shipped with the package: names, GM, elements, heliocentric states.
 
 The data file ``data/planets_j2000.json`` is written by
-``scripts/make_nbody_initial_conditions.py`` from Standish's JPL Table 1 elements (a fit to
-DE405, J2000 ecliptic and equinox) and the DE440 gravitational parameters (the DE440 header
-constants; Park et al. 2021);
+``scripts/make_nbody_initial_conditions.py`` from the JPL DE421 ephemeris (the states),
+Standish's JPL Table 1 elements (mean elements, a fit to DE405, J2000 ecliptic and equinox) and
+the DE440 gravitational parameters (the DE440 header constants; Park et al. 2021);
 see that script for the sources. Units: au, Julian years, au³/yr². ``"earth"`` is the
 Earth–Moon barycentre.
 """
