@@ -89,7 +89,7 @@ from andoyer.nutation.model import (
     PRINCIPAL_TERMS,
 )
 from andoyer.nutation.numeric import nutation
-from andoyer.nutation.tables import IAU2000A, REN2000_NODE, WOOLARD1953, numeric_terms, terms_table
+from andoyer.nutation.tables import IAU2000A, REN2000, REN2000_NODE, WOOLARD1953, numeric_terms, terms_table
 
 __all__ = [
     "ARCSEC",
@@ -99,6 +99,7 @@ __all__ = [
     "IAU2000A",
     "MEAN_OBLIQUITY",
     "PRINCIPAL_TERMS",
+    "REN2000",
     "REN2000_NODE",
     "WOOLARD1953",
     "NutationSeries",

@@ -13,7 +13,7 @@ from andoyer.perturbations.lunar_theory import delaunay_arguments, delaunay_rate
 from andoyer.perturbations.solar_system import DAY, JULIAN_YEAR
 from andoyer.precession import check_dynamical_ellipticity
 
-__all__ = ["IAU2000A", "REN2000_NODE", "WOOLARD1953", "numeric_terms", "terms_table"]
+__all__ = ["IAU2000A", "REN2000", "REN2000_NODE", "WOOLARD1953", "numeric_terms", "terms_table"]
 
 Array = NDArray[np.float64]
 
@@ -27,11 +27,28 @@ IAU2000A = {
     "l′": (0.1475877, 0.0073871),
     "l": (0.0711159, -0.0006750),
 }
-#: Rigid-Earth 18.6-year amplitudes of the figure axis, REN-2000 (Souchay, Loysel, Kinoshita &
-#: Folgueira 1999, A&AS 135, 111, Table 5.2; H = 0.0032737548, which MHB2000 rescaled by
-#: 1.0000122 to H = 0.0032737949: 0.2 mas here), arcsec. The digits are those quoted in issue 15;
-#: the paper's tables are images online and were not re-read when this was written.
-REN2000_NODE = (-17.2806, 9.2282)
+#: REN-2000 (Souchay, Loysel, Kinoshita & Folgueira 1999, A&AS 135, 111), rigid Earth, **figure axis**:
+#: in-phase amplitudes ``(Δψ sin, Δε cos)`` of the principal terms, arcsec. REN-2000 was computed
+#: with ``H_D = 0.0032737548`` (Souchay & Kinoshita 1996, A&A 312, 1017, abstract), 1.22·10⁻⁵ below
+#: MHB2000's ``H``: 0.2 mas on the 18.6-year ``Δψ``. The digits are not the paper's tables (images
+#: online) but L. Petrov's machine-readable REN-2000, ``vtd/include/ren2000_heo.i`` in
+#: github.com/nasa/sgdass (generated 2003-12-27, "REN2000 rigid Earth nutation"), which gives each
+#: term as prograde (P) and retrograde (R) circular amplitudes ``PMC`` in picoradians with
+#: ``ε₀ = 0.4090928041``: ``Δε = (P + R)``, ``Δψ sin ε₀ = (R − P)``. Summed over the entries of
+#: the same argument: Ω P 39031706.5, R 5706463.6; 2Ω P −420537.3, R −17428.3; 2(F−D+Ω)
+#: P 2573129.6, R 109529.8; 2(F+Ω) P 443685.4, R 16505.1; l′ P −121342.5, R 120688.5;
+#: l P −67701.7, R 62986.9. Figure rather than momentum axis: the l term's ``Δε`` (−0.97 mas) is
+#: an Oppolzer term, absent from the momentum axis.
+REN2000 = {
+    "Ω": (-17.2805921, 9.2279100),
+    "2Ω": (0.2090296, -0.0903369),
+    "2(F−D+Ω)": (-1.2774840, 0.5533382),
+    "2(F+Ω)": (-0.2215116, 0.0949211),
+    "l′": (0.1255036, -0.0001349),
+    "l": (0.0677677, -0.0009725),
+}
+#: The 18.6-year term of :data:`REN2000` (kept for the earlier name).
+REN2000_NODE = REN2000["Ω"]
 #: Woolard's (1953) rigid-Earth series (rotation axis; Astron. Pap. Amer. Eph. 15, part 1, as in
 #: the Explanatory Supplement 1961), in-phase ``(Δψ sin, Δε cos)``, arcsec. His ``H`` and lunar
 #: mass (1/81.45) are older: compare ratios to the 18.6-year term.
@@ -131,7 +148,7 @@ def terms_table(
         ``terms``: one dict per principal term (``argument``, ``multipliers``,
         ``period_days``, fitted ``dpsi_sin``, ``dpsi_cos``, ``deps_cos``,
         ``deps_sin``, ``analytic_dpsi``, ``analytic_deps``, ``ren2000_dpsi``,
-        ``ren2000_deps`` (the 18.6-year term only, else ``None``),
+        ``ren2000_deps`` (figure axis only, else ``None``),
         ``iau2000a_dpsi``, ``iau2000a_deps``), arcsec; ``precession``: ″/yr.
 
     Examples
@@ -150,7 +167,7 @@ def terms_table(
     rows = []
     for (name, n), amp in zip(PRINCIPAL_TERMS.items(), fitted, strict=True):
         analytic = series.term(n)
-        ren = REN2000_NODE if name == "Ω" and key == "figure" else (None, None)
+        ren = REN2000[name] if key == "figure" else (None, None)
         rows.append(
             {
                 "argument": name,
