@@ -46,10 +46,13 @@ def wrap_2pi(a: float) -> float:
 def atan2_2pi(y: float, x: float) -> float:
     """``atan2(y, x)`` in ``[0, 2π)`` from ``atan`` (as :func:`andoyer._fastmath.atan2_2pi`)."""
     ax, ay = abs(x), abs(y)
-    big = max(ax, ay)
-    a = math.atan(min(ax, ay) / (1.0 if big == 0 else big))
+    # atan(min/max), with max = 0 read as 1: the same operations, fewer calls.
     if ay > ax:
-        a = HALF_PI - a
+        a = HALF_PI - math.atan(ax / ay)
+    elif ax == 0:
+        a = 0.0
+    else:
+        a = math.atan(ay / ax)
     if x < 0:
         a = PI - a
     if y < 0:
@@ -77,36 +80,34 @@ def hub_to_euler_one(
 ) -> tuple[float, float, float, float, float, float, bool]:
     """Euler angles and momenta of one state, and whether it sits on ``sin θ = 0``.
 
-    :func:`andoyer.charts.euler.hub_to_euler` with :func:`andoyer._quaternion.to_zxz`
-    at ``tol = 2ε``; ``hypot`` is ``sqrt(x² + y²)`` (no overflow for unit quaternions).
+    :func:`andoyer.charts.euler.hub_to_euler` with the singular tolerance ``2ε`` of
+    :func:`andoyer._quaternion.to_zxz`. Off the singularity ``φ`` and ``ψ``, the sum and
+    difference of the half angles ``atan2(z, w)`` and ``atan2(y, x)``, come from one
+    ``atan2`` each of the products ``(zx ± wy, wx ∓ zy) = ρ_xy ρ_zw (sin, cos)(φ or ψ)``
+    (as well conditioned: the error is ``2ε`` absolute), and ``cos ψ``, ``sin ψ`` from the
+    same pair divided by ``ρ_xy ρ_zw``, not from ``cos``/``sin`` of the rounded ``ψ``.
     """
     tol = 2.0 * EPS
     rho_xy = math.sqrt(x * x + y * y)
     rho_zw = math.sqrt(z * z + w * w)
     at_zero = rho_xy <= tol
     at_pi = rho_zw <= tol and not at_zero
-    half_sum = math.atan2(z, w)
-    half_diff = math.atan2(y, x)
-    if at_zero:
-        theta = 0.0
-        half_diff = half_sum
-    elif at_pi:
-        theta = PI
-        half_sum = half_diff
-    else:
-        theta = 2.0 * math.atan2(rho_xy, rho_zw)
-    singular = at_zero or at_pi
-    phi = wrap_2pi(half_sum + half_diff)
-    psi = 0.0 if singular else wrap_2pi(half_sum - half_diff)
+    if at_zero or at_pi:
+        # Only φ ± ψ is defined: ψ = 0 and φ carries twice the half angle that is.
+        half = math.atan2(z, w) if at_zero else math.atan2(y, x)
+        theta = 0.0 if at_zero else PI
+        return wrap_2pi(half + half), theta, 0.0, m3 if at_zero else -m3, m1, m3, True
+    theta = 2.0 * atan2_2pi(rho_xy, rho_zw)
+    phi = atan2_2pi(z * x + w * y, w * x - z * y)
+    s_psi, c_psi = z * x - w * y, w * x + z * y
+    psi = atan2_2pi(s_psi, c_psi)
+    r = rho_xy * rho_zw
     # Third reference component of m (quaternion.rotate): m + w t + u × t with t = 2 u × m.
     t0 = 2.0 * (y * m3 - z * m2)
     t1 = 2.0 * (z * m1 - x * m3)
     t2 = 2.0 * (x * m2 - y * m1)
     Phi = (m3 + w * t2) + (x * t1 - y * t0)
-    if singular:
-        Phi = m3 if theta == 0 else -m3
-    cp, sp = math.cos(psi), math.sin(psi)
-    return phi, theta, psi, Phi, m1 * cp - m2 * sp, m3, singular
+    return phi, theta, psi, Phi, (m1 * c_psi - m2 * s_psi) / r, m3, False
 
 
 def euler_to_hub_one(
