@@ -325,9 +325,9 @@ class State(FreeBodyCharts):
         """Index or slice the leading axes, like a numpy array."""
         q = self._q[..., 0][index]  # validates the index against the leading shape
         del q
-        return State(
-            self._q[(*np.index_exp[index], slice(None))], self._m[(*np.index_exp[index], slice(None))]
-        )
+        # The quaternions are unit already: normalising them again could move their last bit.
+        items = (*np.index_exp[index], slice(None))
+        return State._of_unit(np.array(self._q[items]), np.array(self._m[items]))
 
     def reshape(self, *shape: int) -> State:
         """The same states with a new leading shape.
