@@ -126,3 +126,121 @@ def test_single_state_fields_are_numpy_scalars():
     assert s.shape == ()
     for chart in (s.as_euler(), s.as_andoyer()):
         assert all(isinstance(v, np.float64) and v.shape == () for v in chart)
+
+
+def scipy_reference(q: np.ndarray, m: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Euler and Andoyer variables from scipy's ZXZ angles and Gurfil's momenta (eqs. 25-32, 83-88)."""
+    rot = Rotation.from_quat(q)
+    phi, theta, psi = np.mod(rot.as_euler("ZXZ"), 2 * np.pi).T
+    M = rot.apply(m)  # reference components
+    m1, m2, m3 = m.T
+    Theta = m1 * np.cos(psi) - m2 * np.sin(psi)  # eq. 41
+    G = np.linalg.norm(m, axis=-1)
+    g = np.arctan2(-G * Theta * np.sin(theta), m3 * M[:, 2] - G * G * np.cos(theta))
+    l, h = np.arctan2(m1, m2), np.arctan2(M[:, 0], -M[:, 1])
+    wrap = lambda a: np.mod(a, 2 * np.pi)  # noqa: E731
+    return (
+        np.array([phi, theta, psi, M[:, 2], Theta, m3]),
+        np.array([wrap(l), wrap(g), wrap(h), m3, G, M[:, 2]]),
+    )
+
+
+@pytest.mark.parametrize("path", ["single", "compiled", "numpy"])
+def test_conversions_agree_with_scipy_and_gurfil(rng, monkeypatch, path):
+    q, m = random_states(rng, 400 if path == "single" else 20_000)
+    rot = Rotation.from_quat(q)
+    # away from the charts' singularities, where angles are well conditioned
+    keep = (np.sin(rot.as_euler("ZXZ")[:, 1]) > 1e-3) & (np.abs(m[:, 2]) < 0.999 * np.linalg.norm(m, axis=-1))
+    keep &= np.abs(rot.apply(m)[:, 2]) < 0.999 * np.linalg.norm(m, axis=-1)
+    q, m = q[keep], m[keep]
+    G = np.linalg.norm(m, axis=-1)
+    if path == "numpy":
+        monkeypatch.setattr(_compiled, "NUMBA", False)
+    ours = one_by_one(q, m) if path == "single" else hub_to_charts(q, m)
+    reference = scipy_reference(q, m)
+    euler, andoyer = ours
+    euler_ref, andoyer_ref = reference
+    assert angle_ulps(euler[:3], euler_ref[:3]) <= 2
+    assert momentum_ulps(euler[3:], euler_ref[3:], G) <= 2
+    assert momentum_ulps(andoyer[3:], andoyer_ref[3:], G) <= 2
+    assert angle_ulps(andoyer[[0, 2]], andoyer_ref[[0, 2]]) <= 8  # the reference rotates m first
+    # g's reference, atan2(-G Θ sin θ, L H - G² cos θ), loses digits to cancellation (measured: 19 ulp)
+    assert angle_ulps(andoyer[1], andoyer_ref[1]) <= 64
+
+
+BAD_EULER = [
+    (np.nan, 0.5, 0.2, 1.0, 0.3, 0.8),
+    (0.1, np.inf, 0.2, 1.0, 0.3, 0.8),
+    (0.1, -0.1, 0.2, 1.0, 0.3, 0.8),
+    (0.1, 4.0, 0.2, 1.0, 0.3, 0.8),
+    (0.1, 0.5, 0.2, 1.0, 0.3, -np.inf),
+    (0.0, 0.0, 0.0, 1.0, 0.0, 0.5),  # Φ ≠ Ψ at θ = 0: infinite momentum
+    (0.0, 0.5, 0.0, 1e308, 0.0, 0.0),  # the momentum overflows
+]
+BAD_ANDOYER = [
+    (np.nan, 0.2, 0.3, 0.5, 1.0, 0.5),
+    (0.1, 0.2, 0.3, 0.5, np.inf, 0.5),
+    (0.1, 0.2, 0.3, 0.0, 0.0, 0.0),
+    (0.1, 0.2, 0.3, 0.5, -1.0, 0.5),
+    (0.1, 0.2, 0.3, 1.5, 1.0, 0.5),
+    (0.1, 0.2, 0.3, 0.5, 1.0, -2.0),
+]
+
+
+@pytest.mark.parametrize(
+    ("build", "values"),
+    [(State.from_euler, v) for v in BAD_EULER] + [(State.from_andoyer, v) for v in BAD_ANDOYER],
+)
+def test_single_state_rejects_bad_input_as_arrays_do(build, values):
+    with pytest.raises(ValueError, match=r"^expected") as single:
+        build(*values)
+    with pytest.raises(ValueError, match=r"^expected") as array:
+        build(*([v] for v in values))
+    assert str(single.value) == str(array.value)
+
+
+def test_single_state_zero_momentum_has_no_andoyer_chart():
+    for m in ([0.0, 0.0, 0.0], [[0.0, 0.0, 0.0]]):
+        with pytest.raises(ValueError, match=r"expected a non-zero angular momentum, got \|m\| = 0"):
+            State.from_quaternion([0.0, 0.0, 0.0, 1.0], m).as_andoyer()
+
+
+def test_single_state_accepts_momenta_within_round_off_of_the_poles():
+    G = 3.0
+    L = G * (1 + 2 * np.finfo(float).eps)  # |L| - G within the 4ε G slack: clipped to G
+    with pytest.warns(SingularChartWarning, match="sin\\(J\\) = 0"):
+        a = State.from_andoyer(0.1, 0.2, 0.3, L, G, 1.0).as_andoyer()
+    assert a.L == G
+    assert np.array_equal(State.from_andoyer(0.1, 0.2, 0.3, L, G, 1.0).m_body, [0.0, 0.0, G])
+
+
+CONVERSIONS = {
+    "as_euler, theta = 0": (lambda s: s.as_euler(), ([0.0, 0.0, 0.3, 1.0], [0.3, 0.2, 1.0]), "psi = 0"),
+    "as_andoyer, sin J = 0": (lambda s: s.as_andoyer(), ([0.1, 0.2, 0.3, 1.0], [0.0, 0.0, 2.0]), "l = 0"),
+    "as_andoyer, sin I = 0": (lambda s: s.as_andoyer(), ([0.0, 0.0, 0.6, 0.8], [0.0, 0.0, -2.0]), "h = 0"),
+}
+
+
+@pytest.mark.parametrize("shape", [(), (1,), (3,)])
+@pytest.mark.parametrize("case", list(CONVERSIONS))
+def test_singular_warning_same_text_and_caller_every_path(case, shape):
+    convert, (q, m), what = CONVERSIONS[case]
+    q = np.broadcast_to(np.array(q) / np.linalg.norm(q), (*shape, 4))
+    state = State.from_quaternion(q, np.broadcast_to(m, (*shape, 3)))
+    count = int(np.prod(shape))
+    with pytest.warns(SingularChartWarning, match=f"^{count} state\\(s\\) on a chart singularity") as record:
+        convert(state)
+    assert all(r.filename == __file__ for r in record)
+    assert any(what in str(r.message) for r in record)
+
+
+@pytest.mark.parametrize("theta", [0.0, np.pi])
+@pytest.mark.parametrize("shape", [(), (2,)])
+def test_from_euler_singular_warning_every_path(theta, shape):
+    values = [np.full(shape, v) if shape else v for v in (0.2, theta, 0.4, np.cos(theta), 0.3, 1.0)]
+    with pytest.warns(SingularChartWarning, match="was set to 0") as record:
+        state = State.from_euler(*values)
+    assert record[0].filename == __file__
+    # X = 0 there: m = (Θ cos ψ, -Θ sin ψ, Ψ)
+    expected = [0.3 * np.cos(0.4), -0.3 * np.sin(0.4), 1.0]
+    assert np.abs(state.m_body - expected).max() <= 2 * np.spacing(1.0)
