@@ -1,7 +1,8 @@
 """Compiled loops of the Euler and Andoyer conversions over arrays of states (numba).
 
-Each loop applies one scalar kernel of :mod:`andoyer.charts._kernels` state by state,
-so an array conversion gives the same bits as the single-state fast path. The module
+Each loop (defined in :mod:`andoyer.charts._kernels`, beside the scalar kernel it
+applies state by state) is compiled here, so an array conversion gives the same bits as
+the single-state fast path. The module
 imports numba (through :mod:`andoyer._jit`); the chart modules import it only for
 arrays, and only use it when ``NUMBA`` is true, else their numpy expressions.
 """
@@ -18,54 +19,14 @@ __all__ = ["NUMBA", "andoyer_to_hub", "euler_to_hub", "hub_to_andoyer", "hub_to_
 
 Array = NDArray[np.float64]
 
-# The kernels' helpers, called by name inside them, compile inline.
-for _helper in (_kernels.wrap_2pi, _kernels.atan2_2pi, _kernels.unit_quaternion, _kernels.from_zxz):
+# The scalar kernels and their helpers, called by name inside the loops, compile inline.
+for _helper in _kernels.HELPERS:
     jitable(_helper)
 
-_hub_to_euler_one = jit(_kernels.hub_to_euler_one)
-_euler_to_hub_one = jit(_kernels.euler_to_hub_one)
-_hub_to_andoyer_one = jit(_kernels.hub_to_andoyer_one)
-_andoyer_to_hub_one = jit(_kernels.andoyer_to_hub_one)
-
-
-@jit
-def _hub_to_euler_loop(q, m, out, singular):  # pragma: no cover - compiled
-    for i in range(q.shape[0]):
-        r = _hub_to_euler_one(q[i, 0], q[i, 1], q[i, 2], q[i, 3], m[i, 0], m[i, 1], m[i, 2])
-        out[0, i], out[1, i], out[2, i], out[3, i], out[4, i], out[5, i] = r[0], r[1], r[2], r[3], r[4], r[5]
-        singular[i] = r[6]
-
-
-@jit
-def _euler_to_hub_loop(phi, theta, psi, Phi, Theta, Psi, q, m, status):  # pragma: no cover - compiled
-    for i in range(phi.shape[0]):
-        r = _euler_to_hub_one(phi[i], theta[i], psi[i], Phi[i], Theta[i], Psi[i])
-        q[i, 0], q[i, 1], q[i, 2], q[i, 3] = r[0], r[1], r[2], r[3]
-        m[i, 0], m[i, 1], m[i, 2] = r[4], r[5], r[6]
-        status[i] = r[7]
-
-
-@jit
-def _hub_to_andoyer_loop(q, m, out, on_pole_j, on_pole_i):  # pragma: no cover - compiled
-    zero = 0
-    for i in range(q.shape[0]):
-        m1, m2, m3 = m[i, 0], m[i, 1], m[i, 2]
-        if m1 * m1 + m2 * m2 + m3 * m3 <= 0:
-            zero += 1
-            continue
-        r = _hub_to_andoyer_one(q[i, 0], q[i, 1], q[i, 2], q[i, 3], m1, m2, m3)
-        out[0, i], out[1, i], out[2, i], out[3, i], out[4, i], out[5, i] = r[0], r[1], r[2], r[3], r[4], r[5]
-        on_pole_j[i] = r[6]
-        on_pole_i[i] = r[7]
-    return zero
-
-
-@jit
-def _andoyer_to_hub_loop(l, g, h, L, G, H, q, m):  # pragma: no cover - compiled
-    for i in range(l.shape[0]):
-        r = _andoyer_to_hub_one(l[i], g[i], h[i], L[i], G[i], H[i])
-        q[i, 0], q[i, 1], q[i, 2], q[i, 3] = r[0], r[1], r[2], r[3]
-        m[i, 0], m[i, 1], m[i, 2] = r[4], r[5], r[6]
+_hub_to_euler_loop = jit(_kernels.hub_to_euler_loop)
+_euler_to_hub_loop = jit(_kernels.euler_to_hub_loop)
+_hub_to_andoyer_loop = jit(_kernels.hub_to_andoyer_loop)
+_andoyer_to_hub_loop = jit(_kernels.andoyer_to_hub_loop)
 
 
 def _flat(values) -> list[Array]:

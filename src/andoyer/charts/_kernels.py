@@ -8,8 +8,11 @@ numpy's and the C library's elementary functions allow (measured: within 2 ulp).
 
 The same kernels serve two paths: called from Python they are the single-state fast
 path (no array is built, no numba is imported), and :mod:`andoyer.charts._compiled`
-compiles them with numba inside loops over arrays of states. Both therefore give
-bit-identical results for the same state.
+compiles the loops at the end of this module, which apply them over arrays of states.
+Both therefore give bit-identical results for the same state. The loops live here, not
+in ``_compiled``, because numba's on-disk cache of a function is invalidated only by
+changes to the file that defines it: a loop defined beside its kernels is recompiled
+whenever they change.
 """
 
 from __future__ import annotations
@@ -17,6 +20,8 @@ from __future__ import annotations
 import math
 
 __all__ = [
+    "HELPERS",
+    "LOOPS",
     "andoyer_to_hub_one",
     "atan2_2pi",
     "euler_to_hub_one",
@@ -46,13 +51,10 @@ def wrap_2pi(a: float) -> float:
 def atan2_2pi(y: float, x: float) -> float:
     """``atan2(y, x)`` in ``[0, 2π)`` from ``atan`` (as :func:`andoyer._fastmath.atan2_2pi`)."""
     ax, ay = abs(x), abs(y)
-    # atan(min/max), with max = 0 read as 1: the same operations, fewer calls.
+    big = max(ax, ay)
+    a = math.atan(min(ax, ay) / (1.0 if big == 0 else big))
     if ay > ax:
-        a = HALF_PI - math.atan(ax / ay)
-    elif ax == 0:
-        a = 0.0
-    else:
-        a = math.atan(ay / ax)
+        a = HALF_PI - a
     if x < 0:
         a = PI - a
     if y < 0:
@@ -208,3 +210,62 @@ def hub_to_andoyer_one(
         on_pole_j,
         on_pole_i,
     )
+
+
+# --------------------------------------------------------------------------------------
+# Loops over arrays of states, compiled by andoyer.charts._compiled (plain Python here: the
+# numpy path, not these, serves arrays where numba is missing).
+
+
+def hub_to_euler_loop(q, m, out, singular):  # pragma: no cover - run compiled
+    """Euler variables into ``out`` (6, n) and the singular mask (n,) of ``q`` (n, 4), ``m`` (n, 3)."""
+    for i in range(q.shape[0]):
+        r = hub_to_euler_one(q[i, 0], q[i, 1], q[i, 2], q[i, 3], m[i, 0], m[i, 1], m[i, 2])
+        out[0, i], out[1, i], out[2, i], out[3, i], out[4, i], out[5, i] = r[0], r[1], r[2], r[3], r[4], r[5]
+        singular[i] = r[6]
+
+
+def euler_to_hub_loop(phi, theta, psi, Phi, Theta, Psi, q, m, status):  # pragma: no cover - run compiled
+    """Unit quaternions into ``q`` (n, 4), momenta into ``m`` (n, 3), statuses (n,) of Euler arrays (n,)."""
+    for i in range(phi.shape[0]):
+        r = euler_to_hub_one(phi[i], theta[i], psi[i], Phi[i], Theta[i], Psi[i])
+        q[i, 0], q[i, 1], q[i, 2], q[i, 3] = r[0], r[1], r[2], r[3]
+        m[i, 0], m[i, 1], m[i, 2] = r[4], r[5], r[6]
+        status[i] = r[7]
+
+
+def hub_to_andoyer_loop(q, m, out, on_pole_j, on_pole_i):  # pragma: no cover - run compiled
+    """Andoyer variables into ``out`` (6, n) and the pole masks; returns the count of zero momenta."""
+    zero = 0
+    for i in range(q.shape[0]):
+        m1, m2, m3 = m[i, 0], m[i, 1], m[i, 2]
+        if m1 * m1 + m2 * m2 + m3 * m3 <= 0:
+            zero += 1
+            continue
+        r = hub_to_andoyer_one(q[i, 0], q[i, 1], q[i, 2], q[i, 3], m1, m2, m3)
+        out[0, i], out[1, i], out[2, i], out[3, i], out[4, i], out[5, i] = r[0], r[1], r[2], r[3], r[4], r[5]
+        on_pole_j[i] = r[6]
+        on_pole_i[i] = r[7]
+    return zero
+
+
+def andoyer_to_hub_loop(l, g, h, L, G, H, q, m):  # pragma: no cover - run compiled
+    """Unit quaternions into ``q`` (n, 4) and momenta into ``m`` (n, 3) of checked Andoyer arrays (n,)."""
+    for i in range(l.shape[0]):
+        r = andoyer_to_hub_one(l[i], g[i], h[i], L[i], G[i], H[i])
+        q[i, 0], q[i, 1], q[i, 2], q[i, 3] = r[0], r[1], r[2], r[3]
+        m[i, 0], m[i, 1], m[i, 2] = r[4], r[5], r[6]
+
+
+#: Every function the loops call, which the compiled module registers with numba.
+LOOPS = (hub_to_euler_loop, euler_to_hub_loop, hub_to_andoyer_loop, andoyer_to_hub_loop)
+HELPERS = (
+    wrap_2pi,
+    atan2_2pi,
+    unit_quaternion,
+    from_zxz,
+    hub_to_euler_one,
+    euler_to_hub_one,
+    hub_to_andoyer_one,
+    andoyer_to_hub_one,
+)
