@@ -10,6 +10,9 @@ of them with scipy's ``Rotation`` for the attitude and with Gurfil's momenta, co
 
 from __future__ import annotations
 
+import os
+import subprocess
+import sys
 import warnings
 
 import numpy as np
@@ -246,3 +249,29 @@ def test_from_euler_singular_warning_every_path(theta, shape):
     # X = 0 there: m = (Θ cos ψ, -Θ sin ψ, Ψ)
     expected = [0.3 * np.cos(0.4), -0.3 * np.sin(0.4), 1.0]
     assert np.abs(state.m_body - expected).max() <= 2 * np.spacing(1.0)
+
+
+def test_conversions_without_numba_match_numpy_path_in_process(rng, monkeypatch, tmp_path):
+    # ANDOYER_NUMBA=0 (as where numba is not installed), read at import in a fresh interpreter.
+    q, m = random_states(rng, 500)
+    np.save(tmp_path / "q.npy", q)
+    np.save(tmp_path / "m.npy", m)
+    script = (
+        "import sys, numpy as np\n"
+        "from andoyer import State\n"
+        "from andoyer.charts import _compiled\n"
+        "assert not _compiled.NUMBA\n"
+        f"d = {str(tmp_path)!r}\n"
+        "s = State.from_quaternion(np.load(d + '/q.npy'), np.load(d + '/m.npy'))\n"
+        "e, a = np.array(s.as_euler()), np.array(s.as_andoyer())\n"
+        "back = State.from_euler(*e), State.from_andoyer(*a)\n"
+        "np.save(d + '/out.npy', np.concatenate([e, a, *(b.quaternion.T for b in back)]))\n"
+    )
+    env = {**os.environ, "ANDOYER_NUMBA": "0"}
+    subprocess.run([sys.executable, "-c", script], check=True, env=env, timeout=120)
+    monkeypatch.setattr(_compiled, "NUMBA", False)
+    s = State.from_quaternion(q, m)
+    e, a = np.array(s.as_euler()), np.array(s.as_andoyer())
+    back = State.from_euler(*e), State.from_andoyer(*a)
+    expected = np.concatenate([e, a, *(b.quaternion.T for b in back)])
+    assert np.array_equal(np.load(tmp_path / "out.npy"), expected)
