@@ -165,7 +165,7 @@ def andoyer_to_hub(
     l, g, h = (as_finite(v, n) for n, v in zip("lgh", (l, g, h), strict=True))
     L, G, H = _momenta(L, G, H)
     l, g, h, L, G, H = broadcast(("l", l), ("g", g), ("h", h), ("L", L), ("G", G), ("H", H))
-    compiled = compiled_conversions() if unit else None
+    compiled = compiled_conversions(l.size) if unit else None
     if compiled is not None:
         q, m = compiled.andoyer_to_hub((l, g, h, L, G, H))
         return q.reshape(*l.shape, 4), m.reshape(*l.shape, 3)
@@ -247,7 +247,7 @@ def hub_to_andoyer(q: Array, m: Array, stacklevel: int = 2) -> Andoyer:
             warn_if_singular(True, _SINGULAR_I, stacklevel + 1)
         return Andoyer(*map(np.float64, r))
     shape = m.shape[:-1]
-    compiled = compiled_conversions() if q.shape[:-1] == shape else None
+    compiled = compiled_conversions(m.size // 3) if q.shape[:-1] == shape else None
     if compiled is not None:
         out, on_pole_j, on_pole_i, zero = compiled.hub_to_andoyer(q.reshape(-1, 4), m.reshape(-1, 3))
         if zero:
