@@ -51,10 +51,13 @@ def wrap_2pi(a: float) -> float:
 def atan2_2pi(y: float, x: float) -> float:
     """``atan2(y, x)`` in ``[0, 2π)`` from ``atan`` (as :func:`andoyer._fastmath.atan2_2pi`)."""
     ax, ay = abs(x), abs(y)
-    big = max(ax, ay)
-    a = math.atan(min(ax, ay) / (1.0 if big == 0 else big))
+    # atan(min/max) (max = 0 read as 1), written as branches: fewer calls from Python.
     if ay > ax:
-        a = HALF_PI - a
+        a = HALF_PI - math.atan(ax / ay)
+    elif ax == 0:
+        a = 0.0
+    else:
+        a = math.atan(ay / ax)
     if x < 0:
         a = PI - a
     if y < 0:
