@@ -17,6 +17,8 @@ import warnings
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 
 from andoyer import SingularChartWarning, State
@@ -64,51 +66,79 @@ def momentum_ulps(a: np.ndarray, b: np.ndarray, G: np.ndarray) -> float:
     return float((np.abs(np.asarray(a) - np.asarray(b)) / (G * ULP_2PI)).max())
 
 
-def hub_to_charts(q: np.ndarray, m: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Euler (6, n) and Andoyer (6, n) variables of the states, singular ones included."""
+def singular_counts(record: list[warnings.WarningMessage]) -> dict[str, int]:
+    """States per singular-chart message, summed over the warnings."""
+    counts: dict[str, int] = {}
+    for w in record:
+        count, message = str(w.message).split(" state(s) on a chart singularity: ")
+        counts[message] = counts.get(message, 0) + int(count)
+    return counts
+
+
+def hub_to_charts(q: np.ndarray, m: np.ndarray, counts: dict | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """Euler (6, n) and Andoyer (6, n) variables of the states; ``counts`` gets the singular warnings."""
     state = State.from_quaternion(q, m)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", SingularChartWarning)
-        return np.array(state.as_euler()), np.array(state.as_andoyer())
+    with warnings.catch_warnings(record=True) as record:
+        warnings.simplefilter("always", SingularChartWarning)
+        out = np.array(state.as_euler()), np.array(state.as_andoyer())
+    if counts is not None:
+        counts.update(singular_counts(record))
+    return out
 
 
-def one_by_one(q: np.ndarray, m: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", SingularChartWarning)
+def one_by_one(q: np.ndarray, m: np.ndarray, counts: dict | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """The same, one state at a time."""
+    with warnings.catch_warnings(record=True) as record:
+        warnings.simplefilter("always", SingularChartWarning)
         states = [State.from_quaternion(q[i], m[i]) for i in range(len(q))]
-        return (
+        out = (
             np.array([np.array(s.as_euler()) for s in states]).T,
             np.array([np.array(s.as_andoyer()) for s in states]).T,
         )
+    if counts is not None:
+        counts.update(singular_counts(record))
+    return out
 
 
 def assert_charts_close(a: tuple[np.ndarray, ...], b: tuple[np.ndarray, ...], G: np.ndarray) -> None:
     for x, y in zip(a, b, strict=True):
         assert angle_ulps(x[:3], y[:3]) <= 2
         assert momentum_ulps(x[3:], y[3:], G) <= 2
-        # the singular conventions (ψ = 0, l = 0, h = 0) hold for the same states
-        assert np.array_equal(x[:3] == 0, y[:3] == 0)
+    # ψ = 0 exactly where θ = 0 or π: the Euler chart's convention, on the same states
+    (euler_a, _), (euler_b, _) = a, b
+    on_a, on_b = np.isin(euler_a[1], (0.0, np.pi)), np.isin(euler_b[1], (0.0, np.pi))
+    assert np.array_equal(on_a, on_b)
+    assert np.all(euler_a[2][on_a] == 0)
+    assert np.all(euler_b[2][on_b] == 0)
 
 
 def test_single_state_equals_compiled_array_bitwise_hub_to_charts(rng):
     # The compiled loop runs the single state's kernel: the same bits.
     q, m = edge_states(rng, COMPILED_MIN + 500)
-    for one, many in zip(one_by_one(q, m), hub_to_charts(q, m), strict=True):
+    counts_one, counts_many = {}, {}
+    for one, many in zip(one_by_one(q, m, counts_one), hub_to_charts(q, m, counts_many), strict=True):
         assert np.array_equal(one, many)
+    assert counts_one == counts_many
+    assert len(counts_one) == 3  # θ = 0 or π, sin J = 0, sin I = 0 all met
 
 
 def test_single_state_agrees_with_numpy_array_path_hub_to_charts(rng, monkeypatch):
     q, m = edge_states(rng, 2000)
     monkeypatch.setattr(_compiled, "NUMBA", False)
-    assert_charts_close(one_by_one(q, m), hub_to_charts(q, m), np.linalg.norm(m, axis=-1))
+    counts_one, counts_many = {}, {}
+    charts = one_by_one(q, m, counts_one), hub_to_charts(q, m, counts_many)
+    assert_charts_close(*charts, np.linalg.norm(m, axis=-1))
+    assert counts_one == counts_many
 
 
 def test_numpy_path_agrees_with_compiled_hub_to_charts(rng, monkeypatch):
     # The numpy path is the implementation before the compiled kernels, kept as the fallback.
     q, m = edge_states(rng, 20_000)
-    compiled = hub_to_charts(q, m)
+    counts_compiled, counts_numpy = {}, {}
+    compiled = hub_to_charts(q, m, counts_compiled)
     monkeypatch.setattr(_compiled, "NUMBA", False)
-    assert_charts_close(compiled, hub_to_charts(q, m), np.linalg.norm(m, axis=-1))
+    assert_charts_close(compiled, hub_to_charts(q, m, counts_numpy), np.linalg.norm(m, axis=-1))
+    assert counts_compiled == counts_numpy
 
 
 @pytest.mark.parametrize("chart", ["euler", "andoyer"])
@@ -285,3 +315,30 @@ def test_conversions_without_numba_match_numpy_path_in_process(rng, monkeypatch,
     back = State.from_euler(*e), State.from_andoyer(*a)
     expected = np.concatenate([e, a, *(b.quaternion.T for b in back)])
     assert np.array_equal(np.load(tmp_path / "out.npy"), expected)
+
+
+@settings(max_examples=150, deadline=None)
+@given(
+    q=st.lists(st.floats(-1, 1, allow_nan=False), min_size=4, max_size=4).filter(
+        lambda v: np.linalg.norm(v) > 0.1
+    ),
+    m=st.lists(st.floats(-1e6, 1e6, allow_nan=False), min_size=3, max_size=3).filter(
+        lambda v: np.linalg.norm(v) > 1e-6
+    ),
+)
+def test_single_state_agrees_with_array_path_hypothesis(q, m):
+    # Any state, on or near the singular charts too: the scalar kernel against numpy's path.
+    q = np.asarray(q) / np.linalg.norm(q)
+    m = np.asarray(m, dtype=float)
+    G = np.linalg.norm(m)
+    counts_one, counts_many = {}, {}
+    single = one_by_one(q[None], m[None], counts_one)
+    assert_charts_close(single, hub_to_charts(q[None], m[None], counts_many), G)
+    assert counts_one == counts_many
+    euler, andoyer = single
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", SingularChartWarning)
+        for chart, build in ((euler, State.from_euler), (andoyer, State.from_andoyer)):
+            one, many = build(*map(float, chart[:, 0])), build(*chart)
+            assert angle_ulps(one.quaternion, many.quaternion[0]) <= 2
+            assert momentum_ulps(one.m_body, many.m_body[0], G) <= 2
