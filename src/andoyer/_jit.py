@@ -45,6 +45,13 @@ def jitable(function):
 
     The function itself is returned unchanged, so Python callers keep calling it as
     Python; kernels compiled with :func:`jit` that name it compile it inline.
+
+    Examples
+    --------
+    >>> def twice(x):
+    ...     return 2.0 * x
+    >>> jitable(twice) is twice
+    True
     """
     if _numba is None:  # pragma: no cover - depends on the environment
         return function
