@@ -342,3 +342,22 @@ def test_single_state_agrees_with_array_path_hypothesis(q, m):
             one, many = build(*map(float, chart[:, 0])), build(*chart)
             assert angle_ulps(one.quaternion, many.quaternion[0]) <= 2
             assert momentum_ulps(one.m_body, many.m_body[0], G) <= 2
+
+
+@pytest.mark.parametrize("path", ["compiled", "numpy"])
+def test_from_euler_singular_arrays_every_path(rng, monkeypatch, path):
+    if path == "numpy":
+        monkeypatch.setattr(_compiled, "NUMBA", False)
+    n = COMPILED_MIN + 1
+    phi, psi, Theta, Psi = rng.uniform(0, 2 * np.pi, (2, n)).tolist() + rng.normal(size=(2, n)).tolist()
+    theta = rng.uniform(0, np.pi, n)
+    theta[:7], theta[7:10] = 0.0, np.pi  # on the singularity, with Φ = Ψ cos θ
+    Phi = np.asarray(Psi) * np.cos(theta) + rng.normal(size=n) * (np.arange(n) >= 10)
+    with pytest.warns(SingularChartWarning, match=r"^10 state\(s\).*was set to 0") as record:
+        state = State.from_euler(phi, theta, psi, Phi, Theta, Psi)
+    assert record[0].filename == __file__
+    expected = np.stack([np.asarray(Theta) * np.cos(psi), -np.asarray(Theta) * np.sin(psi), Psi], -1)[:10]
+    assert np.abs(state.m_body[:10] - expected).max() <= 2 * np.spacing(np.abs(expected).max())
+    Phi[3] += 1.0  # Φ ≠ Ψ cos θ at θ = 0: infinite momentum
+    with pytest.raises(ValueError, match=r"expected Phi = Psi cos\(theta\) where sin\(theta\) = 0"):
+        State.from_euler(phi, theta, psi, Phi, Theta, Psi)
