@@ -244,8 +244,10 @@ def test_single_state_rejects_bad_input_as_arrays_do(build, values):
     assert str(single.value) == str(array.value)
 
 
-def test_single_state_zero_momentum_has_no_andoyer_chart():
-    for m in ([0.0, 0.0, 0.0], [[0.0, 0.0, 0.0]]):
+def test_zero_momentum_has_no_andoyer_chart_every_path():
+    large = np.ones((COMPILED_MIN, 3))
+    large[-1] = 0.0
+    for m in ([0.0, 0.0, 0.0], [[0.0, 0.0, 0.0]], large):
         with pytest.raises(ValueError, match=r"expected a non-zero angular momentum, got \|m\| = 0"):
             State.from_quaternion([0.0, 0.0, 0.0, 1.0], m).as_andoyer()
 
