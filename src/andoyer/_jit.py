@@ -21,7 +21,7 @@ if os.environ.get("ANDOYER_NUMBA", "1") == "0":  # pragma: no cover - depends on
 #: Whether the kernels decorated with :func:`jit` are compiled.
 NUMBA = _numba is not None
 
-__all__ = ["NUMBA", "jit"]
+__all__ = ["NUMBA", "jit", "jitable"]
 
 
 def jit(function):
@@ -39,3 +39,23 @@ def jit(function):
     if _numba is None:  # pragma: no cover - depends on the environment
         return function
     return _numba.njit(cache=True, error_model="numpy")(function)
+
+
+def jitable(function):
+    """Let compiled kernels call the plain Python ``function`` (``numba.extending.register_jitable``).
+
+    The function itself is returned unchanged, so Python callers keep calling it as
+    Python; kernels compiled with :func:`jit` that name it compile it inline.
+
+    Examples
+    --------
+    >>> def twice(x):
+    ...     return 2.0 * x
+    >>> jitable(twice) is twice
+    True
+    """
+    if _numba is None:  # pragma: no cover - depends on the environment
+        return function
+    from numba.extending import register_jitable
+
+    return register_jitable(function)

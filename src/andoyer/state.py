@@ -82,6 +82,19 @@ class State(FreeBodyCharts):
         self._q = np.broadcast_to(q / norm[..., None], (*shape, 4)).copy()
         self._m = np.broadcast_to(m, (*shape, 3)).copy()
 
+    @classmethod
+    def _of_unit(cls, q: Array, m: Array) -> State:
+        """State from unit quaternions (..., 4) and momenta (..., 3) of one leading shape, as built.
+
+        The chart converters normalise the quaternions as ``__init__`` does, so only the
+        momenta's finiteness is left to check (``__init__`` names what overflowed).
+        """
+        if not np.isfinite(m).all():
+            return cls(q, m)
+        state = object.__new__(cls)
+        state._q, state._m = q, m
+        return state
+
     # ----------------------------------------------------------- constructors
     @classmethod
     def from_quaternion(cls, quaternion: ArrayLike, m_body: ArrayLike) -> State:
@@ -167,7 +180,7 @@ class State(FreeBodyCharts):
         >>> [round(float(x), 12) for x in s.as_euler()]
         [0.1, 0.5, 0.2, 1.0, 0.3, 0.8]
         """
-        return cls(*euler_to_hub(phi, theta, psi, Phi, Theta, Psi, stacklevel=3))
+        return cls._of_unit(*euler_to_hub(phi, theta, psi, Phi, Theta, Psi, stacklevel=2, unit=True))
 
     @classmethod
     def from_andoyer(
@@ -197,7 +210,7 @@ class State(FreeBodyCharts):
         >>> s.shape
         (2,)
         """
-        return cls(*andoyer_to_hub(l, g, h, L, G, H))
+        return cls._of_unit(*andoyer_to_hub(l, g, h, L, G, H, unit=True))
 
     # -------------------------------------------------------------- converters
     def as_euler(self) -> Euler:
@@ -312,9 +325,9 @@ class State(FreeBodyCharts):
         """Index or slice the leading axes, like a numpy array."""
         q = self._q[..., 0][index]  # validates the index against the leading shape
         del q
-        return State(
-            self._q[(*np.index_exp[index], slice(None))], self._m[(*np.index_exp[index], slice(None))]
-        )
+        # The quaternions are unit already: normalising them again could move their last bit.
+        items = (*np.index_exp[index], slice(None))
+        return State._of_unit(np.array(self._q[items]), np.array(self._m[items]))
 
     def reshape(self, *shape: int) -> State:
         """The same states with a new leading shape.

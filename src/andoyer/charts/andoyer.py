@@ -31,7 +31,8 @@ from numpy.typing import ArrayLike, NDArray
 from andoyer import _quaternion as quat
 from andoyer._fastmath import atan2_2pi, chunked, wrap_2pi
 from andoyer._validation import as_finite, broadcast, broadcast_finite, check_momenta
-from andoyer.charts.euler import Euler, transverse_momentum
+from andoyer.charts import _kernels
+from andoyer.charts.euler import Euler, compiled_conversions, scalars, transverse_momentum
 from andoyer.charts.singular import warn_if_singular
 
 __all__ = [
@@ -145,16 +146,34 @@ def andoyer_to_hub(
     L: ArrayLike,
     G: ArrayLike,
     H: ArrayLike,
+    *,
+    unit: bool = False,
 ) -> tuple[Array, Array]:
-    """Attitude quaternions (..., 4) and body angular momenta (..., 3) of Andoyer states."""
+    """Attitude quaternions (..., 4) and body angular momenta (..., 3) of Andoyer states.
+
+    With ``unit=True`` the quaternions come divided by their norm as
+    :class:`~andoyer.State` stores them, through the scalar kernel for one state
+    and the compiled loop for arrays.
+    """
+    one = scalars((l, g, h, L, G, H)) if unit else None
+    if one is not None:
+        L1, G1, H1 = one[3:]
+        slack = 4 * _kernels.EPS * G1
+        if G1 > 0 and abs(L1) - G1 <= slack and abs(H1) - G1 <= slack:
+            *r, mz = _kernels.andoyer_to_hub_one(*one)
+            return np.array(r[:4]), np.array([*r[4:], mz])
     l, g, h = (as_finite(v, n) for n, v in zip("lgh", (l, g, h), strict=True))
     L, G, H = _momenta(L, G, H)
     l, g, h, L, G, H = broadcast(("l", l), ("g", g), ("h", h), ("L", L), ("G", G), ("H", H))
+    compiled = compiled_conversions(l.size) if unit else None
+    if compiled is not None:
+        q, m = compiled.andoyer_to_hub((l, g, h, L, G, H))
+        return q.reshape(*l.shape, 4), m.reshape(*l.shape, 3)
     GsI, GcI = _sin_cos(H, G)
     GsJ, GcJ = _sin_cos(L, G)
     q = quat.multiply(quat.from_zxz(h, np.arctan2(GsI, GcI), g), quat.from_xz(np.arctan2(GsJ, GcJ), l))
     m = np.stack([GsJ * np.sin(l), GsJ * np.cos(l), L], axis=-1)
-    return q, m
+    return (quat.normalise(q) if unit else q), m
 
 
 def _hub_to_andoyer_kernel(
@@ -201,6 +220,11 @@ def _hub_to_andoyer_kernel(
     )
 
 
+_ZERO_MOMENTUM = "expected a non-zero angular momentum, got |m| = 0 (the Andoyer chart needs G > 0)"
+_SINGULAR_J = "Andoyer chart at sin(J) = 0: set l = 0"
+_SINGULAR_I = "Andoyer chart at sin(I) = 0: set h = 0"
+
+
 def hub_to_andoyer(q: Array, m: Array, stacklevel: int = 2) -> Andoyer:
     """Andoyer variables of attitude quaternions (..., 4) and body momenta (..., 3).
 
@@ -209,16 +233,34 @@ def hub_to_andoyer(q: Array, m: Array, stacklevel: int = 2) -> Andoyer:
     frame) to the node ``j = (cos l, -sin l, 0)`` (body frame). Building ``i``
     and ``j`` from the same ``h`` and ``l`` that are returned keeps the
     attitude round trip exact even where ``h`` or ``l`` is ill-conditioned.
+    One state goes through the scalar kernel (fields are numpy scalars), arrays
+    through the compiled loop when numba is there, else through numpy.
     """
+    if q.shape == (4,) and m.shape == (3,):
+        m1, m2, m3 = m.tolist()
+        if m1 * m1 + m2 * m2 + m3 * m3 <= 0:
+            raise ValueError(_ZERO_MOMENTUM)
+        *r, on_pole_j, on_pole_i = _kernels.hub_to_andoyer_one(*q.tolist(), m1, m2, m3)
+        if on_pole_j:
+            warn_if_singular(True, _SINGULAR_J, stacklevel + 1)
+        if on_pole_i:
+            warn_if_singular(True, _SINGULAR_I, stacklevel + 1)
+        return Andoyer(*map(np.float64, r))
     shape = m.shape[:-1]
-    if np.any(np.sum(m * m, axis=-1) <= 0):
-        msg = "expected a non-zero angular momentum, got |m| = 0 (the Andoyer chart needs G > 0)"
-        raise ValueError(msg)
-    columns = [*q.reshape(-1, 4).T, *m.reshape(-1, 3).T]
-    l, g, h, L, G, H, on_pole_j, on_pole_i = chunked(_hub_to_andoyer_kernel, columns, 8)
-    warn_if_singular(on_pole_j != 0, "Andoyer chart at sin(J) = 0: set l = 0", stacklevel + 1)
-    warn_if_singular(on_pole_i != 0, "Andoyer chart at sin(I) = 0: set h = 0", stacklevel + 1)
-    return Andoyer(*(v.reshape(shape) for v in (l, g, h, L, G, H)))
+    compiled = compiled_conversions(m.size // 3) if q.shape[:-1] == shape else None
+    if compiled is not None:
+        out, on_pole_j, on_pole_i, zero = compiled.hub_to_andoyer(q.reshape(-1, 4), m.reshape(-1, 3))
+        if zero:
+            raise ValueError(_ZERO_MOMENTUM)
+        columns = out
+    else:
+        if np.any(np.sum(m * m, axis=-1) <= 0):
+            raise ValueError(_ZERO_MOMENTUM)
+        flat = [*q.reshape(-1, 4).T, *m.reshape(-1, 3).T]
+        *columns, on_pole_j, on_pole_i = chunked(_hub_to_andoyer_kernel, flat, 8)
+    warn_if_singular(on_pole_j != 0, _SINGULAR_J, stacklevel + 1)
+    warn_if_singular(on_pole_i != 0, _SINGULAR_I, stacklevel + 1)
+    return Andoyer(*(v.reshape(shape) for v in columns))
 
 
 def andoyer_from_euler(

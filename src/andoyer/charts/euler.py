@@ -21,18 +21,72 @@ and the body angular momentum follows as
 
 from __future__ import annotations
 
-from typing import NamedTuple
+import math
+from types import ModuleType
+from typing import Any, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer import _quaternion as quat
 from andoyer._validation import as_finite, broadcast, broadcast_finite
+from andoyer.charts import _kernels
 from andoyer.charts.singular import warn_if_singular
 
 __all__ = ["Euler", "euler_matrix", "euler_to_hub", "hub_to_euler", "transverse_momentum"]
 
 Array = NDArray[np.float64]
+
+
+_SINGULAR_TO_HUB = (
+    "Euler chart at sin(theta) = 0: the momentum component normal to Theta's is not "
+    "represented and was set to 0"
+)
+_SINGULAR_TO_EULER = (
+    "Euler chart at sin(theta) = 0: set psi = 0; the momentum component "
+    "m1 sin(psi) + m2 cos(psi) is not represented by (Phi, Theta, Psi) there"
+)
+_INFINITE_MOMENTUM = "expected Phi = Psi cos(theta) where sin(theta) = 0, got Phi != ±Psi (infinite momentum)"
+
+
+#: Arrays of at least this many states go through the compiled loops; smaller ones through
+#: numpy, as do all where numba is missing. Importing numba and loading the cached loops costs
+#: ~0.7 s once per process (a command converting a few states should not pay it), and numpy's
+#: ~150 µs a call stays small below this size. The two paths agree within 2 ulp.
+COMPILED_MIN = 2048
+
+
+def compiled_conversions(size: int) -> ModuleType | None:
+    """The numba loops of :mod:`andoyer.charts._compiled` for ``size`` states, or ``None``.
+
+    ``None`` (the numpy path) below :data:`COMPILED_MIN` states or without numba. The module
+    is imported on the first large conversion, so a single state costs no numba start-up.
+    """
+    if size < COMPILED_MIN:
+        return None
+    from andoyer.charts import _compiled
+
+    return _compiled if _compiled.NUMBA else None
+
+
+def scalars(values: tuple[Any, ...]) -> list[float] | None:
+    """``values`` as finite Python floats when each is a real scalar (a single state), else ``None``.
+
+    ``None`` sends the caller down its array path, whose validation names what is wrong.
+    """
+    out = []
+    for value in values:
+        kind = type(value)
+        if not (kind is float or kind is int or kind is np.float64):
+            return None
+        try:
+            number = float(value)
+        except OverflowError:
+            return None
+        if not math.isfinite(number):
+            return None
+        out.append(number)
+    return out
 
 
 class Euler(NamedTuple):
@@ -106,37 +160,51 @@ def euler_to_hub(
     Theta: ArrayLike,
     Psi: ArrayLike,
     stacklevel: int = 2,
+    *,
+    unit: bool = False,
 ) -> tuple[Array, Array]:
     """Attitude quaternions (..., 4) and body angular momenta (..., 3) of Euler states.
 
     At ``sin θ = 0`` the component ``X`` of the momentum is not represented by
     the chart; it is set to 0 with a :class:`SingularChartWarning`, and states
-    with ``Φ ≠ ±Ψ`` there (infinite momentum) are rejected.
+    with ``Φ ≠ ±Ψ`` there (infinite momentum) are rejected. With ``unit=True`` the
+    quaternions come divided by their norm as :class:`~andoyer.State` stores them,
+    through the scalar kernel for one state and the compiled loop for arrays.
     """
     names = ("phi", "theta", "psi", "Phi", "Theta", "Psi")
     values = (phi, theta, psi, Phi, Theta, Psi)
+    one = scalars(values) if unit else None
+    if one is not None and 0 <= one[1] <= np.pi:
+        *r, status = _kernels.euler_to_hub_one(*one)
+        if status == _kernels.INFINITE_MOMENTUM:
+            raise ValueError(_INFINITE_MOMENTUM)
+        if status == _kernels.SINGULAR:
+            warn_if_singular(True, _SINGULAR_TO_HUB, stacklevel + 1)
+        return np.array(r[:4]), np.array(r[4:])
     phi, theta, psi, Phi, Theta, Psi = broadcast_finite(names, values)
     if np.any((theta < 0) | (theta > np.pi)):
         bad = float(theta[(theta < 0) | (theta > np.pi)].flat[0])
         msg = f"expected 0 <= theta <= pi, got theta = {bad!r}"
         raise ValueError(msg)
+    compiled = compiled_conversions(phi.size) if unit else None
+    if compiled is not None:
+        q, m, status = compiled.euler_to_hub((phi, theta, psi, Phi, Theta, Psi))
+        if np.any(status == _kernels.INFINITE_MOMENTUM):
+            raise ValueError(_INFINITE_MOMENTUM)
+        warn_if_singular(status == _kernels.SINGULAR, _SINGULAR_TO_HUB, stacklevel + 1)
+        return q.reshape(*phi.shape, 4), m.reshape(*phi.shape, 3)
     numerator, st = transverse_momentum(Phi, Psi, theta)
     # sin(pi) evaluates to 1.2e-16, not 0: treat |sin θ| <= 2ε as the singularity itself.
     singular = np.abs(st) <= 2 * np.finfo(float).eps
     scale = np.maximum(np.abs(Phi) + np.abs(Psi) + np.abs(Theta), np.finfo(float).tiny)
     if np.any(singular & (np.abs(numerator) > 8 * np.finfo(float).eps * scale)):
-        msg = "expected Phi = Psi cos(theta) where sin(theta) = 0, got Phi != ±Psi (infinite momentum)"
-        raise ValueError(msg)
+        raise ValueError(_INFINITE_MOMENTUM)
     X = np.divide(numerator, st, out=np.zeros_like(numerator), where=~singular)
-    warn_if_singular(
-        singular,
-        "Euler chart at sin(theta) = 0: the momentum component normal to Theta's is not "
-        "represented and was set to 0",
-        stacklevel + 1,
-    )
+    warn_if_singular(singular, _SINGULAR_TO_HUB, stacklevel + 1)
     cp, sp = np.cos(psi), np.sin(psi)
     m = np.stack([Theta * cp + X * sp, -Theta * sp + X * cp, Psi], axis=-1)
-    return quat.from_zxz(phi, theta, psi), m
+    q = quat.from_zxz(phi, theta, psi)
+    return (quat.normalise(q) if unit else q), m
 
 
 def hub_to_euler(q: Array, m: Array, stacklevel: int = 2) -> Euler:
@@ -146,14 +214,21 @@ def hub_to_euler(q: Array, m: Array, stacklevel: int = 2) -> Euler:
     :class:`SingularChartWarning`. Attitudes within ``2ε`` of the singularity
     (``sin(θ/2)`` or ``cos(θ/2)`` below ``2ε``) are snapped onto it, and there
     ``Φ = Ψ cos θ`` exactly, so the rotation round trip stays exact to ``4ε``.
+    One state goes through the scalar kernel (fields are numpy scalars), arrays
+    through the compiled loop when numba is there, else through numpy.
     """
+    if q.shape == (4,) and m.shape == (3,):
+        *r, singular = _kernels.hub_to_euler_one(*q.tolist(), *m.tolist())
+        if singular:
+            warn_if_singular(True, _SINGULAR_TO_EULER, stacklevel + 1)
+        return Euler(*map(np.float64, r))
+    compiled = compiled_conversions(m.size // 3) if q.shape[:-1] == m.shape[:-1] else None
+    if compiled is not None:
+        out, singular = compiled.hub_to_euler(q.reshape(-1, 4), m.reshape(-1, 3))
+        warn_if_singular(singular, _SINGULAR_TO_EULER, stacklevel + 1)
+        return Euler(*(v.reshape(q.shape[:-1]) for v in out))
     phi, theta, psi, singular = quat.to_zxz(q, tol=2 * np.finfo(float).eps)
-    warn_if_singular(
-        singular,
-        "Euler chart at sin(theta) = 0: set psi = 0; the momentum component "
-        "m1 sin(psi) + m2 cos(psi) is not represented by (Phi, Theta, Psi) there",
-        stacklevel + 1,
-    )
+    warn_if_singular(singular, _SINGULAR_TO_EULER, stacklevel + 1)
     m_ref = quat.rotate(q, m)
     cp, sp = np.cos(psi), np.sin(psi)
     Theta = m[..., 0] * cp - m[..., 1] * sp
