@@ -11,7 +11,7 @@ from matplotlib.figure import Figure
 from andoyer import plot
 from andoyer.body import RigidBody
 from andoyer.cli.chart_table import add_body_arguments, body_from_args
-from andoyer.cli.output import CliError, atomic_output
+from andoyer.cli.output import CliError, add_output_argument, atomic_output
 from andoyer.free import FreeRotation
 from andoyer.state import State
 
@@ -46,9 +46,7 @@ def register(commands: argparse._SubParsersAction) -> None:
     for kind, text in helps.items():
         sub = kinds.add_parser(kind, help=text, description=text)
         add_body_arguments(sub)
-        sub.add_argument(
-            "--out", metavar="FILE", help=f"PNG or SVG file, or - for stdout (default portrait-{kind}.png)"
-        )
+        add_output_argument(sub, "--out", f"PNG or SVG file, or - for stdout (default portrait-{kind}.png)")
         sub.add_argument("--format", choices=FORMATS, help="default: from the file suffix")
         sub.add_argument("--dpi", type=float, default=150.0, help="resolution of PNG output (default 150)")
         if kind in ("phase", "sphere"):
@@ -143,12 +141,6 @@ def run(args: argparse.Namespace) -> int:
         msg = f"expected --dpi > 0, got {args.dpi!r}"
         raise CliError(msg)
     figure = _figure(args)
-    with atomic_output(path) as stream:
-        stream.flush()
-        binary = getattr(stream, "buffer", None)
-        if binary is None:
-            msg = "expected a binary standard output for --out -, got a text-only stream"
-            raise CliError(msg)
-        figure.savefig(binary, format=fmt, dpi=args.dpi)
-        binary.flush()
+    with atomic_output(path, binary=True) as stream:
+        figure.savefig(stream, format=fmt, dpi=args.dpi)
     return 0
