@@ -25,6 +25,8 @@ The state (--values) is in Andoyer variables l g h L G H; angles in radians.
 """
 FORMATS = ("png", "svg")
 DEFAULT_STATE = (0.5, 0.0, 0.0, 0.9, 1.0, 0.9)
+#: Largest side of a PNG in pixels (matplotlib's Agg renderer refuses 2^16 and more).
+MAX_PIXELS = 2**16
 
 
 def register(commands: argparse._SubParsersAction) -> None:
@@ -107,10 +109,13 @@ def _figure(args: argparse.Namespace) -> Figure:
     if kind == "phase":
         return plot.phase_portrait(body, args.G, _levels(body, args))
     if kind == "sphere":
-        view = {"elev": np.radians(args.elev_deg), "azim": np.radians(args.azim_deg)}
-        return plot.momentum_sphere(body, args.G, _levels(body, args), **view)
+        return plot.momentum_sphere(body, args.G, _levels(body, args), **_view(args))
     state = _state(args)
+    if args.duration is not None and not (np.isfinite(args.duration) and args.duration > 0):
+        msg = f"expected a finite --duration > 0, got {args.duration!r}"
+        raise CliError(msg)
     if kind == "polhode":
+        _view(args)  # checked, although plot.poinsot does not take a view yet
         return plot.poinsot(body, state, args.duration)
     if args.steps < 2:
         msg = f"expected --steps >= 2, got {args.steps}"
@@ -119,11 +124,19 @@ def _figure(args: argparse.Namespace) -> Figure:
     if duration is None:
         period = float(FreeRotation(body).periods(state).period)
         duration = 5 * period if np.isfinite(period) else 100.0
-    if not duration > 0:
-        msg = f"expected --duration > 0, got {duration!r}"
-        raise CliError(msg)
     t = np.linspace(0.0, duration, args.steps)
     return plot.precession(t, FreeRotation(body).propagate(state, t), args.axis, degrees=args.degrees)
+
+
+def _view(args: argparse.Namespace) -> dict[str, float]:
+    """The viewing angles in radians, checked: elevation within ±90°, azimuth within ±360°."""
+    if not abs(args.elev_deg) <= 90:  # NaN fails too
+        msg = f"expected --elev-deg within [-90, 90], got {args.elev_deg!r}"
+        raise CliError(msg)
+    if not abs(args.azim_deg) <= 360:
+        msg = f"expected --azim-deg within [-360, 360], got {args.azim_deg!r}"
+        raise CliError(msg)
+    return {"elev": np.radians(args.elev_deg), "azim": np.radians(args.azim_deg)}
 
 
 def _levels(body: RigidBody, args: argparse.Namespace) -> np.ndarray:
@@ -137,10 +150,15 @@ def run(args: argparse.Namespace) -> int:
     """Draw the picture and write it atomically."""
     path = args.out if args.out is not None else f"portrait-{args.kind}.png"
     fmt = _format(args, path)
-    if not args.dpi > 0:
-        msg = f"expected --dpi > 0, got {args.dpi!r}"
+    if not (np.isfinite(args.dpi) and args.dpi > 0):
+        msg = f"expected a finite --dpi > 0, got {args.dpi!r}"
         raise CliError(msg)
     figure = _figure(args)
+    pixels = max(figure.get_size_inches()) * args.dpi
+    if fmt == "png" and pixels >= MAX_PIXELS:
+        limit = MAX_PIXELS / max(figure.get_size_inches())
+        msg = f"expected --dpi below {limit:.0f} for this picture, got {args.dpi!r}"
+        raise CliError(msg)
     with atomic_output(path, binary=True) as stream:
         figure.savefig(stream, format=fmt, dpi=args.dpi)
     return 0
