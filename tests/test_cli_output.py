@@ -172,3 +172,33 @@ def test_cli_negative_time_propagates_backwards(capsys):
     code, _ = run(capsys, [*base, "--values", *back, "--times", "1"])
     again = [float(x) for x in run.out.splitlines()[1].split(",")[2:]]
     assert again == pytest.approx([0.1, 0.2, 0.3, 0.9, 1.0, 0.5], abs=1e-12)
+
+
+ENSEMBLE = ["ensemble", "--moments", "1", "2", "3", "--samples", "4", "--times", "0", "1"]
+ENSEMBLE += ["--scheduler", "synchronous", "--quiet", "--out"]
+
+
+@pytest.mark.parametrize(("mask", "mode"), [(0o022, 0o644), (0o077, 0o600)])
+def test_ensemble_netcdf_mode_follows_umask(mask, mode, tmp_path, umask, capsys):
+    umask(mask)
+    code, err = run(capsys, [*ENSEMBLE, str(tmp_path / "e.nc")])
+    assert (code, err) == (0, "")
+    assert stat.S_IMODE((tmp_path / "e.nc").stat().st_mode) == mode
+
+
+def test_ensemble_store_through_a_link_is_resumed_where_it_lies(tmp_path, capsys):
+    assert run(capsys, [*ENSEMBLE, str(tmp_path / "real.zarr")]) == (0, "")
+    (tmp_path / "link.zarr").symlink_to("real.zarr")
+    assert run(capsys, [*ENSEMBLE, str(tmp_path / "link.zarr")]) == (0, "")
+    assert (tmp_path / "link.zarr").is_symlink()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["link.zarr", "real.zarr"]
+
+
+@pytest.mark.parametrize("make", [lambda p: p.write_text("mine\n"), os.mkfifo], ids=["file", "fifo"])
+def test_ensemble_zarr_out_must_be_a_folder(make, tmp_path, capsys):
+    out = tmp_path / "e.zarr"
+    make(out)
+    code, err = run(capsys, [*ENSEMBLE, str(out)])
+    assert code == 2
+    assert len(err.splitlines()) == 1
+    assert [p.name for p in tmp_path.iterdir()] == ["e.zarr"]

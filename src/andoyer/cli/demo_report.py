@@ -338,7 +338,7 @@ def _report_folder(folder: str | Path, force: bool) -> tuple[Path, bool]:
             raise CliError(msg)
         return target, True
     if not stat.S_ISDIR(mode):
-        msg = f"expected a directory for the report, got the file {given!r}"
+        msg = f"expected a directory for the report, got {given!r}, which is not one"
         raise CliError(msg)
     try:
         empty = not os.listdir(target)
