@@ -4,7 +4,7 @@ The commands are found in :func:`andoyer.cli.build_parser` (sub-commands of sub-
 too, e.g. ``portrait phase``), and each must have an entry in :data:`VALID`: argument lists
 that succeed. The table mutates those: each number in turn replaced by NaN, ±inf, ±1e300;
 each choice by an unknown one; the input file by a missing file or a folder; the output by a
-folder, a dangling link, a device (through a link), a FIFO, a path under a regular file, a
+folder, a dangling link, a character device (and a link to it), a FIFO, a path under a regular file, a
 place that cannot be written. Each case must exit 2 with exactly one line on standard error
 (no traceback) and leave the folder it ran in exactly as it was: nothing written, replaced or
 deleted, links, devices and FIFOs untouched. A new command without an entry fails
@@ -205,8 +205,8 @@ def mutations() -> list:
                 for case, path in (
                     ("folder", f"afolder{s}"),
                     ("dangling-link", f"dangling{s}"),
-                    ("device-link", f"device{s}"),
-                    ("device", "/dev/full"),
+                    ("device", f"device{s}"),
+                    ("device-link", f"device-link{s}"),
                     ("fifo", f"fifo{s}"),
                     ("under-a-file", f"keep.txt/out{s}"),
                     ("missing-folder", f"nowhere/out{s}"),
@@ -224,7 +224,7 @@ MUTATIONS = mutations()
 
 
 @pytest.fixture
-def workdir(tmp_path, monkeypatch):
+def workdir(tmp_path, monkeypatch, make_device):
     """A folder holding the user's things the table must not touch; the commands run in it."""
     (tmp_path / "keep.txt").write_text("the user's file\n")
     (tmp_path / "in.csv").write_text(INPUT_CSV)
@@ -233,7 +233,8 @@ def workdir(tmp_path, monkeypatch):
         folder.mkdir(exist_ok=True)
         (folder / "inside.txt").write_text("inside\n")
         (tmp_path / f"dangling{suffix}").symlink_to(tmp_path / f"target-missing{suffix}")
-        (tmp_path / f"device{suffix}").symlink_to("/dev/full")
+        make_device(tmp_path / f"device{suffix}")
+        (tmp_path / f"device-link{suffix}").symlink_to(f"device{suffix}")
         os.mkfifo(tmp_path / f"fifo{suffix}")
     monkeypatch.chdir(tmp_path)
     return tmp_path
@@ -298,4 +299,3 @@ def test_bad_input_one_line_exit_2_nothing_touched(name, argv, workdir, capsys):
     assert "Traceback" not in err
     assert err.startswith("andoyer")
     assert snapshot(workdir) == before
-    assert stat.S_ISCHR(os.stat("/dev/full").st_mode)

@@ -85,14 +85,14 @@ def test_output_replaced_file_keeps_its_mode(tmp_path, umask, capsys):
     [
         (lambda p: p.mkdir(), "the directory"),
         (os.mkfifo, "the FIFO"),
-        (lambda p: p.symlink_to("/dev/full"), "the character device"),
+        ("device", "the character device"),
         (lambda p: p.symlink_to(p.with_name("missing.csv")), "dangling symbolic link"),
     ],
     ids=["directory", "fifo", "device", "dangling-link"],
 )
-def test_output_non_regular_refused_before_any_work(make, expected, tmp_path, capsys):
+def test_output_non_regular_refused_before_any_work(make, expected, tmp_path, capsys, make_device):
     out = tmp_path / "out.csv"
-    make(out)
+    (make_device if make == "device" else make)(out)
     code, err = run(capsys, [*CONVERT, "--output", str(out)])
     assert code == 2
     assert len(err.splitlines()) == 1

@@ -217,13 +217,14 @@ def test_demo_through_a_link_to_a_folder(quick_demo, tmp_path, capsys):
 
 @pytest.mark.parametrize(
     "out",
-    ["/proc/andoyer-demo", "/proc", "{file}/report", "{file}", "{dangling}", "/dev/null"],
+    ["/proc/andoyer-demo", "/proc", "{file}/report", "{file}", "{dangling}", "{device}"],
     ids=["read-only", "read-only-force", "under-a-file", "a-file", "dangling-link", "device"],
 )
-def test_demo_unwritable_places_one_line_exit_2(out, quick_demo, tmp_path, capsys):
+def test_demo_unwritable_places_one_line_exit_2(out, quick_demo, tmp_path, capsys, make_device):
     (tmp_path / "file").write_text("mine\n")
     (tmp_path / "dangling").symlink_to(tmp_path / "nowhere")
-    out = out.format(file=tmp_path / "file", dangling=tmp_path / "dangling")
+    make_device(tmp_path / "device")
+    out = out.format(file=tmp_path / "file", dangling=tmp_path / "dangling", device=tmp_path / "device")
     before = _tree(tmp_path)
     code = main(["demo", "--quiet", "--force", "--out", out])
     err = capsys.readouterr().err
