@@ -27,7 +27,7 @@ from andoyer.cli import (
     propagate_cmd,
     series_cmd,
 )
-from andoyer.cli.output import CliError
+from andoyer.cli.output import CliError, check_outputs
 
 __all__ = ["main"]
 
@@ -84,6 +84,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
     try:
+        check_outputs(args)
         return int(args.run(args) or 0)
     except (CliError, ValueError) as exc:
         print(f"andoyer {args.command}: error: {exc}", file=sys.stderr)

@@ -22,8 +22,8 @@ __all__ = [
     "CliError",
     "add_output_argument",
     "atomic_output",
+    "check_outputs",
     "format_rows",
-    "output_path",
     "output_store",
     "output_target",
     "read_csv_columns",
@@ -149,22 +149,24 @@ def add_output_argument(
     flag: str = "--output",
     text: str = "write here instead of standard output",
 ) -> None:
-    """Add an output-file option checked by :func:`output_path` (``-``: standard output)."""
-    parser.add_argument(flag, type=output_path, metavar="FILE", help=text)
+    """Add an output-file option; :func:`check_outputs` checks it before the command runs.
 
-
-def output_path(text: str) -> str:
-    """``argparse`` type of an output option: ``-`` or a path :func:`output_target` accepts.
-
-    Checked when the arguments are parsed, so a bad path is refused before any work is done
-    (and checked again when the file is written).
+    Its destination is listed in the parser's default ``output_paths``.
     """
-    if text != "-":
-        try:
-            output_target(text)
-        except CliError as exc:
-            raise argparse.ArgumentTypeError(str(exc)) from None
-    return text
+    action = parser.add_argument(flag, metavar="FILE", help=text)
+    parser.set_defaults(output_paths=(*(parser.get_default("output_paths") or ()), action.dest))
+
+
+def check_outputs(args: argparse.Namespace) -> None:
+    """Refuse, before any work, an output path of :func:`add_output_argument` that cannot be written.
+
+    ``-`` (standard output) and absent options pass; others must satisfy :func:`output_target`
+    (checked again when the file is written).
+    """
+    for dest in getattr(args, "output_paths", ()):
+        path = getattr(args, dest, None)
+        if path is not None and path != "-":
+            output_target(path)
 
 
 @contextlib.contextmanager
