@@ -115,6 +115,18 @@ def test_output_directory_one_line_no_traceback(tmp_path):
     assert list(tmp_path.iterdir()) == []
 
 
+def test_output_read_only_file_is_not_replaced(tmp_path, monkeypatch, capsys):
+    # As root every file is writable: the permission answer is simulated.
+    out = tmp_path / "out.csv"
+    out.write_text("protected\n")
+    out.chmod(0o444)
+    monkeypatch.setattr(output.os, "access", lambda path, how: Path(path) != out)
+    code, err = run(capsys, [*CONVERT, "--output", str(out)])
+    assert code == 2
+    assert "read-only file" in err
+    assert out.read_text() == "protected\n"
+
+
 @pytest.mark.parametrize("code", [errno.ENOSPC, errno.EROFS, errno.EACCES])
 def test_output_write_failure_one_line_and_no_temporary_left(code, tmp_path, monkeypatch, capsys):
     out = tmp_path / "out.csv"

@@ -97,7 +97,7 @@ def output_target(path: str | os.PathLike[str]) -> Path:
     The answer is ``os.path.realpath(path)``: writing there replaces a link's target and keeps
     the link. Refused: an empty name, a dangling link (it could point anywhere), anything that
     exists and is not a regular file (a directory, a FIFO, a device such as ``/dev/full``: use
-    ``-`` for standard output), a path whose folder does not exist.
+    ``-`` for standard output) or that we may not write, a path whose folder does not exist.
 
     Examples
     --------
@@ -119,6 +119,10 @@ def output_target(path: str | os.PathLike[str]) -> Path:
             f"expected a regular file for the output (- for standard output), "
             f"got {_kind(mode)} {os.fspath(path)!r}"
         )
+        raise CliError(msg)
+    if mode is not None and not os.access(real, os.W_OK):
+        # A rename would replace it all the same: respect the protection as open() would.
+        msg = f"expected a writable file for the output, got the read-only file {os.fspath(path)!r}"
         raise CliError(msg)
     return real
 
