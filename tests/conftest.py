@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import os
+import stat
+
 import numpy as np
 import pytest
 from hypothesis import settings
@@ -76,3 +79,25 @@ def documented_andoyer_samples(seed, index, n, G=(1.0, 1.0), cos_J=(-1.0, 1.0), 
     L = Gs * (cos_J[0] + (cos_J[1] - cos_J[0]) * u[:, 4])
     H = Gs * (cos_I[0] + (cos_I[1] - cos_I[0]) * u[:, 5])
     return State.from_andoyer(l, g, h, L, Gs, H)
+
+
+# --- command-line outputs (tests/test_cli_*.py) ---
+
+
+def _make_device(path) -> None:
+    """A character device at ``path``: a copy of /dev/full's node where allowed (root), else a link.
+
+    A regression of the output checks must damage this copy, never the machine's /dev/full: as
+    root, the code of issue 18 replaced the system's node with a regular file. Without the right
+    to make nodes, a link to /dev/full is as good, and the system's node is out of reach anyway.
+    """
+    try:
+        os.mknod(path, stat.S_IFCHR | 0o666, os.makedev(1, 7))
+    except PermissionError:
+        path.symlink_to("/dev/full")
+
+
+@pytest.fixture
+def make_device():
+    """The function that makes a character device at a path (see :func:`_make_device`)."""
+    return _make_device

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import json
 
-from andoyer.cli.output import atomic_output, format_rows
+from andoyer.cli.output import add_output_argument, atomic_output, format_rows
 
 ALGEBRAS = ("so3", "e3", "l7")
 
@@ -21,7 +21,7 @@ def register(commands: argparse._SubParsersAction) -> None:
     )
     parser.add_argument("--algebra", choices=ALGEBRAS, required=True)
     parser.add_argument("--format", choices=("table", "json"), default="table")
-    parser.add_argument("--output", metavar="FILE", help="write here instead of standard output")
+    add_output_argument(parser)
     parser.set_defaults(run=run)
 
 

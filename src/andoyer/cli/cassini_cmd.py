@@ -7,7 +7,7 @@ import json
 import math
 from typing import TYPE_CHECKING
 
-from andoyer.cli.output import CliError, atomic_output, format_rows
+from andoyer.cli.output import CliError, add_output_argument, atomic_output, format_rows
 
 EXAMPLES = """examples:
   andoyer cassini moon
@@ -84,7 +84,7 @@ def register(commands: argparse._SubParsersAction) -> None:
     parser.add_argument("body", type=str.lower, choices=sorted(BODIES))
     parser.add_argument("--format", choices=("table", "json"), default="table")
     add_cassini_arguments(parser)
-    parser.add_argument("--output", metavar="FILE", help="write here instead of standard output")
+    add_output_argument(parser)
     parser.set_defaults(run=run)
 
 

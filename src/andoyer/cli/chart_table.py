@@ -102,12 +102,14 @@ def times_from_args(args: argparse.Namespace) -> np.ndarray:
     """The output times of :func:`add_time_arguments`, checked finite."""
     if args.range is not None:
         start, stop, count = args.range
-        if count < 1 or count != int(count):
+        if not (np.isfinite(start) and np.isfinite(stop)):
+            msg = f"expected a finite START and STOP in --range, got {start!r} and {stop!r}"
+            raise CliError(msg)
+        if not (np.isfinite(count) and count >= 1 and count == int(count)):
             msg = f"expected a positive integer COUNT in --range, got {count!r}"
             raise CliError(msg)
-        times = np.linspace(start, stop, int(count))
-    else:
-        times = np.asarray(args.times, dtype=float)
+        return np.linspace(start, stop, int(count))
+    times = np.asarray(args.times, dtype=float)
     if not np.all(np.isfinite(times)):
         msg = f"expected finite times, got {times.tolist()!r}"
         raise CliError(msg)

@@ -7,7 +7,7 @@ import argparse
 import numpy as np
 
 from andoyer.cli.chart_table import CHARTS, add_body_arguments, body_from_args, chart_columns_from_args
-from andoyer.cli.output import atomic_output, format_rows
+from andoyer.cli.output import add_output_argument, atomic_output, format_rows
 
 EXAMPLES = """examples:
   andoyer convert --from andoyer --to euler --values 0.1 0.2 0.3 0.9 1.0 0.5
@@ -31,7 +31,7 @@ def register(commands: argparse._SubParsersAction) -> None:
     parser.add_argument("--degrees", action="store_true", help="angles in degrees (input and output)")
     add_body_arguments(parser)
     parser.add_argument("--format", choices=("table", "csv"), default="table")
-    parser.add_argument("--output", metavar="FILE", help="write here instead of standard output")
+    add_output_argument(parser)
     parser.set_defaults(run=run)
 
 

@@ -1,15 +1,18 @@
 """The ``andoyer demo`` report: a folder with a Markdown summary and its pictures.
 
 Each section is a function ``(context) -> str`` returning Markdown; sections that draw write
-their pictures into the report folder and link them.  The folder is assembled in a temporary
-sibling directory and renamed into place at the end, so an interrupted demo never leaves a
-half-written report.
+their pictures (plain files, no sub-folders) into the report folder and link them. The report
+is assembled in a temporary folder and moved into place at the end, so an interrupted demo
+never leaves a half-written report; it writes only into a new or empty folder, a previous
+report (marked by a :data:`MARKER` file) or, when forced, beside what a folder holds, and
+deletes nothing of the user's (see :func:`write_report`).
 """
 
 from __future__ import annotations
 
-import contextlib
+import os
 import shutil
+import stat
 import tempfile
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -19,9 +22,10 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from andoyer import bodies
+from andoyer._files import new_dir_mode
 from andoyer.body import RigidBody, RotationMode
 from andoyer.cli.chart_table import CHARTS
-from andoyer.cli.output import CliError
+from andoyer.cli.output import CliError, atomic_output, output_target
 from andoyer.free import FreeRotation
 from andoyer.state import State
 
@@ -285,23 +289,58 @@ SECTIONS: tuple[Callable[[DemoContext], str], ...] = (
 )
 
 
-def write_report(name: str, folder: str | Path, progress: bool | None = None) -> str:
+#: The file that marks a folder as an andoyer demo report (its first line is :data:`MARKER_HEADER`).
+MARKER = ".andoyer-demo"
+MARKER_HEADER = "andoyer demo report"
+#: Version of the marker's format (its second line, ``format 1``).
+MARKER_FORMAT = 1
+
+
+def is_demo_report(folder: str | Path) -> bool:
+    r"""Whether ``folder`` holds a report of ``andoyer demo`` (its marker file says so).
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> folder = Path(tempfile.mkdtemp())
+    >>> is_demo_report(folder)
+    False
+    >>> _ = (folder / MARKER).write_text(f"{MARKER_HEADER}\nformat 1\n", encoding="utf-8")
+    >>> is_demo_report(folder)
+    True
+    """
+    marker = Path(folder) / MARKER
+    try:
+        if not marker.is_file() or marker.is_symlink():
+            return False
+        with marker.open(encoding="utf-8", errors="replace") as stream:
+            return stream.readline().rstrip("\n") == MARKER_HEADER
+    except OSError:
+        return False
+
+
+def write_report(name: str, folder: str | Path, progress: bool | None = None, force: bool = False) -> str:
     """Run every section for body ``name`` and write ``folder/README.md`` (plus pictures).
 
-    Returns the Markdown summary.  The folder is built beside its final place and renamed
-    over it at the end.
+    Returns the Markdown summary. The folder is resolved (``.``, ``..`` and links), then:
+
+    - missing: the report is built in a temporary sibling renamed into place at the end, so an
+      interrupted demo leaves nothing behind;
+    - empty, or holding a previous report (see :func:`is_demo_report`), or anything else with
+      ``force=True``: the report is built in a temporary folder inside it, and each of its files
+      then replaces the file of that name (atomically, through links); nothing else in the
+      folder is touched and nothing is ever deleted but the temporary folder;
+    - otherwise (a non-empty folder that is not a report, a file, a device): :class:`CliError`
+      naming ``--force``, before any work is done.
+
+    Each report holds a marker file :data:`MARKER` (first line :data:`MARKER_HEADER`, then its
+    format version, the andoyer version, the body and the report's files). New folders and
+    files get the modes the umask gives.
     """
     from tqdm import tqdm
 
-    target = Path(folder)
-    parent = target.resolve().parent
-    if not parent.is_dir():
-        msg = f"expected an existing parent directory for the report, got {str(parent)!r}"
-        raise CliError(msg)
-    if target.exists() and not target.is_dir():
-        msg = f"expected a directory for the report, got the file {str(target)!r}"
-        raise CliError(msg)
-    staging = Path(tempfile.mkdtemp(prefix=f".{target.name}.", suffix=".part", dir=parent))
+    target, fresh = _report_folder(folder, force)
+    staging = _staging_folder(target.parent if fresh else target, target.name, folder)
     try:
         ctx = DemoContext(name, staging)
         parts = [f"# andoyer demo: {ctx.body.name}\n"]
@@ -311,20 +350,85 @@ def write_report(name: str, folder: str | Path, progress: bool | None = None) ->
         )
         summary = "\n".join(parts)
         (staging / "README.md").write_text(summary, encoding="utf-8")
-        _swap_into_place(staging, target)
-    except BaseException:
-        shutil.rmtree(staging, ignore_errors=True)
-        raise
+        _write_marker(staging, ctx.name)
+        if fresh:
+            _rename_into_place(staging, target, folder)
+        else:
+            _copy_into(staging, target)
+    finally:
+        shutil.rmtree(staging, ignore_errors=True)  # ours; gone already once renamed into place
     return summary
 
 
-def _swap_into_place(staging: Path, target: Path) -> None:
-    old = None
-    if target.exists():
-        old = target.with_name(f".{target.name}.old")
-        with contextlib.suppress(FileNotFoundError):
-            shutil.rmtree(old)
-        target.rename(old)
-    staging.rename(target)
-    if old is not None:
-        shutil.rmtree(old, ignore_errors=True)
+def _report_folder(folder: str | Path, force: bool) -> tuple[Path, bool]:
+    """The resolved report folder and whether it is new; :class:`CliError` where writing is refused."""
+    given = os.fspath(folder)
+    target = Path(os.path.realpath(given))  # ".", ".." and links name a real folder
+    try:
+        mode = os.stat(target).st_mode
+    except FileNotFoundError:
+        mode = None
+    except OSError as exc:
+        msg = f"expected a usable folder for the report, got {given!r} ({exc.strerror})"
+        raise CliError(msg) from exc
+    if mode is None:
+        if os.path.islink(given):
+            msg = f"expected a folder for the report, got the dangling symbolic link {given!r}"
+            raise CliError(msg)
+        if not target.parent.is_dir():
+            msg = f"expected an existing parent directory for the report, got {str(target.parent)!r}"
+            raise CliError(msg)
+        return target, True
+    if not stat.S_ISDIR(mode):
+        msg = f"expected a directory for the report, got {given!r}, which is not one"
+        raise CliError(msg)
+    try:
+        empty = not os.listdir(target)
+    except OSError as exc:
+        msg = f"expected a readable folder for the report, got {given!r} ({exc.strerror})"
+        raise CliError(msg) from exc
+    if not (empty or force or is_demo_report(target)):
+        msg = (
+            f"expected a new or empty folder or a previous demo report for the report, got {given!r} "
+            "(not empty; --force writes the report's files into it, replacing only those)"
+        )
+        raise CliError(msg)
+    return target, False
+
+
+def _staging_folder(parent: Path, name: str, given: str | Path) -> Path:
+    try:
+        staging = Path(tempfile.mkdtemp(prefix=f".{name}.", suffix=".part", dir=parent))
+    except OSError as exc:
+        msg = f"expected a writable place for the report, got {os.fspath(given)!r} ({exc.strerror})"
+        raise CliError(msg) from exc
+    os.chmod(staging, new_dir_mode())  # mkdtemp makes it 0700 whatever the umask
+    return staging
+
+
+def _write_marker(staging: Path, name: str) -> None:
+    from andoyer import __version__
+
+    files = sorted(p.name for p in staging.iterdir())
+    lines = [MARKER_HEADER, f"format {MARKER_FORMAT}", f"andoyer {__version__}", f"body {name}"]
+    lines.append("files " + " ".join([*files, MARKER]))
+    (staging / MARKER).write_text("\n".join(lines) + "\n", encoding="utf-8")
+
+
+def _rename_into_place(staging: Path, target: Path, given: str | Path) -> None:
+    try:
+        # Replaces at most an empty folder made meanwhile; a non-empty one makes it fail.
+        staging.rename(target)
+    except OSError as exc:
+        msg = f"expected the report folder {str(given)!r} to stay free while writing, got {exc.strerror}"
+        raise CliError(msg) from exc
+
+
+def _copy_into(staging: Path, target: Path) -> None:
+    # The marker last: until then a previous report's marker still stands for the folder.
+    files = sorted(staging.iterdir(), key=lambda p: (p.name == MARKER, p.name))
+    for path in files:  # every destination checked before the first is replaced
+        output_target(target / path.name)
+    for path in files:
+        with atomic_output(target / path.name, binary=True) as stream:
+            stream.write(path.read_bytes())

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 
 from andoyer.cli.chart_table import add_body_arguments, add_time_arguments, body_from_args, times_from_args
-from andoyer.cli.output import CliError
+from andoyer.cli.output import CliError, output_store, output_target
 
 EXAMPLES = """examples:
   andoyer ensemble --body eros --samples 1000000 --range 0 1e5 10 --out eros.zarr --workers 2
@@ -56,6 +56,10 @@ def run(args: argparse.Namespace) -> int:
     if not str(args.out).lower().endswith((".zarr", ".nc")):
         msg = f"expected --out ending in .zarr or .nc, got {args.out!r}"
         raise CliError(msg)
+    # Links followed (a linked store is resumed where it lies), never a device or a FIFO: a
+    # NetCDF output is a regular file, a Zarr store a directory.
+    nc = str(args.out).lower().endswith(".nc")
+    out = output_target(args.out) if nc else output_store(args.out)
     if args.sampler == "andoyer":
         sampler = AndoyerSampler(G=tuple(args.G), cos_J=tuple(args.cos_J), cos_I=tuple(args.cos_I))
     else:
@@ -65,7 +69,7 @@ def run(args: argparse.Namespace) -> int:
         args.samples,
         times_from_args(args),
         body=body,
-        out=args.out,
+        out=out,
         chunk=args.chunk,
         seed=args.seed,
         output=args.output,

@@ -6,7 +6,7 @@ import argparse
 import json
 import math
 
-from andoyer.cli.output import CliError, atomic_output, format_rows
+from andoyer.cli.output import CliError, add_output_argument, atomic_output, format_rows
 
 EXAMPLES = """examples:
   andoyer nutation earth --span 0 20 --step 0.01 --format csv --output nutation.csv
@@ -56,8 +56,8 @@ def register(commands: argparse._SubParsersAction) -> None:
     parser.add_argument("--axis", choices=AXES, default="figure")
     parser.add_argument("--terms", action="store_true", help="print the fitted principal terms")
     parser.add_argument("--format", choices=("json", "csv", "table"), default="table")
-    parser.add_argument("--output", metavar="PATH", help="write here instead of standard output")
-    parser.add_argument("--plot", metavar="PATH", help="also draw dpsi and deps (PNG, SVG or PDF)")
+    add_output_argument(parser)
+    add_output_argument(parser, "--plot", "also draw dpsi and deps (PNG, SVG or PDF)")
     parser.set_defaults(run=run)
 
 
@@ -85,22 +85,11 @@ def _plot_format(path: str) -> str:
     return fmt
 
 
-def _check_directory(path: str | None, option: str) -> None:
-    from pathlib import Path
-
-    if path not in (None, "-") and not Path(path).parent.exists():
-        msg = f"expected an existing directory for {option}, got {str(Path(path).parent)!r}"
-        raise CliError(msg)
-
-
 def run(args: argparse.Namespace) -> int:
     """Compute the nutation and write it (and the terms, and the picture)."""
     from andoyer import nutation
     from andoyer.precession import check_dynamical_ellipticity
 
-    # Check both destinations first: a bad one must leave nothing written.
-    _check_directory(args.output, "--output")
-    _check_directory(args.plot, "--plot")
     H = check_dynamical_ellipticity(args.dynamical_ellipticity)
     t0, t1 = args.span
     t = _times(t0, t1, args.step)
@@ -129,13 +118,8 @@ def run(args: argparse.Namespace) -> int:
         from andoyer.plot.nutation import nutation_plot
 
         figure = nutation_plot(t, dpsi, deps, f"rigid-Earth nutation, {args.axis} axis, H = {H}")
-        with atomic_output(args.plot) as stream:
-            stream.flush()
-            binary = getattr(stream, "buffer", None)
-            if binary is None:
-                msg = "expected a binary standard output for --plot -, got a text-only stream"
-                raise CliError(msg)
-            figure.savefig(binary, format=fmt_plot, dpi=120)
+        with atomic_output(args.plot, binary=True) as stream:
+            figure.savefig(stream, format=fmt_plot, dpi=120)
     with atomic_output(args.output) as stream:
         stream.write(text)
     return 0

@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 
-from andoyer.cli.output import CliError, atomic_output, format_rows
+from andoyer.cli.output import CliError, add_output_argument, atomic_output, format_rows
 
 EXAMPLES = """examples:
   andoyer obliquity earth --span -200000 200000 --step 500 --format json
@@ -61,8 +61,8 @@ def register(commands: argparse._SubParsersAction) -> None:
     strength.add_argument("--dynamical-ellipticity", type=_finite, metavar="H")
     parser.add_argument("--tidal-dissipation", type=_finite, metavar="TD", default=0.0)
     parser.add_argument("--format", choices=("json", "csv", "table"), default="table")
-    parser.add_argument("--output", metavar="PATH", help="write here instead of standard output")
-    parser.add_argument("--plot", metavar="PATH", help="PNG of obliquity and climatic precession")
+    add_output_argument(parser)
+    add_output_argument(parser, "--plot", "PNG of obliquity and climatic precession")
     parser.set_defaults(run=run)
 
 
@@ -149,11 +149,6 @@ def run(args: argparse.Namespace) -> int:
     with atomic_output(args.output) as stream:
         stream.write(text)
     if figure is not None:
-        with atomic_output(args.plot) as stream:
-            stream.flush()
-            binary = getattr(stream, "buffer", None)
-            if binary is None:  # pragma: no cover - a file stream always has one
-                msg = "expected a binary stream for --plot"
-                raise CliError(msg)
-            figure.savefig(binary, format="png", dpi=120)
+        with atomic_output(args.plot, binary=True) as stream:
+            figure.savefig(stream, format="png", dpi=120)
     return 0

@@ -2,19 +2,32 @@
 
 from __future__ import annotations
 
+import argparse
 import contextlib
 import csv
 import io
 import os
+import stat
 import sys
 import tempfile
 from collections.abc import Iterator, Sequence
 from pathlib import Path
-from typing import TextIO
+from typing import IO
 
 import numpy as np
 
-__all__ = ["CliError", "atomic_output", "format_rows", "read_csv_columns"]
+from andoyer._files import new_file_mode
+
+__all__ = [
+    "CliError",
+    "add_output_argument",
+    "atomic_output",
+    "check_outputs",
+    "format_rows",
+    "output_store",
+    "output_target",
+    "read_csv_columns",
+]
 
 
 class CliError(Exception):
@@ -42,24 +55,178 @@ def format_rows(header: Sequence[str], rows: Sequence[Sequence[object]], fmt: st
     return "\n".join(lines) + "\n"
 
 
-@contextlib.contextmanager
-def atomic_output(path: str | None) -> Iterator[TextIO]:
-    """Yield a text stream: stdout for ``None`` or ``-``, else a temporary file renamed on success."""
-    if path in (None, "-"):
-        yield sys.stdout
-        return
-    target = Path(path)
-    if not target.parent.exists():
-        msg = f"expected an existing directory for the output file, got {str(target.parent)!r}"
+_KINDS = (
+    (stat.S_ISDIR, "the directory"),
+    (stat.S_ISFIFO, "the FIFO"),
+    (stat.S_ISCHR, "the character device"),
+    (stat.S_ISBLK, "the block device"),
+    (stat.S_ISSOCK, "the socket"),
+)
+
+
+def _kind(mode: int) -> str:
+    return next((name for test, name in _KINDS if test(mode)), "the special file")
+
+
+def _resolve(path: str | os.PathLike[str]) -> tuple[Path, int | None]:
+    """``os.path.realpath(path)`` and its ``st_mode`` (``None``: nothing there); bad names refused."""
+    text = os.fspath(path)
+    if not text:
+        msg = "expected a name for the output, got ''"
         raise CliError(msg)
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".part", dir=target.parent)
+    real = Path(os.path.realpath(text))
     try:
-        with os.fdopen(fd, "w", newline="") as stream:
+        mode = os.stat(real).st_mode
+    except FileNotFoundError:
+        mode = None
+    except OSError as exc:  # a loop of links, a name too long, a folder we may not search
+        msg = f"expected a usable output path, got {text!r} ({exc.strerror})"
+        raise CliError(msg) from exc
+    if mode is None and os.path.islink(text):
+        msg = f"expected an output path, got the dangling symbolic link {text!r} (to {str(real)!r})"
+        raise CliError(msg)
+    if mode is None and not real.parent.is_dir():
+        msg = f"expected an existing directory for the output, got {str(real.parent)!r}"
+        raise CliError(msg)
+    return real, mode
+
+
+def output_target(path: str | os.PathLike[str]) -> Path:
+    r"""The regular file an output path names, symbolic links followed; :class:`CliError` otherwise.
+
+    The answer is ``os.path.realpath(path)``: writing there replaces a link's target and keeps
+    the link. Refused: an empty name, a dangling link (it could point anywhere), anything that
+    exists and is not a regular file (a directory, a FIFO, a device such as ``/dev/full``: use
+    ``-`` for standard output) or that we may not write, a path whose folder does not exist.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> folder = Path(tempfile.mkdtemp())
+    >>> (folder / "link.csv").symlink_to(folder / "data.csv")
+    >>> (folder / "data.csv").write_text("x\n")
+    2
+    >>> output_target(folder / "link.csv") == (folder / "data.csv").resolve()
+    True
+    >>> output_target(folder)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    andoyer.cli.output.CliError: expected a regular file for the output (...), got the directory '...'
+    """
+    real, mode = _resolve(path)
+    if mode is not None and not stat.S_ISREG(mode):
+        msg = (
+            f"expected a regular file for the output (- for standard output), "
+            f"got {_kind(mode)} {os.fspath(path)!r}"
+        )
+        raise CliError(msg)
+    if mode is not None and not os.access(real, os.W_OK):
+        # A rename would replace it all the same: respect the protection as open() would.
+        msg = f"expected a writable file for the output, got the read-only file {os.fspath(path)!r}"
+        raise CliError(msg)
+    return real
+
+
+def output_store(path: str | os.PathLike[str]) -> Path:
+    """The folder (a Zarr store) an output path names, links followed; :class:`CliError` otherwise.
+
+    Like :func:`output_target` for a store that is a directory: refused are an empty name, a
+    dangling link, anything that exists and is not a directory, a missing parent folder.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> folder = Path(tempfile.mkdtemp())
+    >>> output_store(folder / "e.zarr") == folder.resolve() / "e.zarr"
+    True
+    """
+    real, mode = _resolve(path)
+    if mode is not None and not stat.S_ISDIR(mode):
+        kind = "the file" if stat.S_ISREG(mode) else _kind(mode)
+        msg = f"expected a directory (a Zarr store) or a new name for the output, got {kind} {str(path)!r}"
+        raise CliError(msg)
+    return real
+
+
+def add_output_argument(
+    parser: argparse.ArgumentParser,
+    flag: str = "--output",
+    text: str = "write here instead of standard output",
+) -> None:
+    """Add an output-file option; :func:`check_outputs` checks it before the command runs.
+
+    Its destination is listed in the parser's default ``output_paths``.
+    """
+    action = parser.add_argument(flag, metavar="FILE", help=text)
+    parser.set_defaults(output_paths=(*(parser.get_default("output_paths") or ()), action.dest))
+
+
+def check_outputs(args: argparse.Namespace) -> None:
+    """Refuse, before any work, an output path of :func:`add_output_argument` that cannot be written.
+
+    ``-`` (standard output) and absent options pass; others must satisfy :func:`output_target`
+    (checked again when the file is written).
+    """
+    for dest in getattr(args, "output_paths", ()):
+        path = getattr(args, dest, None)
+        if path is not None and path != "-":
+            output_target(path)
+
+
+@contextlib.contextmanager
+def atomic_output(path: str | os.PathLike[str] | None, binary: bool = False) -> Iterator[IO]:
+    r"""Yield a stream: stdout for ``None`` or ``-``, else a temporary file renamed on success.
+
+    The file is written beside :func:`output_target`'s answer (so through symbolic links) and
+    renamed over it only once the block has finished: an interrupted or failed command leaves
+    the previous file, if any, untouched, and nothing else. The new file gets the mode of the
+    file it replaces, else ``0o666 & ~umask`` (what ``open()`` gives). An error of the file
+    system is a :class:`CliError` naming the path.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> out = Path(tempfile.mkdtemp()) / "table.txt"
+    >>> with atomic_output(out) as stream:
+    ...     _ = stream.write("1 2\n")
+    >>> out.read_text()
+    '1 2\n'
+    """
+    if path is None or os.fspath(path) == "-":
+        if not binary:
+            yield sys.stdout
+            return
+        buffer = getattr(sys.stdout, "buffer", None)
+        if buffer is None:
+            msg = "expected a binary standard output for -, got a text-only stream"
+            raise CliError(msg)
+        sys.stdout.flush()
+        yield buffer
+        buffer.flush()
+        return
+    target = output_target(path)
+    try:
+        mode = stat.S_IMODE(os.stat(target).st_mode)
+    except FileNotFoundError:
+        mode = new_file_mode()
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".part", dir=target.parent)
+    except OSError as exc:
+        msg = f"expected a writable place for the output, got {os.fspath(path)!r} ({exc.strerror})"
+        raise CliError(msg) from exc
+    try:
+        with os.fdopen(fd, "wb") if binary else os.fdopen(fd, "w", newline="") as stream:
             yield stream
+            stream.flush()
+            os.fsync(stream.fileno())
+        os.chmod(tmp, mode)
         os.replace(tmp, target)
-    except BaseException:
+    except BaseException as exc:
         with contextlib.suppress(OSError):
             os.unlink(tmp)
+        if isinstance(exc, OSError) and not isinstance(exc, BrokenPipeError):
+            msg = f"expected a writable place for the output, got {os.fspath(path)!r} ({exc.strerror})"
+            raise CliError(msg) from exc
         raise
 
 

@@ -12,7 +12,7 @@ from andoyer import plot
 from andoyer.body import RigidBody
 from andoyer.cli.cassini_cmd import add_cassini_arguments, cassini_body_from_args
 from andoyer.cli.chart_table import add_body_arguments, body_from_args
-from andoyer.cli.output import CliError, atomic_output
+from andoyer.cli.output import CliError, add_output_argument, atomic_output
 from andoyer.free import FreeRotation
 from andoyer.state import State
 
@@ -27,6 +27,8 @@ The state (--values) is in Andoyer variables l g h L G H; angles in radians.
 """
 FORMATS = ("png", "svg")
 DEFAULT_STATE = (0.5, 0.0, 0.0, 0.9, 1.0, 0.9)
+#: Largest side of a PNG in pixels (matplotlib's Agg renderer refuses 2^16 and more).
+MAX_PIXELS = 2**16
 
 
 def register(commands: argparse._SubParsersAction) -> None:
@@ -47,9 +49,7 @@ def register(commands: argparse._SubParsersAction) -> None:
     for kind, text in helps.items():
         sub = kinds.add_parser(kind, help=text, description=text)
         add_body_arguments(sub)
-        sub.add_argument(
-            "--out", metavar="FILE", help=f"PNG or SVG file, or - for stdout (default portrait-{kind}.png)"
-        )
+        add_output_argument(sub, "--out", f"PNG or SVG file, or - for stdout (default portrait-{kind}.png)")
         sub.add_argument("--format", choices=FORMATS, help="default: from the file suffix")
         sub.add_argument("--dpi", type=float, default=150.0, help="resolution of PNG output (default 150)")
         if kind in ("phase", "sphere"):
@@ -132,10 +132,13 @@ def _figure(args: argparse.Namespace) -> Figure:
     if kind == "phase":
         return plot.phase_portrait(body, args.G, _levels(body, args))
     if kind == "sphere":
-        view = {"elev": np.radians(args.elev_deg), "azim": np.radians(args.azim_deg)}
-        return plot.momentum_sphere(body, args.G, _levels(body, args), **view)
+        return plot.momentum_sphere(body, args.G, _levels(body, args), **_view(args))
     state = _state(args)
+    if args.duration is not None and not (np.isfinite(args.duration) and args.duration > 0):
+        msg = f"expected a finite --duration > 0, got {args.duration!r}"
+        raise CliError(msg)
     if kind == "polhode":
+        _view(args)  # checked, although plot.poinsot does not take a view yet
         return plot.poinsot(body, state, args.duration)
     if args.steps < 2:
         msg = f"expected --steps >= 2, got {args.steps}"
@@ -144,11 +147,19 @@ def _figure(args: argparse.Namespace) -> Figure:
     if duration is None:
         period = float(FreeRotation(body).periods(state).period)
         duration = 5 * period if np.isfinite(period) else 100.0
-    if not duration > 0:
-        msg = f"expected --duration > 0, got {duration!r}"
-        raise CliError(msg)
     t = np.linspace(0.0, duration, args.steps)
     return plot.precession(t, FreeRotation(body).propagate(state, t), args.axis, degrees=args.degrees)
+
+
+def _view(args: argparse.Namespace) -> dict[str, float]:
+    """The viewing angles in radians, checked: elevation within ±90°, azimuth within ±360°."""
+    if not abs(args.elev_deg) <= 90:  # NaN fails too
+        msg = f"expected --elev-deg within [-90, 90], got {args.elev_deg!r}"
+        raise CliError(msg)
+    if not abs(args.azim_deg) <= 360:
+        msg = f"expected --azim-deg within [-360, 360], got {args.azim_deg!r}"
+        raise CliError(msg)
+    return {"elev": np.radians(args.elev_deg), "azim": np.radians(args.azim_deg)}
 
 
 def _levels(body: RigidBody, args: argparse.Namespace) -> np.ndarray:
@@ -162,16 +173,15 @@ def run(args: argparse.Namespace) -> int:
     """Draw the picture and write it atomically."""
     path = args.out if args.out is not None else f"portrait-{args.kind}.png"
     fmt = _format(args, path)
-    if not args.dpi > 0:
-        msg = f"expected --dpi > 0, got {args.dpi!r}"
+    if not (np.isfinite(args.dpi) and args.dpi > 0):
+        msg = f"expected a finite --dpi > 0, got {args.dpi!r}"
         raise CliError(msg)
     figure = _figure(args)
-    with atomic_output(path) as stream:
-        stream.flush()
-        binary = getattr(stream, "buffer", None)
-        if binary is None:
-            msg = "expected a binary standard output for --out -, got a text-only stream"
-            raise CliError(msg)
-        figure.savefig(binary, format=fmt, dpi=args.dpi)
-        binary.flush()
+    pixels = max(figure.get_size_inches()) * args.dpi
+    if fmt == "png" and pixels >= MAX_PIXELS:
+        limit = MAX_PIXELS / max(figure.get_size_inches())
+        msg = f"expected --dpi below {limit:.0f} for this picture, got {args.dpi!r}"
+        raise CliError(msg)
+    with atomic_output(path, binary=True) as stream:
+        figure.savefig(stream, format=fmt, dpi=args.dpi)
     return 0

@@ -6,7 +6,7 @@ import argparse
 import json
 import math
 
-from andoyer.cli.output import CliError, atomic_output
+from andoyer.cli.output import CliError, add_output_argument, atomic_output
 
 EXAMPLES = """examples:
   andoyer precession earth
@@ -59,7 +59,7 @@ def register(commands: argparse._SubParsersAction) -> None:
         help="H = (C - (A+B)/2)/C instead of the named body's (0 < H < 1/2)",
     )
     parser.add_argument("--format", choices=("text", "json"), default="text")
-    parser.add_argument("--output", metavar="FILE", help="write here instead of standard output")
+    add_output_argument(parser)
     parser.set_defaults(run=run)
 
 

@@ -15,7 +15,7 @@ from andoyer.cli.chart_table import (
     times_from_args,
 )
 from andoyer.cli.named_models import MODELS, add_model_arguments, model_from_args
-from andoyer.cli.output import CliError, atomic_output, format_rows
+from andoyer.cli.output import CliError, add_output_argument, atomic_output, format_rows
 from andoyer.free import FreeRotation
 from andoyer.propagation import propagate
 
@@ -55,7 +55,7 @@ def register(commands: argparse._SubParsersAction) -> None:
     given.add_argument("--input", metavar="CSV", help="CSV file with a header naming the columns")
     add_time_arguments(parser)
     parser.add_argument("--format", choices=("table", "csv"), default="table")
-    parser.add_argument("--output", metavar="FILE")
+    add_output_argument(parser)
     parser.set_defaults(run=run)
 
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from andoyer.cli.output import atomic_output
+from andoyer.cli.output import add_output_argument, atomic_output
 
 FORMATS = ("md", "tex", "json")
 
@@ -43,7 +43,7 @@ def register(commands: argparse._SubParsersAction) -> None:
     )
     sam.add_argument("--order", type=_order, required=True, metavar="N", help="highest index i (>= 1)")
     sam.add_argument("--format", choices=FORMATS, default="md")
-    sam.add_argument("--output", metavar="FILE", help="write here instead of standard output")
+    add_output_argument(sam)
     sam.set_defaults(run=run)
 
 

@@ -33,6 +33,7 @@ from typing import Any
 
 import numpy as np
 
+from andoyer._files import new_file_mode
 from andoyer.ensemble.layout import LEDGER, Arrays, EnsembleSpec, compute_chunk, variable_dims
 from andoyer.ensemble.ledger import (
     DIGEST_SIZE,
@@ -317,6 +318,7 @@ def finalize_netcdf(parts: Path, path: Path) -> None:
     try:
         # NetCDF3 with 64-bit offsets (scipy engine): variables beyond 2 GiB are allowed.
         data.to_netcdf(tmp, engine="scipy", format="NETCDF3_64BIT")
+        os.chmod(tmp, new_file_mode())  # mkstemp made it 0600: give it the umask's mode
         os.replace(tmp, path)
     finally:
         with contextlib.suppress(OSError):
