@@ -10,8 +10,10 @@ from __future__ import annotations
 
 import argparse
 import sys
+import warnings
 from collections.abc import Sequence
 
+from andoyer._limits import PhasePrecisionWarning, show_progress
 from andoyer.cli import (
     bodies_cmd,
     brackets_cmd,
@@ -67,8 +69,16 @@ def main(argv: Sequence[str] | None = None) -> int:
     """
     parser = build_parser()
     args = parser.parse_args(argv)
+
+    def one_line(message: Warning | str, *_where: object, **_options: object) -> None:
+        print(f"andoyer {args.command}: warning: {message}", file=sys.stderr)
+
     try:
-        return int(args.run(args) or 0)
+        with warnings.catch_warnings(), show_progress():
+            # a warning is one line on stderr, never a traceback (even where filters say error)
+            warnings.simplefilter("default", PhasePrecisionWarning)
+            warnings.showwarning = one_line
+            return int(args.run(args) or 0)
     except (CliError, ValueError) as exc:
         print(f"andoyer {args.command}: error: {exc}", file=sys.stderr)
         return 2
