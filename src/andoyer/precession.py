@@ -28,7 +28,8 @@ longitude or node) and appears with period 1 or 2 in ``h₀``, so the average
 cancels the 18.6-year and semi-annual nutations that would otherwise swamp
 a fit over a few years. The slope of ``h̄(t)`` is then fitted by least squares
 together with the first three harmonics of each perturber's mean motion
-(whose orbit fits in the span): those absorb the modulation of the torque by
+(whose orbit covers at least 90% of the span, so that one Julian year keeps the
+Sun's sidereal year): those absorb the modulation of the torque by
 the orbital eccentricity, which does not depend on ``h₀``.
 
 **Splitting step.** Successive kicks sample the body-fixed (triaxial) part of
@@ -37,9 +38,11 @@ of half a rotation aliases it to a slow, spurious torque. :func:`default_step`
 therefore takes an odd number of quarter rotations, so that successive kicks
 alternate in sign, and at most 1/12 of the shortest orbital period (2.244
 days for the Earth, 57.20 days for Mars). The precession is a first-order
-effect of the torque, so order 2 suffices (the default). Measured rates
-(″/yr; one year for the Earth, 1.9 years for Mars; secular model 50.4788 and
-7.5909):
+effect of the torque, so order 2 suffices (the default). The span is
+honoured exactly: the last step is shortened to end on it. Measured rates
+(″/yr; one year for the Earth, 1.9 years for Mars, both rounded up to whole
+steps when measured; secular model 50.4788 and 7.5909; with the exact span,
+Mars at the default step gives 7.5886, the Earth 50.4789):
 
 =====  ==========================  ======  =======  ========
 body   step (rotations)            days    order 2  order 4
@@ -66,6 +69,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from andoyer import bodies
+from andoyer._limits import check_size
+from andoyer.integrate.output import OUTPUT_BYTES
+from andoyer.integrate.splitting import splitting_coefficients
 from andoyer.perturbations.gravity import GravityGradient, PointMass
 from andoyer.perturbations.model import Model
 from andoyer.perturbations.solar_system import JULIAN_YEAR, OBLIQUITY, mean_perturbers
@@ -154,7 +160,7 @@ def mean_node_rate(t: Array, h: Array, perturbers: list[PointMass] | tuple[Point
 
     Fits ``h̄(t) = a + b t + Σ_p Σ_{k=1..3} [c_pk cos(k n_p t) + s_pk sin(k n_p t)]`` to the
     average ``h̄`` over the last axis of ``h`` (the initial-node phases), keeping
-    the harmonics of each perturber whose orbital period fits in the span.
+    the harmonics of each perturber that covers at least 90% of its orbit in the span.
 
     Parameters
     ----------
@@ -191,7 +197,7 @@ def mean_node_rate(t: Array, h: Array, perturbers: list[PointMass] | tuple[Point
     columns = [np.ones_like(t), t - t[0]]
     for p in perturbers:
         n = p.orbit.mean_motion
-        if n * span >= 2 * np.pi:
+        if n * span >= 0.9 * 2 * np.pi:
             columns += [f(k * n * (t - t[0])) for k in (1, 2, 3) for f in (np.cos, np.sin)]
     design = np.stack(columns, axis=-1)
     coefficients = np.linalg.lstsq(design, mean, rcond=None)[0]
@@ -258,11 +264,12 @@ def precession_rates(
     ----------
     body : {"earth", "mars"}
     integrate : float, optional
-        Years of full (splitting) integration; none by default. At least one
-        orbit of the slowest perturber is needed to remove its eccentricity
-        modulation (one year for the Earth, 1.9 for Mars).
+        Years of full (splitting) integration, honoured exactly (the last step is
+        shortened to end there); none by default. At least one orbit of the slowest
+        perturber is needed to remove its eccentricity modulation (one year for the
+        Earth, 1.9 for Mars).
     step : float, optional
-        Splitting step in seconds (default :func:`default_step`).
+        Splitting step in seconds (default :func:`default_step`), at most half the span.
     order : {2, 4, 6}
         Splitting order (2 suffices for the mean rate; see the module docstring).
     secular_years : float
@@ -272,11 +279,21 @@ def precession_rates(
     -------
     PrecessionRates
 
+    Raises
+    ------
+    ValueError
+        For a step longer than half the span, or a run that cannot fit in memory or
+        time (:func:`andoyer._limits.check_size`).
+
     Examples
     --------
     >>> rates = precession_rates("earth")
     >>> rates.perturbers, round(rates.secular, 2)
     (('Sun', 'Moon'), 50.48)
+    >>> precession_rates("earth", integrate=1.0, step=1e8)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    ValueError: expected a step of at most half the span ... got step=100000000.0 s
     """
     key = _planet(body)
     model, states = precession_problem(key)
@@ -297,10 +314,23 @@ def precession_rates(
     if not (np.isfinite(step) and step > 0):
         msg = f"expected a positive finite step in seconds, got {step!r}"
         raise ValueError(msg)
-    count = max(int(np.ceil(integrate * JULIAN_YEAR / step)), 2)
+    span = integrate * JULIAN_YEAR
+    if not step <= span / 2:
+        msg = (
+            f"expected a step of at most half the span so that the fit has three points "
+            f"({span / 2:.6g} s for integrate={integrate!r} years), got step={step!r} s"
+        )
+        raise ValueError(msg)
+    count = int(np.floor(span / step))
+    # one output per step (each holds every state), refused before anything is allocated
+    check_size(
+        "a precession integration",
+        steps=(count + 1) * len(splitting_coefficients(order)) * states.size,
+        nbytes=(count + 2) * (8 + 2 * OUTPUT_BYTES * states.size),
+    )
     t = step * np.arange(count + 1)
+    if span - t[-1] > 1e-9 * step:  # the span exactly: the last step is shortened to end there
+        t = np.append(t, span)
     full = propagate(model, states, t[:, None], method="splitting", step=step, order=order)
     integrated = -mean_node_rate(t, _node(full, h0), perturbers) * JULIAN_YEAR / ARCSEC
-    return PrecessionRates(
-        key, rates.perturbers, rates.obliquity, secular, integrated, count * step / JULIAN_YEAR, step
-    )
+    return PrecessionRates(key, rates.perturbers, rates.obliquity, secular, integrated, integrate, step)
