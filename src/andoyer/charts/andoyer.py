@@ -30,7 +30,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from andoyer import _quaternion as quat
 from andoyer._fastmath import atan2_2pi, chunked, wrap_2pi
-from andoyer._validation import as_finite, broadcast, broadcast_finite, check_momenta
+from andoyer._validation import as_finite, broadcast, broadcast_finite, check_magnitude, check_momenta
 from andoyer.charts.euler import Euler, transverse_momentum
 from andoyer.charts.singular import warn_if_singular
 
@@ -256,6 +256,8 @@ def andoyer_from_euler(
     """
     names = ("phi", "theta", "psi", "Phi", "Theta", "Psi")
     phi, theta, psi, Phi, Theta, Psi = broadcast_finite(names, (phi, theta, psi, Phi, Theta, Psi))
+    for name, momentum in (("Phi", Phi), ("Theta", Theta), ("Psi", Psi)):
+        check_magnitude(momentum, name)
     numerator_x, st = transverse_momentum(Phi, Psi, theta)
     numerator_y, _ = transverse_momentum(Psi, Phi, theta)
     if np.any(st == 0):

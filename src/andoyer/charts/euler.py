@@ -27,7 +27,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer import _quaternion as quat
-from andoyer._validation import as_finite, broadcast, broadcast_finite
+from andoyer._validation import as_finite, broadcast, broadcast_finite, check_magnitude
 from andoyer.charts.singular import warn_if_singular
 
 __all__ = ["Euler", "euler_matrix", "euler_to_hub", "hub_to_euler", "transverse_momentum"]
@@ -116,6 +116,8 @@ def euler_to_hub(
     names = ("phi", "theta", "psi", "Phi", "Theta", "Psi")
     values = (phi, theta, psi, Phi, Theta, Psi)
     phi, theta, psi, Phi, Theta, Psi = broadcast_finite(names, values)
+    for name, momentum in (("Phi", Phi), ("Theta", Theta), ("Psi", Psi)):
+        check_magnitude(momentum, name)
     if np.any((theta < 0) | (theta > np.pi)):
         bad = float(theta[(theta < 0) | (theta > np.pi)].flat[0])
         msg = f"expected 0 <= theta <= pi, got theta = {bad!r}"

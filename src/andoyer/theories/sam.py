@@ -35,6 +35,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from andoyer._validation import as_finite
 from andoyer.series import CompiledSeries, LieTransform, PoissonRing, PoissonSeries, deprit, lie_sum
 
 __all__ = [
@@ -135,7 +136,7 @@ def beta_polynomial_value(coeffs: BetaPolynomial, beta: ArrayLike) -> NDArray[np
     >>> float(beta_polynomial_value((Fraction(3, 4), 0, Fraction(9, 32)), 0.5))
     0.8203125
     """
-    b = np.asarray(beta, dtype=np.float64)
+    b = as_finite(beta, "beta")
     out = np.zeros_like(b)
     for c in reversed(coeffs):
         out = out * b + float(c)
