@@ -178,7 +178,7 @@ def check_phase(rate: float, t: ArrayLike, what: str = "the motion") -> None:
             f"the phase of {what} keeps only {digits:.1f} digits: {detail}, an error of about "
             f"{phase * 2.0**-52:.1g} rad from the float64 rounding of t and ω"
         )
-        warnings.warn(PhasePrecisionWarning(msg), stacklevel=caller_stacklevel() + 1)
+        warnings.warn(PhasePrecisionWarning(msg), stacklevel=caller_stacklevel())
 
 
 def memory_limit() -> int:

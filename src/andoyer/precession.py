@@ -210,6 +210,28 @@ def _node(states: State, h0: Array | float) -> Array:
     return np.unwrap(np.arctan2(M[..., 0], -M[..., 1]) - h0, axis=0)
 
 
+def _integration_steps(years: float, step: float, order: int, n_states: int) -> int:
+    """Whole steps of the full integration, refused when the step or the size is not sensible."""
+    if not (np.isfinite(step) and step > 0):
+        msg = f"expected a positive finite step in seconds, got {step!r}"
+        raise ValueError(msg)
+    span = years * JULIAN_YEAR
+    if not step <= span / 2:
+        msg = (
+            f"expected a step of at most half the span so that the fit has three points "
+            f"({span / 2:.6g} s for integrate={years!r} years), got step={step!r} s"
+        )
+        raise ValueError(msg)
+    steps = np.floor(span / step)
+    # one output per step (each holds every state), refused before anything is allocated
+    check_size(
+        "a precession integration",
+        steps=(steps + 1) * len(splitting_coefficients(order)) * n_states,
+        nbytes=(steps + 2) * (8 + 2 * OUTPUT_BYTES * n_states),
+    )
+    return int(steps)
+
+
 @dataclass(frozen=True)
 class PrecessionRates:
     """Precession rates of a planet's angular momentum about its ecliptic pole, arcseconds per Julian year.
@@ -304,30 +326,16 @@ def precession_rates(
         if value is not None and not (np.isfinite(value) and value > 0):
             msg = f"expected a positive number of years for {name}, got {value!r}"
             raise ValueError(msg)
+    if integrate is not None:  # every refusal before the secular run
+        step = default_step(key) if step is None else float(step)
+        count = _integration_steps(integrate, step, order, states.size)
     t = np.linspace(0.0, secular_years * JULIAN_YEAR, 401)
     mean = propagate(model, states, t[:, None], method="secular")
     secular = -mean_node_rate(t, _node(mean, h0)) * JULIAN_YEAR / ARCSEC
     rates = PrecessionRates(key, tuple(p.name for p in perturbers), float(OBLIQUITY[key]), secular)
     if integrate is None:
         return rates
-    step = default_step(key) if step is None else float(step)
-    if not (np.isfinite(step) and step > 0):
-        msg = f"expected a positive finite step in seconds, got {step!r}"
-        raise ValueError(msg)
     span = integrate * JULIAN_YEAR
-    if not step <= span / 2:
-        msg = (
-            f"expected a step of at most half the span so that the fit has three points "
-            f"({span / 2:.6g} s for integrate={integrate!r} years), got step={step!r} s"
-        )
-        raise ValueError(msg)
-    count = int(np.floor(span / step))
-    # one output per step (each holds every state), refused before anything is allocated
-    check_size(
-        "a precession integration",
-        steps=(count + 1) * len(splitting_coefficients(order)) * states.size,
-        nbytes=(count + 2) * (8 + 2 * OUTPUT_BYTES * states.size),
-    )
     t = step * np.arange(count + 1)
     if span - t[-1] > 1e-9 * step:  # the span exactly: the last step is shortened to end there
         t = np.append(t, span)

@@ -28,12 +28,16 @@ as well as the small secular drift of the fast phases ``∂⟨ΔH⟩/∂L``,
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.integrate import solve_ivp
 from scipy.spatial.transform import Rotation
 
 from andoyer import _quaternion as quat
+from andoyer._limits import PhasePrecisionWarning
+from andoyer._validation import as_finite
 from andoyer.free import FreeRotation
 from andoyer.integrate.output import gather_states, output_times
 from andoyer.integrate.secular import SecularGravityGradient
@@ -130,8 +134,8 @@ def integrate_secular(
     -0.1
     """
     averaged, frames = secular_parts(model)
-    times, unique, shape = output_times(state, t)
-    t0 = float(t0)
+    t0 = float(as_finite(t0, "t0"))
+    times, unique, shape = output_times(state, t, model.body.moments, t0)
     q0 = state.quaternion.reshape(-1, 4)
     m0 = state.m_body.reshape(-1, 3)
     M0 = state.m_reference.reshape(-1, 3)
@@ -167,7 +171,9 @@ def integrate_secular(
             msg = f"expected the secular integration to succeed, got: {sol.message}"
             raise ValueError(msg)
         means.update({float(x): y.reshape(n, 3) for x, y in zip(sol.t, sol.y.T, strict=True)})
-    free = FreeRotation(model.body).propagate(State.from_quaternion(q0, m0), (unique - t0)[:, None])
+    with warnings.catch_warnings():  # the phase of the fast angles was checked above, with the output times
+        warnings.simplefilter("ignore", PhasePrecisionWarning)
+        free = FreeRotation(model.body).propagate(State.from_quaternion(q0, m0), (unique - t0)[:, None])
     h0, I0 = _node_and_inclination(M0)
     values: dict[float, tuple[Array, Array]] = {}
     for k, time in enumerate(unique):
