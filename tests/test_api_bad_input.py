@@ -150,6 +150,27 @@ CASES = [
         "expected",
     ),
     (
+        integrate.integrate_euler_poisson,
+        integrate.integrate_euler_poisson,
+        (MODEL.body, TOP, M0, [0, 0, 1.0], 1e300),
+        ValueError,
+        r"expected times with \|ω t\|",
+    ),
+    (
+        integrate.integrate_euler_poisson,
+        integrate.integrate_euler_poisson,
+        (MODEL.body, TOP, M0, [0, 0, 1.0], []),
+        ValueError,
+        "expected at least one output time",
+    ),
+    (
+        integrate.integrate_euler_poisson,
+        integrate.integrate_euler_poisson,
+        (MODEL.body, TOP, M0, [0, 0, 1.0], 1e9),
+        ValueError,
+        "expected a DOP853 run of at most",
+    ),
+    (
         integrate.euler_poisson_rates,
         integrate.euler_poisson_rates,
         (MODEL.body, TOP, [1.0, 2.0], [0, 0, 1.0]),
