@@ -20,6 +20,7 @@ Time enters the kicks at the substep's time, the free flow advancing it.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from typing import Any
 
@@ -368,7 +369,7 @@ def integrate_splitting(
         step_seconds=STEP_SECONDS if tables is not None else _PYTHON_SUBSTEP_SECONDS / max(q0.shape[0], 1),
     )
     values: dict[float, tuple[Array, Array]] = {}
-    with progress(steps, "splitting") as bar:
+    with progress(math.ceil(steps), "splitting") as bar:
         for direction in (1.0, -1.0):
             targets = np.sort(unique[(unique - t0) * direction > 0])[:: int(direction)]
             q, m, now = q0, m0, t0
