@@ -231,6 +231,7 @@ EXEMPT = {
     "RotationMode": "an enum",
     "Symmetry": "an enum",
     "SingularChartWarning": "a warning class",
+    "PhasePrecisionWarning": "a warning class",
     "Regime": "an enum",
     "FreePeriods": "a named tuple of results",
     "Andoyer": "a named tuple of results",

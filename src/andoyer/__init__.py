@@ -15,6 +15,7 @@ Examples
 """
 
 from andoyer import bodies, charts, free, integrate, liepoisson, perturbations, series, special, theories
+from andoyer._limits import PhasePrecisionWarning
 from andoyer.body import RigidBody, RotationMode, Symmetry
 from andoyer.charts import SingularChartWarning
 from andoyer.free import FreeRotation
@@ -23,6 +24,7 @@ from andoyer.state import State
 
 __all__ = [
     "FreeRotation",
+    "PhasePrecisionWarning",
     "RigidBody",
     "RotationMode",
     "SingularChartWarning",
