@@ -32,7 +32,7 @@ import os
 import sys
 import warnings
 from collections.abc import Iterator
-from contextlib import contextmanager
+from contextlib import contextmanager, nullcontext
 from pathlib import Path
 from typing import Any
 
@@ -49,10 +49,12 @@ __all__ = [
     "caller_stacklevel",
     "check_phase",
     "check_size",
+    "check_spin_phase",
     "format_bytes",
     "memory_limit",
     "progress",
     "show_progress",
+    "spin_bound",
     "spin_rate",
 ]
 
@@ -69,6 +71,7 @@ STEP_SECONDS = 1.3e-6
 MAX_STEPS = 10**10
 
 _PACKAGE = str(Path(__file__).resolve().parent)
+_NO_CONTEXT = nullcontext()
 
 
 class PhasePrecisionWarning(UserWarning):
@@ -124,9 +127,15 @@ def spin_rate(moments: ArrayLike, m: ArrayLike) -> float:
     m = np.asarray(m, dtype=np.float64)
     if m.size == 0 or moments.size == 0:
         return 0.0
-    with np.errstate(over="ignore", invalid="ignore"):
-        rate = np.sqrt(np.sum(m * m, axis=-1)) / np.min(moments, axis=-1)
-    return float(np.max(rate))
+    # scaled by the largest component, so that no square overflows (this runs on every free flow)
+    largest = float(np.max(np.abs(m)))
+    if largest == 0.0:
+        return 0.0
+    u = m / largest
+    smallest = np.min(moments, axis=-1)
+    with np.errstate(over="ignore") if float(np.min(smallest)) < 1e-300 else _NO_CONTEXT:
+        rate = np.max(np.sqrt(np.sum(u * u, axis=-1)) / smallest)
+    return largest * float(rate)  # a Python float: an overflow is inf, without a warning
 
 
 def check_phase(rate: float, t: ArrayLike, what: str = "the motion") -> None:
@@ -162,9 +171,8 @@ def check_phase(rate: float, t: ArrayLike, what: str = "the motion") -> None:
     t = np.asarray(t, dtype=np.float64)
     if t.size == 0 or not rate > 0:
         return
-    with np.errstate(over="ignore", invalid="ignore"):
-        span = float(np.max(np.abs(t)))
-        phase = abs(rate) * span
+    span = float(np.max(np.abs(t)))
+    phase = abs(rate) * span  # Python floats: an overflow is inf, refused below
     detail = f"|ω t| = {phase:.3g} rad (ω = {rate:.3g} rad per unit time, |t| = {span:.3g})"
     if phase >= PHASE_ERROR_LIMIT:
         msg = (
@@ -179,6 +187,44 @@ def check_phase(rate: float, t: ArrayLike, what: str = "the motion") -> None:
             f"{phase * 2.0**-52:.1g} rad from the float64 rounding of t and ω"
         )
         warnings.warn(PhasePrecisionWarning(msg), stacklevel=caller_stacklevel())
+
+
+def spin_bound(moments: ArrayLike, m: ArrayLike) -> float:
+    """A cheap upper bound of :func:`spin_rate`: ``√3 max|mᵢ| / min(I)`` (a Python float, ``inf`` past range).
+
+    Examples
+    --------
+    >>> spin_bound([1.0, 2.0, 4.0], [[0.0, 0.0, 2.0], [3.0, 0.0, 4.0]]) >= 5.0
+    True
+    """
+    m, moments = np.asarray(m, dtype=np.float64), np.asarray(moments, dtype=np.float64)
+    if m.size == 0 or moments.size == 0:
+        return 0.0
+    # the methods skip np.max's dispatch; Python floats overflow to inf without a warning
+    return 1.7320508075688772 * float(abs(m).max()) / float(moments.min())
+
+
+def check_spin_phase(
+    moments: ArrayLike, m: ArrayLike, t: ArrayLike, what: str = "the motion", bound: float | None = None
+) -> None:
+    """:func:`check_phase` at the :func:`spin_rate` of states ``m`` (..., 3) of a body ``moments``.
+
+    The exact rate is computed only where :func:`spin_bound` (or ``bound``, the caller's
+    cached value) does not already put the phase below the warning: the free flow runs
+    this on every call, often for one state.
+
+    Examples
+    --------
+    >>> check_spin_phase([1.0, 2.0, 3.0], [0.0, 0.0, 2.0], [0.0, 1e3])
+    """
+    t = np.asarray(t, dtype=np.float64)
+    if t.size == 0:
+        return
+    if bound is None:
+        bound = spin_bound(moments, m)
+    if bound * float(abs(t).max()) <= PHASE_WARN_LIMIT:
+        return
+    check_phase(spin_rate(moments, m), t, what)
 
 
 def memory_limit() -> int:

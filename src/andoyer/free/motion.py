@@ -28,7 +28,7 @@ from typing import NamedTuple
 import numpy as np
 
 from andoyer._jit import NUMBA
-from andoyer._limits import check_phase, spin_rate
+from andoyer._limits import check_spin_phase, spin_bound
 from andoyer.free import compiled_eval as _ceval
 from andoyer.free import constants as _const
 from andoyer.free import separatrix as _sep
@@ -120,7 +120,8 @@ class FreeMotion:
         moments = np.broadcast_to(moments, (*shape, 3)).reshape(-1, 3)
         m0 = np.broadcast_to(m0, (*shape, 3)).reshape(-1, 3)
         n = moments.shape[0]
-        self._rate = spin_rate(moments, m0)  # bounds every phase rate (andoyer._limits)
+        self._spin = (moments, m0)  # their spin rate bounds every phase rate (andoyer._limits)
+        self._spin_bound = None
         # solve the scaled problem (powers of two, exact): internal time 2^(b−a) t
         if NUMBA:
             regime, moments, m0, a, b = classify_and_scale(moments, m0)
@@ -275,7 +276,9 @@ class FreeMotion:
         except ValueError:
             msg = f"expected times broadcastable with the states' shape {self.shape}, got shape {t.shape}"
             raise ValueError(msg) from None
-        check_phase(self._rate, t, "the free motion")
+        if self._spin_bound is None:
+            self._spin_bound = spin_bound(*self._spin)
+        check_spin_phase(*self._spin, t, "the free motion", self._spin_bound)
         return evaluate_blocks(self._groups, self.shape, t, attitude)
 
 

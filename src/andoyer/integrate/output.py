@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from andoyer._limits import check_phase, check_size, spin_rate
+from andoyer._limits import check_size, check_spin_phase
 from andoyer._validation import as_finite
 from andoyer.state import State
 
@@ -43,7 +43,7 @@ def output_times(
         t0 = float(as_finite(t0, "t0"))
         with np.errstate(over="ignore"):  # an overflow is an infinite phase: refused
             spans = unique - t0
-        check_phase(spin_rate(moments, state.m_body), spans, "the propagation")
+        check_spin_phase(moments, state.m_body, spans, "the propagation")
     return times, unique, shape
 
 
