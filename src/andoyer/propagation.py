@@ -81,7 +81,15 @@ def propagate(model: Model, state: State, t: ArrayLike, method: str = "reference
         ``step``, or a model the method cannot integrate (non-Hamiltonian or
         momentum-dependent terms other than precessing frames for
         ``"splitting"``; anything but gravity gradients on Kepler orbits and
-        precessing frames for ``"secular"``).
+        precessing frames for ``"secular"``); for no output time; for times
+        whose spin phase ``|ω (t − t0)|`` (``ω = |m|/min(I)``) reaches ``2⁵²`` rad
+        (no digit of it left); and for a run that cannot fit in memory or time
+        (:func:`andoyer._limits.check_size`), before it starts.
+
+    Warns
+    -----
+    PhasePrecisionWarning
+        For times whose spin phase keeps fewer than six digits (``|ω (t − t0)| > 4.5·10⁹`` rad).
 
     Examples
     --------
