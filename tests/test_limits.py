@@ -184,6 +184,18 @@ def test_size_reference_refused_from_its_step_estimate(t, rtol):
     assert str(info.value).endswith(f"would need {format_bytes(steps * 1050)}")
 
 
+def test_size_secular_refused_from_its_step_estimate():
+    # the Moon's mean motion 2.66e-6 rad/s over 1e8 years: 0.007 steps per radian of 0.5 ms, 8.6 hours
+    model, states = andoyer.precession.precession_problem("earth")
+    moon = max(p.orbit.mean_motion for p in model.perturbation.perturbers)
+    hours = 0.007 * moon * 1e8 * JULIAN_YEAR * 5e-4 / 3600
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", PhasePrecisionWarning)  # 2.3e11 rad of spin: warned, not refused
+        with pytest.raises(ValueError, match="expected a secular run of at most") as info:
+            propagate(model, states[:1], [0.0, 1e8 * JULIAN_YEAR], method="secular")
+    assert f"(about {hours:.2g} hours)" in str(info.value)
+
+
 def test_size_check_names_what_it_would_need():
     with pytest.raises(ValueError, match=r"would need 7\.11 PiB$"):
         check_size("a test", nbytes=8e15)
