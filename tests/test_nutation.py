@@ -410,7 +410,7 @@ def test_cli_nutation_bad_output_writes_no_plot(tmp_path, monkeypatch, capsys):
     monkeypatch.chdir(tmp_path)
     argv = ["nutation", "earth", "--span", "0", "1", "--step", "0.1", "--plot", "n.png"]
     assert main([*argv, "--output", str(tmp_path / "missing" / "out.csv")]) == 2
-    assert "expected an existing directory for --output" in capsys.readouterr().err
+    assert "expected an existing directory for the output" in capsys.readouterr().err
     assert list(tmp_path.iterdir()) == []
 
 

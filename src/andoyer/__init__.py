@@ -36,6 +36,7 @@ if TYPE_CHECKING:  # the eager names, for type checkers and IDEs
         special,
         theories,
     )
+    from andoyer._limits import PhasePrecisionWarning
     from andoyer.body import NonPhysicalInertiaWarning, RigidBody, RotationMode, Symmetry
     from andoyer.charts import SingularChartWarning
     from andoyer.free import FreeRotation
@@ -46,6 +47,7 @@ if TYPE_CHECKING:  # the eager names, for type checkers and IDEs
 _LAZY = {
     "FreeRotation": "andoyer.free",
     "NonPhysicalInertiaWarning": "andoyer.body",
+    "PhasePrecisionWarning": "andoyer._limits",
     "RigidBody": "andoyer.body",
     "RotationMode": "andoyer.body",
     "SingularChartWarning": "andoyer.charts",
@@ -72,6 +74,7 @@ _LAZY = {
 __all__ = [
     "FreeRotation",
     "NonPhysicalInertiaWarning",
+    "PhasePrecisionWarning",
     "RigidBody",
     "RotationMode",
     "SingularChartWarning",

@@ -13,13 +13,25 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 __all__ = [
+    "MAX_ANGLE",
+    "MAX_MOMENTUM",
     "as_finite",
     "as_vectors",
     "broadcast",
     "broadcast_finite",
+    "check_angle",
+    "check_magnitude",
     "check_momenta",
     "describe",
 ]
+
+#: Largest magnitude of an angular momentum (or any of its components or conjugate momenta):
+#: its square, a sum of three squares and their ratios to the moments stay finite in float64
+#: (``(10¹⁵⁰)² = 10³⁰⁰ < 1.8·10³⁰⁸``), so charts and energies never overflow.
+MAX_MOMENTUM = 1e150
+#: Largest angle (radians) accepted by a chart: at 2⁵² rad one ulp is a whole radian, and no digit
+#: of the angle is left (``ulp(x) = x 2⁻⁵²``).
+MAX_ANGLE = 2.0**52
 
 
 def describe(value: Any) -> str:
@@ -68,8 +80,47 @@ def broadcast_finite(names: Sequence[str], values: Sequence[ArrayLike]) -> list[
     return broadcast(*((name, as_finite(value, name)) for name, value in zip(names, values, strict=True)))
 
 
+def check_magnitude(value: NDArray[np.float64], name: str, bound: float = MAX_MOMENTUM) -> None:
+    """Refuse momenta of magnitude above ``bound`` (default :data:`MAX_MOMENTUM`), before they overflow.
+
+    Examples
+    --------
+    >>> check_magnitude(np.array([1.0, -1e300]), "G")
+    Traceback (most recent call last):
+    ...
+    ValueError: expected G of magnitude at most 1e+150 (so that its square stays finite), got G = -1e+300
+    """
+    big = np.abs(value) > bound
+    if np.any(big):
+        msg = (
+            f"expected {name} of magnitude at most {bound:.0e} (so that its square stays finite), "
+            f"got {name} = {float(np.asarray(value)[big].flat[0])!r}"
+        )
+        raise ValueError(msg)
+
+
+def check_angle(value: NDArray[np.float64], name: str) -> None:
+    """Refuse angles of magnitude above :data:`MAX_ANGLE`, where no digit of them is left.
+
+    Examples
+    --------
+    >>> check_angle(np.array([0.3, -1e300]), "l")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    ValueError: expected l of magnitude at most 4.5e+15 rad (beyond, ...), got l = -1e+300
+    """
+    big = np.abs(value) > MAX_ANGLE
+    if np.any(big):
+        msg = (
+            f"expected {name} of magnitude at most {MAX_ANGLE:.2g} rad (beyond, not one digit of the "
+            f"angle is left), got {name} = {float(np.asarray(value)[big].flat[0])!r}"
+        )
+        raise ValueError(msg)
+
+
 def check_momenta(L: NDArray[np.float64], G: NDArray[np.float64], H: NDArray[np.float64]) -> None:
-    """Check Andoyer momenta: ``G > 0``, ``|L| <= G`` and ``|H| <= G``."""
+    """Check Andoyer momenta: ``G > 0``, ``|L| <= G``, ``|H| <= G`` and ``G <= MAX_MOMENTUM``."""
+    check_magnitude(G, "G")
     if np.any(G <= 0):
         msg = f"expected G > 0, got G = {float(np.min(G))!r}"
         raise ValueError(msg)

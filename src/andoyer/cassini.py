@@ -358,6 +358,14 @@ class ColomboTop:
         if not 0 < self.inclination < math.pi / 2:
             msg = f"expected 0 < inclination < pi/2, got {self.inclination!r}"
             raise ValueError(msg)
+        if -self.node_rate < 1e-12 * (self.alpha + self.beta):
+            # Slower, states 2 and 4 merge (in double precision) into the circle of equilibria
+            # of a fixed orbit, and their numbering and stability lose their meaning.
+            msg = (
+                "expected a node rate at least 1e-12 of the precession constants (a precessing "
+                f"orbit), got {self.node_rate!r} against alpha + beta = {self.alpha + self.beta!r}"
+            )
+            raise ValueError(msg)
 
     def equation(self, theta: ArrayLike) -> Array:
         """The Cassini function ``F(θ) = (α cos θ + β) sin θ + g sin(θ − i)``, shape of ``theta``.

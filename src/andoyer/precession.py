@@ -28,7 +28,8 @@ longitude or node) and appears with period 1 or 2 in ``h₀``, so the average
 cancels the 18.6-year and semi-annual nutations that would otherwise swamp
 a fit over a few years. The slope of ``h̄(t)`` is then fitted by least squares
 together with the first three harmonics of each perturber's mean motion
-(whose orbit fits in the span): those absorb the modulation of the torque by
+(whose orbit covers at least 90% of the span, so that one Julian year keeps the
+Sun's sidereal year): those absorb the modulation of the torque by
 the orbital eccentricity, which does not depend on ``h₀``.
 
 **Splitting step.** Successive kicks sample the body-fixed (triaxial) part of
@@ -37,9 +38,11 @@ of half a rotation aliases it to a slow, spurious torque. :func:`default_step`
 therefore takes an odd number of quarter rotations, so that successive kicks
 alternate in sign, and at most 1/12 of the shortest orbital period (2.244
 days for the Earth, 57.20 days for Mars). The precession is a first-order
-effect of the torque, so order 2 suffices (the default). Measured rates
-(″/yr; one year for the Earth, 1.9 years for Mars; secular model 50.4788 and
-7.5909):
+effect of the torque, so order 2 suffices (the default). The span is
+honoured exactly: the last step is shortened to end on it. Measured rates
+(″/yr; one year for the Earth, 1.9 years for Mars, both rounded up to whole
+steps when measured; secular model 50.4788 and 7.5909; with the exact span,
+Mars at the default step gives 7.5886, the Earth 50.4789):
 
 =====  ==========================  ======  =======  ========
 body   step (rotations)            days    order 2  order 4
@@ -66,7 +69,10 @@ import numpy as np
 from numpy.typing import NDArray
 
 from andoyer import bodies
+from andoyer._limits import check_size
 from andoyer.body import RigidBody
+from andoyer.integrate.output import OUTPUT_BYTES
+from andoyer.integrate.splitting import splitting_coefficients
 from andoyer.perturbations.gravity import GravityGradient, PointMass
 from andoyer.perturbations.model import Model
 from andoyer.perturbations.solar_system import JULIAN_YEAR, OBLIQUITY, mean_perturbers
@@ -190,10 +196,12 @@ def fit_trend(t: Array, y: Array, frequencies: Any = ()) -> tuple[float, float, 
 
     .. math:: y(t) \approx a + b\,t + \sum_j \big[c_j \cos \nu_j (t - t_0) + s_j \sin \nu_j (t - t_0)\big]
 
-    (``t₀ = t[0]``), keeping only the frequencies ``ν_j`` whose period fits in the span
-    (``ν_j (t_{-1} - t_0) ≥ 2π``): a shorter arc of a sinusoid is nearly a straight line and
-    would trade places with the trend.  Without the periodic terms a slope fitted over a span
-    that is not a whole number of their periods is biased by them.
+    (``t₀ = t[0]``), keeping only the frequencies ``ν_j`` of which the span holds at least 90%
+    of a period (``ν_j (t_{-1} - t_0) ≥ 0.9 · 2π``): a much shorter arc of a sinusoid is nearly
+    a straight line and would trade places with the trend, while the 10% margin keeps the Sun's
+    orbit (a sidereal year, 365.256 d) in a fit over one Julian year.  Without the periodic
+    terms a slope fitted over a span that is not a whole number of their periods is biased by
+    them.
 
     Parameters
     ----------
@@ -212,7 +220,7 @@ def fit_trend(t: Array, y: Array, frequencies: Any = ()) -> tuple[float, float, 
     periodic : numpy.ndarray, shape (T,)
         The fitted periodic terms at ``t``.
     kept : numpy.ndarray, shape (K,)
-        The frequencies fitted (``|ν_j|`` whose period fits in the span).
+        The frequencies fitted (``|ν_j|`` of which the span holds 90% of a period or more).
 
     Examples
     --------
@@ -238,7 +246,7 @@ def fit_trend(t: Array, y: Array, frequencies: Any = ()) -> tuple[float, float, 
     if span == 0:
         msg = f"expected times spanning a nonzero interval, got {t.size} times from {t[:1]} to {t[-1:]}"
         raise ValueError(msg)
-    nu = nu[nu * abs(span) >= 2 * np.pi]
+    nu = nu[nu * abs(span) >= 0.9 * 2 * np.pi]
     if t.size < 2 + 2 * nu.size:
         msg = f"expected at least {2 + 2 * nu.size} times for the fit, got {t.size}"
         raise ValueError(msg)
@@ -256,7 +264,8 @@ def mean_node_rate(t: Array, h: Array, perturbers: list[PointMass] | tuple[Point
 
     Fits ``h̄(t) = a + b t + Σ_p Σ_{k=1..3} [c_pk cos(k n_p t) + s_pk sin(k n_p t)]`` to the
     average ``h̄`` over the last axis of ``h`` (the initial-node phases), keeping
-    the harmonics of each perturber whose orbital period fits in the span (:func:`fit_trend`).
+    the harmonics of each perturber that covers at least 90% of its orbit in the span
+    (:func:`fit_trend`).
 
     Parameters
     ----------
@@ -289,7 +298,15 @@ def mean_node_rate(t: Array, h: Array, perturbers: list[PointMass] | tuple[Point
             f"expected times (T,) with T >= 3 and node values (T,) or (T, P), got {t.shape} and {np.shape(h)}"
         )
         raise ValueError(msg)
-    harmonics = [k * p.orbit.mean_motion for p in perturbers for k in (1, 2, 3)]
+    # A perturber's overtones are fitted only with its fundamental: alone they would fit the
+    # part of an unresolved orbit that is its motion's trend.
+    span = float(t[-1] - t[0])
+    harmonics = [
+        k * p.orbit.mean_motion
+        for p in perturbers
+        if p.orbit.mean_motion * span >= 0.9 * 2 * np.pi
+        for k in (1, 2, 3)
+    ]
     return fit_trend(t, mean, harmonics)[1]
 
 
@@ -297,6 +314,28 @@ def _node(states: State, h0: Array | float) -> Array:
     """Andoyer's node ``h = atan2(M1, -M2)`` minus ``h0``, unwrapped along the first (time) axis."""
     M = states.m_reference
     return np.unwrap(np.arctan2(M[..., 0], -M[..., 1]) - h0, axis=0)
+
+
+def _integration_steps(years: float, step: float, order: int, n_states: int) -> int:
+    """Whole steps of the full integration, refused when the step or the size is not sensible."""
+    if not (np.isfinite(step) and step > 0):
+        msg = f"expected a positive finite step in seconds, got {step!r}"
+        raise ValueError(msg)
+    span = years * JULIAN_YEAR
+    if not step <= span / 2:
+        msg = (
+            f"expected a step of at most half the span so that the fit has three points "
+            f"({span / 2:.6g} s for integrate={years!r} years), got step={step!r} s"
+        )
+        raise ValueError(msg)
+    steps = np.floor(span / step)
+    # one output per step (each holds every state), refused before anything is allocated
+    check_size(
+        "a precession integration",
+        steps=(steps + 1) * len(splitting_coefficients(order)) * n_states,
+        nbytes=(steps + 2) * (8 + 2 * OUTPUT_BYTES * n_states),
+    )
+    return int(steps)
 
 
 @dataclass(frozen=True)
@@ -354,11 +393,12 @@ def precession_rates(
     ----------
     body : {"earth", "mars"}
     integrate : float, optional
-        Years of full (splitting) integration; none by default. At least one
-        orbit of the slowest perturber is needed to remove its eccentricity
-        modulation (one year for the Earth, 1.9 for Mars).
+        Years of full (splitting) integration, honoured exactly (the last step is
+        shortened to end there); none by default. At least one orbit of the slowest
+        perturber is needed to remove its eccentricity modulation (one year for the
+        Earth, 1.9 for Mars).
     step : float, optional
-        Splitting step in seconds (default :func:`default_step`).
+        Splitting step in seconds (default :func:`default_step`), at most half the span.
     order : {2, 4, 6}
         Splitting order (2 suffices for the mean rate; see the module docstring).
     secular_years : float
@@ -372,11 +412,21 @@ def precession_rates(
     -------
     PrecessionRates
 
+    Raises
+    ------
+    ValueError
+        For a step longer than half the span, or a run that cannot fit in memory or
+        time (:func:`andoyer._limits.check_size`).
+
     Examples
     --------
     >>> rates = precession_rates("earth")
     >>> rates.perturbers, round(rates.secular, 2)
     (('Sun', 'Moon'), 50.48)
+    >>> precession_rates("earth", integrate=1.0, step=1e8)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    ValueError: expected a step of at most half the span ... got step=100000000.0 s
     """
     key = _planet(body)
     model, states = precession_problem(key, dynamical_ellipticity)
@@ -387,20 +437,19 @@ def precession_rates(
         if value is not None and not (np.isfinite(value) and value > 0):
             msg = f"expected a positive number of years for {name}, got {value!r}"
             raise ValueError(msg)
+    if integrate is not None:  # every refusal before the secular run
+        step = default_step(key) if step is None else float(step)
+        count = _integration_steps(integrate, step, order, states.size)
     t = np.linspace(0.0, secular_years * JULIAN_YEAR, 401)
     mean = propagate(model, states, t[:, None], method="secular")
     secular = -mean_node_rate(t, _node(mean, h0)) * JULIAN_YEAR / ARCSEC
     rates = PrecessionRates(key, tuple(p.name for p in perturbers), float(OBLIQUITY[key]), secular)
     if integrate is None:
         return rates
-    step = default_step(key) if step is None else float(step)
-    if not (np.isfinite(step) and step > 0):
-        msg = f"expected a positive finite step in seconds, got {step!r}"
-        raise ValueError(msg)
-    count = max(int(np.ceil(integrate * JULIAN_YEAR / step)), 2)
+    span = integrate * JULIAN_YEAR
     t = step * np.arange(count + 1)
+    if span - t[-1] > 1e-9 * step:  # the span exactly: the last step is shortened to end there
+        t = np.append(t, span)
     full = propagate(model, states, t[:, None], method="splitting", step=step, order=order)
     integrated = -mean_node_rate(t, _node(full, h0), perturbers) * JULIAN_YEAR / ARCSEC
-    return PrecessionRates(
-        key, rates.perturbers, rates.obliquity, secular, integrated, count * step / JULIAN_YEAR, step
-    )
+    return PrecessionRates(key, rates.perturbers, rates.obliquity, secular, integrated, integrate, step)

@@ -30,6 +30,7 @@ from __future__ import annotations
 
 from typing import Any
 
+import numpy as np
 from numpy.typing import ArrayLike
 
 from andoyer.integrate.averaged import integrate_secular, secular_parts
@@ -81,7 +82,15 @@ def propagate(model: Model, state: State, t: ArrayLike, method: str = "reference
         ``step``, or a model the method cannot integrate (non-Hamiltonian or
         momentum-dependent terms other than precessing frames for
         ``"splitting"``; anything but gravity gradients on Kepler orbits and
-        precessing frames for ``"secular"``).
+        precessing frames for ``"secular"``); for no output time; for times
+        whose spin phase ``|ω (t − t0)|`` (``ω = |m|/min(I)``) reaches ``2⁵²`` rad
+        (no digit of it left); and for a run that cannot fit in memory or time
+        (:func:`andoyer._limits.check_size`), before it starts.
+
+    Warns
+    -----
+    PhasePrecisionWarning
+        For times whose spin phase keeps fewer than six digits (``|ω (t − t0)| > 4.5·10⁹`` rad).
 
     Examples
     --------
@@ -121,6 +130,13 @@ def propagate(model: Model, state: State, t: ArrayLike, method: str = "reference
     if method == "splitting":
         if "step" not in options:
             msg = "expected a step for method='splitting' (e.g. step=0.01), got none"
+            raise ValueError(msg)
+        times = np.append(np.asarray(t, dtype=float).ravel(), float(options.get("t0", 0.0)))
+        span = float(np.max(times) - np.min(times)) if np.all(np.isfinite(times)) else 0.0
+        step = options["step"]
+        if span > 0 and isinstance(step, int | float) and abs(step) > span:
+            # The steps would be cut at the output times: the run would not be the one asked for.
+            msg = f"expected a step no longer than the span of the times ({span:.6g}), got step={step!r}"
             raise ValueError(msg)
         return integrate_splitting(model, state, t, **options)
     secular_parts(model)

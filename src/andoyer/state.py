@@ -9,7 +9,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.spatial.transform import Rotation
 
 from andoyer import _quaternion as quat
-from andoyer._validation import as_vectors, describe
+from andoyer._validation import as_vectors, check_magnitude, describe
 from andoyer.body import RigidBody
 from andoyer.charts.andoyer import Andoyer, andoyer_to_hub, hub_to_andoyer
 from andoyer.charts.euler import Euler, euler_to_hub, hub_to_euler
@@ -66,6 +66,7 @@ class State(FreeBodyCharts):
     def __init__(self, quaternion: ArrayLike, m_body: ArrayLike) -> None:
         q = as_vectors(quaternion, "quaternion", 4)
         m = as_vectors(m_body, "m_body", 3)
+        check_magnitude(m, "m_body")
         norm = np.linalg.norm(q, axis=-1)
         if np.any(np.abs(norm - 1.0) > 1e-6):
             bad = float(norm.flat[np.argmax(np.abs(norm - 1.0))])
@@ -338,7 +339,11 @@ class State(FreeBodyCharts):
         (2, 3)
         """
         new = shape[0] if len(shape) == 1 and isinstance(shape[0], tuple) else shape
-        return State(self._q.reshape(*new, 4), self._m.reshape(*new, 3))
+        try:
+            return State(self._q.reshape(*new, 4), self._m.reshape(*new, 3))
+        except (TypeError, ValueError) as exc:
+            msg = f"expected a shape with {self.size} states in all, got {new!r}"
+            raise ValueError(msg) from exc
 
     def __repr__(self) -> str:
         if self.shape:

@@ -30,7 +30,16 @@ from numpy.typing import ArrayLike, NDArray
 
 from andoyer import _quaternion as quat
 from andoyer._fastmath import atan2_2pi, chunked, wrap_2pi
-from andoyer._validation import as_finite, broadcast, broadcast_finite, check_momenta
+from andoyer._validation import (
+    MAX_ANGLE,
+    MAX_MOMENTUM,
+    as_finite,
+    broadcast,
+    broadcast_finite,
+    check_angle,
+    check_magnitude,
+    check_momenta,
+)
 from andoyer.charts import _kernels
 from andoyer.charts.euler import Euler, compiled_conversions, scalars, transverse_momentum
 from andoyer.charts.singular import warn_if_singular
@@ -159,10 +168,14 @@ def andoyer_to_hub(
     if one is not None:
         L1, G1, H1 = one[3:]
         slack = 4 * _kernels.EPS * G1
-        if G1 > 0 and abs(L1) - G1 <= slack and abs(H1) - G1 <= slack:
+        # Anything else (G out of range, |L| or |H| above G) takes the array path, which names it.
+        angles_ok = max(map(abs, one[:3])) <= MAX_ANGLE
+        if angles_ok and 0 < G1 <= MAX_MOMENTUM and abs(L1) - G1 <= slack and abs(H1) - G1 <= slack:
             *r, mz = _kernels.andoyer_to_hub_one(*one)
             return np.array(r[:4]), np.array([*r[4:], mz])
     l, g, h = (as_finite(v, n) for n, v in zip("lgh", (l, g, h), strict=True))
+    for name, angle in (("l", l), ("g", g), ("h", h)):
+        check_angle(angle, name)
     L, G, H = _momenta(L, G, H)
     l, g, h, L, G, H = broadcast(("l", l), ("g", g), ("h", h), ("L", L), ("G", G), ("H", H))
     compiled = compiled_conversions(l.size) if unit else None
@@ -298,6 +311,8 @@ def andoyer_from_euler(
     """
     names = ("phi", "theta", "psi", "Phi", "Theta", "Psi")
     phi, theta, psi, Phi, Theta, Psi = broadcast_finite(names, (phi, theta, psi, Phi, Theta, Psi))
+    for name, momentum in (("Phi", Phi), ("Theta", Theta), ("Psi", Psi)):
+        check_magnitude(momentum, name)
     numerator_x, st = transverse_momentum(Phi, Psi, theta)
     numerator_y, _ = transverse_momentum(Psi, Phi, theta)
     if np.any(st == 0):
@@ -352,6 +367,8 @@ def euler_from_andoyer(
     1.570796326795
     """
     l, g, h = (as_finite(v, n) for n, v in zip("lgh", (l, g, h), strict=True))
+    for name, angle in (("l", l), ("g", g), ("h", h)):
+        check_angle(angle, name)
     L, G, H = _momenta(L, G, H)
     l, g, h, L, G, H = broadcast(("l", l), ("g", g), ("h", h), ("L", L), ("G", G), ("H", H))
     I, J = inclinations(L, G, H)

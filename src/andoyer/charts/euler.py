@@ -29,7 +29,15 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer import _quaternion as quat
-from andoyer._validation import as_finite, broadcast, broadcast_finite
+from andoyer._validation import (
+    MAX_ANGLE,
+    MAX_MOMENTUM,
+    as_finite,
+    broadcast,
+    broadcast_finite,
+    check_angle,
+    check_magnitude,
+)
 from andoyer.charts import _kernels
 from andoyer.charts.singular import warn_if_singular
 
@@ -174,7 +182,13 @@ def euler_to_hub(
     names = ("phi", "theta", "psi", "Phi", "Theta", "Psi")
     values = (phi, theta, psi, Phi, Theta, Psi)
     one = scalars(values) if unit else None
-    if one is not None and 0 <= one[1] <= np.pi:
+    # Out-of-range angles or momenta take the array path, which names them.
+    if (
+        one is not None
+        and 0 <= one[1] <= np.pi
+        and max(abs(one[0]), abs(one[2])) <= MAX_ANGLE
+        and max(map(abs, one[3:])) <= MAX_MOMENTUM
+    ):
         *r, status = _kernels.euler_to_hub_one(*one)
         if status == _kernels.INFINITE_MOMENTUM:
             raise ValueError(_INFINITE_MOMENTUM)
@@ -182,6 +196,10 @@ def euler_to_hub(
             warn_if_singular(True, _SINGULAR_TO_HUB, stacklevel + 1)
         return np.array(r[:4]), np.array(r[4:])
     phi, theta, psi, Phi, Theta, Psi = broadcast_finite(names, values)
+    for name, momentum in (("Phi", Phi), ("Theta", Theta), ("Psi", Psi)):
+        check_magnitude(momentum, name)
+    check_angle(phi, "phi")
+    check_angle(psi, "psi")
     if np.any((theta < 0) | (theta > np.pi)):
         bad = float(theta[(theta < 0) | (theta > np.pi)].flat[0])
         msg = f"expected 0 <= theta <= pi, got theta = {bad!r}"

@@ -14,6 +14,7 @@ import argparse
 import importlib
 import re
 import sys
+import warnings
 from collections.abc import Sequence
 from typing import Any
 
@@ -133,19 +134,35 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser = build_parser(_command_in(words))
     args = parser.parse_args(words)
     # After parsing: --help and usage errors end above without loading numpy (cli.output needs it).
+    from andoyer._limits import show_progress
     from andoyer.cli.output import CliError, check_outputs
 
-    try:
-        check_outputs(args)
-        return int(args.run(args) or 0)
-    except (CliError, ValueError) as exc:
-        print(f"andoyer {args.command}: error: {exc}", file=sys.stderr)
-        return 2
-    except BrokenPipeError:
-        return 0
-    except OSError as exc:
-        # The file system said no (a full disk, a read-only place, a vanished folder): the
-        # user's to fix, so one line; any other exception is a bug and keeps its traceback.
-        where = f" ({exc.filename})" if exc.filename else ""
-        print(f"andoyer {args.command}: error: {exc.strerror or exc}{where}", file=sys.stderr)
-        return 2
+    # The library's warnings (a lost phase digit, moments no body has, a singular chart, a
+    # repaired store) are kept until the command has run: each is then one line on stderr, and a
+    # command that fails prints only its error, so every failure is one line.
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            check_outputs(args)
+            with show_progress():
+                code = int(args.run(args) or 0)
+        except (CliError, ValueError) as exc:
+            print(f"andoyer {args.command}: error: {exc}", file=sys.stderr)
+            return 2
+        except BrokenPipeError:
+            return 0
+        except OSError as exc:
+            # The file system said no (a full disk, a read-only place, a vanished folder): the
+            # user's to fix, so one line; any other exception is a bug and keeps its traceback.
+            where = f" ({exc.filename})" if exc.filename else ""
+            print(f"andoyer {args.command}: error: {exc.strerror or exc}{where}", file=sys.stderr)
+            return 2
+    shown = set()
+    for warning in caught:
+        # Only the library's own kind of warning (UserWarning and its subclasses, RuntimeWarning)
+        # is the user's business; the dependencies' deprecation notes are not.
+        text = " ".join(str(warning.message).split())
+        if issubclass(warning.category, UserWarning | RuntimeWarning) and text not in shown:
+            shown.add(text)
+            print(f"andoyer {args.command}: warning: {text}", file=sys.stderr)
+    return code

@@ -3,15 +3,13 @@
 from __future__ import annotations
 
 import argparse
-import sys
-import warnings
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
 
 from andoyer import bodies
-from andoyer.body import NonPhysicalInertiaWarning, RigidBody
+from andoyer.body import RigidBody
 from andoyer.cli.output import CliError, read_csv_columns
 from andoyer.state import State
 
@@ -75,16 +73,11 @@ def body_from_args(args: argparse.Namespace) -> RigidBody:
     """The body named on the command line.
 
     Moments that break the triangle inequality are accepted (Euler's equations hold for any
-    positive moments) with their :class:`~andoyer.body.NonPhysicalInertiaWarning` printed as one
-    line on standard error.
+    positive moments) with their :class:`~andoyer.body.NonPhysicalInertiaWarning`, which
+    :func:`andoyer.cli.main` prints as one line on standard error.
     """
     if getattr(args, "moments", None) is not None:
-        with warnings.catch_warnings(record=True) as caught:
-            warnings.simplefilter("always", NonPhysicalInertiaWarning)
-            body = RigidBody(*args.moments)
-        for warning in caught:
-            print(f"andoyer {args.command}: warning: {warning.message}", file=sys.stderr)
-        return body
+        return RigidBody(*args.moments)
     if getattr(args, "body", None) is not None:
         return bodies.get(args.body)
     msg = "expected --body NAME or --moments I1 I2 I3 for this chart, got neither"

@@ -3,7 +3,11 @@
 from __future__ import annotations
 
 import argparse
+import warnings
 
+import numpy as np
+
+from andoyer._limits import PhasePrecisionWarning, check_phase
 from andoyer.cli.chart_table import add_body_arguments, add_time_arguments, body_from_args, times_from_args
 from andoyer.cli.output import CliError, output_store, output_target
 
@@ -62,19 +66,26 @@ def run(args: argparse.Namespace) -> int:
     out = output_target(args.out) if nc else output_store(args.out)
     if args.sampler == "andoyer":
         sampler = AndoyerSampler(G=tuple(args.G), cos_J=tuple(args.cos_J), cos_I=tuple(args.cos_I))
+        largest = float(np.max(np.abs(args.G)))
     else:
         sampler = MomentumSampler(low=tuple(args.m_low), high=tuple(args.m_high))
-    run_ensemble(
-        sampler,
-        args.samples,
-        times_from_args(args),
-        body=body,
-        out=out,
-        chunk=args.chunk,
-        seed=args.seed,
-        output=args.output,
-        scheduler=args.scheduler,
-        n_workers=args.workers,
-        progress=not args.quiet,
-    )
+        largest = float(np.linalg.norm(np.maximum(np.abs(args.m_low), np.abs(args.m_high))))
+    times = times_from_args(args)
+    # the workers' warnings never reach this terminal: check the phase of the fastest sample here
+    check_phase(largest / float(np.min(body.moments)), times, "the ensemble's free motion")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", PhasePrecisionWarning)  # said once above, not once per chunk
+        run_ensemble(
+            sampler,
+            args.samples,
+            times,
+            body=body,
+            out=out,
+            chunk=args.chunk,
+            seed=args.seed,
+            output=args.output,
+            scheduler=args.scheduler,
+            n_workers=args.workers,
+            progress=not args.quiet,
+        )
     return 0

@@ -70,6 +70,9 @@ def _times(t0: float, t1: float, step: float):  # type: ignore[no-untyped-def]
     if t1 < t0:
         msg = f"expected --span T0 T1 with T1 >= T0, got {t0!r} {t1!r}"
         raise CliError(msg)
+    if t1 > t0 and step > t1 - t0:
+        msg = f"expected --step no longer than the span {t1 - t0!r}, got {step!r}"
+        raise CliError(msg)
     count = math.floor((t1 - t0) / step * (1 + 1e-12)) + 1
     if count > _MAX_POINTS:
         msg = f"expected at most {_MAX_POINTS} output times, got {count} (raise --step)"

@@ -81,11 +81,18 @@ def render_text(fields: dict) -> str:
 
 def run(args: argparse.Namespace) -> int:
     """Compute the rates and write them."""
-    from andoyer.perturbations.solar_system import DAY
+    from andoyer.perturbations.solar_system import DAY, JULIAN_YEAR
     from andoyer.precession import precession_rates
 
     if args.step is not None and args.integrate is None:
         msg = "expected --step only with --integrate YEARS, got --step alone"
+        raise CliError(msg)
+    if args.step is not None and args.step * DAY > args.integrate * JULIAN_YEAR / 2:
+        half = args.integrate * JULIAN_YEAR / 2 / DAY
+        msg = (
+            f"expected --step of at most half of --integrate ({half:.6g} days for {args.integrate:g} years), "
+            f"got {args.step:g} days"
+        )
         raise CliError(msg)
     step = None if args.step is None else args.step * DAY
     rates = precession_rates(

@@ -28,6 +28,7 @@ from typing import NamedTuple
 import numpy as np
 
 from andoyer._jit import NUMBA
+from andoyer._limits import check_spin_phase, spin_bound
 from andoyer.free import compiled_eval as _ceval
 from andoyer.free import constants as _const
 from andoyer.free import separatrix as _sep
@@ -119,6 +120,8 @@ class FreeMotion:
         moments = np.broadcast_to(moments, (*shape, 3)).reshape(-1, 3)
         m0 = np.broadcast_to(m0, (*shape, 3)).reshape(-1, 3)
         n = moments.shape[0]
+        self._spin = (moments, m0)  # their spin rate bounds every phase rate (andoyer._limits)
+        self._spin_bound = None
         # solve the scaled problem (powers of two, exact): internal time 2^(b−a) t
         if NUMBA:
             regime, moments, m0, a, b = classify_and_scale(moments, m0)
@@ -268,6 +271,14 @@ class FreeMotion:
         t = np.asarray(t, dtype=np.float64)
         if not np.all(np.isfinite(t)):
             raise ValueError(f"expected finite times t, got {t[~np.isfinite(t)].ravel()[:3]}")
+        try:
+            np.broadcast_shapes(self.shape, t.shape)
+        except ValueError:
+            msg = f"expected times broadcastable with the states' shape {self.shape}, got shape {t.shape}"
+            raise ValueError(msg) from None
+        if self._spin_bound is None:
+            self._spin_bound = spin_bound(*self._spin)
+        check_spin_phase(*self._spin, t, "the free motion", self._spin_bound)
         return evaluate_blocks(self._groups, self.shape, t, attitude)
 
 

@@ -65,6 +65,17 @@ class FreeRotation:
         Returns
         -------
         State, shape broadcast(S..., T...)
+
+        Raises
+        ------
+        ValueError
+            For times that do not broadcast with the states, or whose phase ``|ω t|``
+            (``ω = |m|/min(I)``) reaches ``2⁵²`` rad: no digit of it is left.
+
+        Warns
+        -----
+        PhasePrecisionWarning
+            Once fewer than six digits of the phase are left (``|ω t| > 4.5·10⁹`` rad).
         """
         m, q = self._motion(state).propagate(t)
         return State.from_quaternion(q, m)

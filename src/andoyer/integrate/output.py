@@ -5,24 +5,46 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from andoyer._limits import check_size, check_spin_phase
 from andoyer._validation import as_finite
 from andoyer.state import State
 
 Array = NDArray[np.float64]
 
 
-def output_times(state: State, t: ArrayLike) -> tuple[Array, Array, tuple[int, ...]]:
-    """Validated times, their sorted unique values, and the broadcast output shape."""
+#: Bytes per (state, output time): the attitude and momentum (7 float64) in the table of
+#: every state at every distinct time, its gathered copy and the returned state.
+OUTPUT_BYTES = 3 * 7 * 8
+
+
+def output_times(
+    state: State, t: ArrayLike, moments: ArrayLike | None = None, t0: float = 0.0
+) -> tuple[Array, Array, tuple[int, ...]]:
+    """Validated times, their sorted unique values, and the broadcast output shape.
+
+    With the body's ``moments``, the phase reached at ``t − t0`` is checked
+    (:func:`andoyer._limits.check_phase`); the output's memory is checked in every case.
+    """
     if not isinstance(state, State):
         msg = f"expected an andoyer State, got {type(state).__name__}"
         raise ValueError(msg)
     times = as_finite(t, "t")
+    if times.size == 0:
+        msg = f"expected at least one output time t, got an empty array of shape {times.shape}"
+        raise ValueError(msg)
     try:
         shape = np.broadcast_shapes(state.shape, times.shape)
     except ValueError as exc:
         msg = f"expected times broadcastable with the state's shape {state.shape}, got shape {times.shape}"
         raise ValueError(msg) from exc
-    return times, np.unique(times), shape
+    unique = np.unique(times)
+    check_size("an output", nbytes=OUTPUT_BYTES * (unique.size * state.size + float(np.prod(shape))))
+    if moments is not None:
+        t0 = float(as_finite(t0, "t0"))
+        with np.errstate(over="ignore"):  # an overflow is an infinite phase: refused
+            spans = unique - t0
+        check_spin_phase(moments, state.m_body, spans, "the propagation")
+    return times, unique, shape
 
 
 def gather_states(

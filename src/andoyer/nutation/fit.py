@@ -10,6 +10,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from andoyer._validation import as_finite
 from andoyer.nutation.analytic import NutationSeries
 from andoyer.nutation.model import PRINCIPAL_TERMS
 from andoyer.perturbations.lunar_theory import delaunay_arguments, delaunay_rates
@@ -36,7 +37,14 @@ def minimum_span(multipliers: ArrayLike | None = None, epoch: float = 0.0) -> fl
     """
     if multipliers is None:
         multipliers = list(PRINCIPAL_TERMS.values())
-    rates = np.abs(np.asarray(multipliers, dtype=float) @ delaunay_rates(epoch))
+    k = as_finite(multipliers, "multipliers")
+    if k.ndim != 2 or k.shape[-1] != 5 or k.shape[0] == 0 or np.any(k != np.round(k)):
+        msg = f"expected integer multipliers of (l, l', F, D, Omega) with shape (K, 5), got {k.tolist()!r}"
+        raise ValueError(msg)
+    rates = np.abs(k @ delaunay_rates(as_finite(epoch, "epoch")))
+    if np.min(rates) == 0:
+        msg = "expected terms with nonzero frequencies, got a constant term among the multipliers"
+        raise ValueError(msg)
     return float(2 * np.pi / np.min(rates))
 
 

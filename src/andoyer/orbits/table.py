@@ -27,7 +27,6 @@ renormalised. Validity: the table's span. Times must increase strictly; at least
 from __future__ import annotations
 
 import csv
-import io
 import os
 from pathlib import Path
 
@@ -164,7 +163,9 @@ def _parse_rows(path: str | os.PathLike[str]) -> tuple[list[str], list[tuple[int
     if not lines:
         msg = f"expected a CSV header row and data rows, got an empty file {str(path)!r}"
         raise ValueError(msg)
-    parsed = list(csv.reader(io.StringIO("".join(line for _, line in lines))))
+    # One record per line (a quote may not open a field over several lines), so that every row
+    # keeps its line number for the errors.
+    parsed = [next(csv.reader([line])) for _, line in lines]
     header = [name.strip() for name in parsed[0]]
     return header, [(number, row) for (number, _), row in zip(lines[1:], parsed[1:], strict=True)]
 

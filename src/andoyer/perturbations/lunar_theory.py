@@ -141,8 +141,20 @@ _B = np.array(
 _R0 = 385000.56e3  # Meeus (1998) ch. 47: the constant of the distance series, metres
 
 
+#: The Delaunay polynomials (Simon et al. 1994) hold over a few millennia; far outside, their
+#: powers of T only lose meaning (and overflow near 1e77 years).
+DELAUNAY_SPAN_YEARS = 1e5
+
+
 def _centuries(t: ArrayLike) -> Array:
-    return as_finite(t, "t") / 100.0
+    years = as_finite(t, "t")
+    if np.any(np.abs(years) > DELAUNAY_SPAN_YEARS):
+        msg = (
+            f"expected times within ±{DELAUNAY_SPAN_YEARS:.0f} years of J2000 for the lunar arguments, "
+            f"got {float(np.max(np.abs(years))):.6g}"
+        )
+        raise ValueError(msg)
+    return years / 100.0
 
 
 def delaunay_arguments(t: ArrayLike) -> Array:

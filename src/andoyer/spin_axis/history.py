@@ -28,7 +28,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from andoyer._validation import as_vectors
+from andoyer._validation import as_finite, as_vectors
 from andoyer.orbits.protocol import OrbitHistory
 from andoyer.spin_axis.insolation import daily_insolation
 from andoyer.spin_axis.model import ARCSEC, DEFAULT_PRECESSION_RATE, SpinAxisModel
@@ -100,10 +100,14 @@ def output_times(t0: float, t1: float, dt: float) -> Array:
     if not (np.isfinite(t0) and np.isfinite(t1) and t1 >= t0):
         msg = f"expected a span T0 <= T1 (finite), got {t0!r} to {t1!r}"
         raise ValueError(msg)
-    count = int(np.floor((t1 - t0) / dt + 1e-9)) + 1
-    if count > 10_000_000:
-        msg = f"expected at most 10 million output times, got {count}"
+    if t1 > t0 and dt > t1 - t0:
+        msg = f"expected an output step no longer than the span {t1 - t0!r}, got {dt!r}"
         raise ValueError(msg)
+    steps = (t1 - t0) / dt
+    if not steps < 1e7:  # also catches an overflow to inf
+        msg = f"expected at most 10 million output times, got {steps:.3g}"
+        raise ValueError(msg)
+    count = int(np.floor(steps + 1e-9)) + 1
     return t0 + dt * np.arange(count)
 
 
@@ -124,8 +128,12 @@ def equinox(s: ArrayLike, n: ArrayLike) -> Array:
     >>> equinox(mean_pole_j2000(), [0.0, 0.0, 1.0]).tolist()
     [1.0, 0.0, 0.0]
     """
-    g = np.cross(np.asarray(s, dtype=float), np.asarray(n, dtype=float))
-    return g / np.linalg.norm(g, axis=-1, keepdims=True)
+    g = np.cross(as_finite(s, "s"), as_finite(n, "n"))
+    size = np.linalg.norm(g, axis=-1, keepdims=True)
+    if np.any(size == 0):
+        msg = "expected a spin axis off the orbit normal (the equinox is s × n), got s parallel to n"
+        raise ValueError(msg)
+    return g / size
 
 
 def _frames(s: Array, n: Array) -> Array:
@@ -164,10 +172,10 @@ def general_precession(s: ArrayLike, n: ArrayLike, s0: ArrayLike, n0: ArrayLike)
     >>> round(float(p / ARCSEC), 3)
     5029.9
     """
-    start = _frames(np.asarray(s0, dtype=float), np.asarray(n0, dtype=float))
+    start = _frames(as_finite(s0, "s0"), as_finite(n0, "n0"))
     if start.ndim == 3:  # one J2000 frame per run (M, 3, 3), against dates (M, K, 3, 3)
         start = start[:, None]
-    r = _frames(np.asarray(s, dtype=float), np.asarray(n, dtype=float)) @ np.swapaxes(start, -1, -2)
+    r = _frames(as_finite(s, "s"), as_finite(n, "n")) @ np.swapaxes(start, -1, -2)
     return -np.arctan2(r[..., 0, 1] - r[..., 1, 0], r[..., 0, 0] + r[..., 1, 1])
 
 
@@ -373,8 +381,9 @@ def evolve_axes(
     precession : ndarray, shape (M, N)
         ``p_A`` (radians), unwrapped between integration steps, zero at J2000.
     """
+    times = as_finite(times, "times")
     runs = 1 if isinstance(model, SpinAxisModel) else len(model)
-    s0 = np.broadcast_to(s0, (runs, 3)) if np.ndim(s0) == 1 else np.asarray(s0)
+    s0 = np.broadcast_to(as_finite(s0, "s0"), (runs, 3)) if np.ndim(s0) == 1 else np.asarray(s0)
     s0 = np.ascontiguousarray(s0, dtype=float)
     grid, axes, index = integrate_axis(orbit, model, times, s0, step, order)
     p = np.unwrap(general_precession(axes, orbit.normal(grid), s0, orbit.normal(0.0)), axis=-1)

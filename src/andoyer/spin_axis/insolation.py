@@ -23,6 +23,8 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from andoyer._validation import as_finite
+
 __all__ = ["daily_insolation"]
 
 
@@ -64,7 +66,8 @@ def daily_insolation(
     477.9
     """
     values = (latitude, solar_longitude, obliquity, eccentricity, perihelion)
-    phi, lam, eps, e, varpi = (np.asarray(v, dtype=np.float64) for v in values)
+    names = ("latitude", "solar_longitude", "obliquity", "eccentricity", "perihelion")
+    phi, lam, eps, e, varpi = (as_finite(v, name) for v, name in zip(values, names, strict=True))
     if np.any(np.abs(phi) > np.pi / 2 + 1e-12) or np.any((e < 0) | (e >= 1)):
         msg = "expected latitudes within ±π/2 and eccentricities in [0, 1), got values outside"
         raise ValueError(msg)

@@ -147,6 +147,26 @@ class SpinAxisModel:
     tide_moon: float = 0.0
     ellipticity_drift: float = 0.0
 
+    def __post_init__(self) -> None:
+        numbers = {
+            "alpha_sun": self.alpha_sun,
+            "beta": self.beta,
+            "eccentricity": self.eccentricity,
+            "tide_spin": self.tide_spin,
+            "tide_moon": self.tide_moon,
+            "ellipticity_drift": self.ellipticity_drift,
+        }
+        for name, value in numbers.items():
+            if not (isinstance(value, int | float | np.floating) and np.isfinite(value)):
+                msg = f"expected a finite real {name}, got {value!r}"
+                raise ValueError(msg)
+        if self.alpha_sun <= 0 or self.beta < 0 or not 0 <= self.eccentricity < 1:
+            msg = (
+                "expected alpha_sun > 0, beta >= 0 and 0 <= eccentricity < 1, got "
+                f"{self.alpha_sun!r}, {self.beta!r}, {self.eccentricity!r}"
+            )
+            raise ValueError(msg)
+
     @staticmethod
     def _tides(body: str, tidal_dissipation: float) -> tuple[float, float]:
         if not np.isfinite(tidal_dissipation):

@@ -21,7 +21,7 @@ import re
 from fractions import Fraction
 from typing import Any
 
-from andoyer.theories.sam import sam_theory
+from andoyer.theories.sam import check_order, sam_theory
 
 __all__ = [
     "FAMILIES",
@@ -54,7 +54,8 @@ def sam_tables(order: int) -> Tables:
     Parameters
     ----------
     order : int
-        Highest index ``i`` (``≥ 1``).
+        Highest index ``i`` (``≥ 1``, at most ``MAX_ORDER − 1`` = 60: see
+        :data:`andoyer.theories.sam.MAX_ORDER`).
 
     Returns
     -------
@@ -69,9 +70,7 @@ def sam_tables(order: int) -> Tables:
     >>> t["L"][2][0], t["l"][1][1]
     ({0: Fraction(1, 4)}, {0: Fraction(1, 2)})
     """
-    if not isinstance(order, int) or isinstance(order, bool) or order < 1:
-        msg = f"expected an integer order >= 1, got {order!r}"
-        raise ValueError(msg)
+    check_order(order, offset=1)  # from Deprit order + 1
     theory = sam_theory(order + 1)
 
     def poly(coeffs: tuple[Fraction, ...]) -> Polynomial:

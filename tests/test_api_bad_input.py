@@ -1,0 +1,477 @@
+"""Bad input to every public function: ``ValueError``/``TypeError`` saying "expected …", no RuntimeWarning.
+
+One table, ``CASES``: ``(public object, callable, args, exception, match)`` over the classes of
+bad input of issue 18 (NaN, ±inf, ±1e300, empty arrays, wrong shapes, shapes that do not
+broadcast, ``|L| > G``, ``G ≤ 0``, non-physical inertia, impossible sizes and phases). The
+project runs pytest with ``filterwarnings = error``, so a RuntimeWarning (an overflow on the
+way to the error) fails the case. ``test_every_public_name_is_in_the_table_or_exempt`` walks
+``andoyer.__all__``, the ``__all__`` of the subpackages it lists and of ``andoyer.precession``,
+``andoyer.cassini``, ``andoyer.nutation`` and ``andoyer.spin_axis``:
+a new public function must add its bad inputs here, or say in ``EXEMPT`` why it has none.
+The command line's half is ``tests/test_cli_bad_input.py``.
+"""
+
+from __future__ import annotations
+
+import functools
+import inspect
+import types
+
+import numpy as np
+import pytest
+from scipy.spatial.transform import Rotation
+
+import andoyer
+import andoyer.cassini
+import andoyer.nutation
+import andoyer.precession
+import andoyer.spin_axis
+from andoyer import FreeRotation, RigidBody, State, bodies, charts, free, integrate, propagate, special
+from andoyer.cassini import CassiniBody, ColomboTop, eccentricity_function
+from andoyer.nutation import (
+    fit_terms,
+    luni_solar_precession,
+    minimum_span,
+    numeric_terms,
+    nutation,
+    nutation_series,
+    terms_table,
+)
+from andoyer.orbits import (
+    NBodyOrbit,
+    SecularOrbit,
+    TableOrbit,
+    VondrakEcliptic,
+    check_times,
+    orbit_history,
+    read_alkhqp,
+    read_orbit_csv,
+    write_orbit_csv,
+)
+from andoyer.perturbations import (
+    CircularOrbit,
+    GravityGradient,
+    HeavyTop,
+    KeplerOrbit,
+    LinearDamping,
+    Model,
+    PointMass,
+    PrecessingFrame,
+    perturbed_rates,
+    solve_kepler,
+)
+from andoyer.precession import (
+    check_dynamical_ellipticity,
+    default_step,
+    fit_trend,
+    mean_node_rate,
+    precession_problem,
+    precession_rates,
+)
+from andoyer.spin_axis import (
+    SpinAxisModel,
+    build_model,
+    daily_insolation,
+    default_axis,
+    equinox,
+    evolve_axes,
+    general_precession,
+    output_times,
+    spin_axis_history,
+)
+from andoyer.theories import SAMRotation, beta_polynomial_value, sam_tables, sam_theory
+
+P = functools.partial
+NAN, INF, HUGE = float("nan"), float("inf"), 1e300
+BODY = RigidBody(1.0, 2.0, 3.0)
+EROS = bodies.get("eros")
+STATE = State.from_andoyer(0.1, 0.2, 0.3, 0.9, 1.0, 0.5)
+STATES3 = State.from_andoyer(np.array([0.1, 0.2, 0.3]), 0.2, 0.3, 0.9, 1.0, 0.5)
+TOP = HeavyTop(0.5, [0.0, 0.1, 0.3])
+MODEL = Model(RigidBody(1.0, 1.2, 1.5), TOP)
+IDENT = Rotation.identity()
+FREE = FreeRotation(BODY)
+MODEL_EARTH = SpinAxisModel.from_precession_rate("earth", 50.3848, 0.4091)
+Q0 = [0.0, 0.0, 0.0, 1.0]
+M0 = [0.3, 0.2, 1.0]
+
+# (public object exercised, callable, args, exception, regular expression the message matches)
+CASES = [
+    # -- bodies: non-physical inertia, NaN, inf, 1e300
+    (RigidBody, RigidBody, (-1.0, 1.0, 1.0), ValueError, "expected"),
+    (RigidBody, RigidBody, (NAN, 1.0, 1.0), ValueError, "expected"),
+    (RigidBody, RigidBody, (INF, 1.0, 1.0), ValueError, "expected"),
+    (RigidBody, RigidBody, (1.0, 1.0, -HUGE), ValueError, "expected"),  # (1, 1, 1e300) only warns: A + B < C
+    (RigidBody, RigidBody, (0.0, 1.0, 1.0), ValueError, "expected"),
+    (RigidBody, RigidBody.from_moments, ([],), ValueError, "expected"),
+    (RigidBody, RigidBody.from_moments, ([1.0, 2.0],), ValueError, "expected"),
+    (RigidBody, RigidBody.from_ratios, (NAN, 0.5), ValueError, "expected"),
+    (RigidBody, RigidBody.from_alpha_beta, (0.1, 1.5), ValueError, "expected"),
+    (bodies.get, bodies.get, ("vulcan",), ValueError, "expected"),
+    (bodies.info, bodies.info, ("vulcan",), ValueError, "expected"),
+    # -- states: every constructor with NaN, inf, ±1e300, |L| > G, G <= 0, shapes
+    (State, State.from_andoyer, (NAN, 0, 0, 0.5, 1.0, 0.5), ValueError, "expected finite l"),
+    (State, State.from_andoyer, (0, 0, 0, 0.5, INF, 0.5), ValueError, "expected finite G"),
+    (State, State.from_andoyer, (0, 0, 0, 0.5, HUGE, 0.5), ValueError, "expected G .*got"),
+    (State, State.from_andoyer, (0, 0, 0, -HUGE, HUGE, 0.0), ValueError, "expected G .*got"),
+    (State, State.from_andoyer, (0, 0, 0, 2.0, 1.0, 0.5), ValueError, r"expected \|L\| <= G"),
+    (State, State.from_andoyer, (0, 0, 0, 0.0, 1.0, -1.5), ValueError, r"expected \|H\| <= G"),
+    (State, State.from_andoyer, (0, 0, 0, 0.0, 0.0, 0.0), ValueError, "expected G > 0"),
+    (State, State.from_andoyer, (0, 0, 0, 0.0, -1.0, 0.0), ValueError, "expected G > 0"),
+    (State, State.from_andoyer, (np.zeros(3), np.zeros(4), 0, 0.5, 1, 0), ValueError, "expected shapes"),
+    (State, State.from_euler, (0, 1, 0, NAN, 0, 0), ValueError, "expected finite"),
+    (State, State.from_euler, (0, 1, 0, HUGE, HUGE, HUGE), ValueError, "expected"),
+    (State, State.from_euler, (0, -0.1, 0, 1, 0, 1), ValueError, "expected"),
+    (State, State.from_quaternion, ([0, 0, 1], [1, 0, 0]), ValueError, "expected quaternion"),
+    (State, State.from_quaternion, (Q0, [HUGE, 0, 0]), ValueError, "expected m_body"),
+    (State, State.from_quaternion, (Q0, [-HUGE, HUGE, 0]), ValueError, "expected m_body"),
+    (State, State.from_quaternion, (Q0, [INF, 0, 0]), ValueError, "expected finite m_body"),
+    (State, State.from_quaternion, ([0, 0, 0, 2.0], [1, 0, 0]), ValueError, "expected unit"),
+    (State, State.from_quaternion, (np.tile(Q0, (3, 1)), np.ones((4, 3))), ValueError, "expected"),
+    (State, State.from_quaternion, (np.empty((0, 4)), np.ones((2, 3))), ValueError, "expected"),
+    (State, State.from_attitude, (np.eye(3), [1, 0, 0]), ValueError, "expected"),
+    (State, State.from_angular_velocity, (IDENT, [1.0], BODY), ValueError, "expected"),
+    (State, State.from_angular_velocity, (IDENT, [HUGE, 0, 0], BODY), ValueError, "expected"),
+    (State, State.from_sadov, (BODY, 0, 0, 0, NAN, 1.0, 0.5), ValueError, "expected"),
+    (State, State.from_serret, (BODY, 0, 0, 0, 1.0, 0.5, NAN), ValueError, "expected"),
+    (State, State.from_initial_andoyer, (BODY, 0, 0, 0, 0.9, 1.0, 0.5, NAN), ValueError, "expected"),
+    (State, P(State.from_sam, body=BODY), (0, 0, 0, NAN, 1.0, 0.5), ValueError, "expected"),
+    (State, State.from_quaternion(Q0, [0, 0, 0]).as_andoyer, (), ValueError, "expected"),
+    (State, STATE.energy, ((1, 2, 3),), ValueError, "expected"),
+    (State, STATE.as_sadov, ("earth",), ValueError, "expected"),
+    (State, STATE.as_serret, (BODY, NAN), ValueError, "expected"),
+    (State, STATE.as_initial_andoyer, (BODY, INF), ValueError, "expected"),
+    (State, STATE.as_sam, (BODY, "XAM"), ValueError, "expected"),
+    (State, STATE.reshape, (5,), ValueError, "expected"),
+    # -- charts
+    (charts.inclinations, charts.inclinations, (1.5, 1.0, 0.0), ValueError, r"expected \|L\| <= G"),
+    (charts.inclinations, charts.inclinations, (0.5, HUGE, 0.0), ValueError, "expected G .*got"),
+    (charts.euler_matrix, charts.euler_matrix, (INF, 0, 0), ValueError, "expected finite"),
+    (charts.andoyer_matrix, charts.andoyer_matrix, (np.zeros(2), 0, np.zeros(3), 0, 0), ValueError, "shapes"),
+    (charts.andoyer_from_euler, charts.andoyer_from_euler, (0, 0, 0, 1, 0, 1), ValueError, "expected"),
+    (charts.andoyer_from_euler, charts.andoyer_from_euler, (0, 1, 0, HUGE, 0, HUGE), ValueError, "expected"),
+    (charts.euler_from_andoyer, charts.euler_from_andoyer, (0, 0, 0, 0.5, -1.0, 0), ValueError, "expected"),
+    (charts.euler_from_andoyer, charts.euler_from_andoyer, (0, 0, 0, 0.5, HUGE, 0), ValueError, "expected"),
+    (charts.andoyer_to_serret, charts.andoyer_to_serret, (BODY, 0, 0, 0, 2.0, 1.0, 0.5), ValueError, "L"),
+    (charts.serret_to_andoyer, charts.serret_to_andoyer, (BODY, 0, 0, 0, 1.0, 0.5, -1.0), ValueError, "T"),
+    # -- the exact free motion
+    (FreeRotation, FreeRotation, ((1, 2, 3),), ValueError, "expected"),
+    (FreeRotation, FREE.propagate, (STATES3, [0.0, 1.0]), ValueError, "expected times broadcast"),
+    (FreeRotation, FREE.propagate, (STATE, NAN), ValueError, "expected finite times"),
+    (FreeRotation, FREE.propagate, (STATE, HUGE), ValueError, r"expected times with \|ω t\|"),
+    (FreeRotation, FREE.propagate, (STATE, -HUGE), ValueError, r"expected times with \|ω t\|"),
+    (FreeRotation, FREE.propagate, ("state", 1.0), ValueError, "expected"),
+    (FreeRotation, FREE.momentum, (STATES3, [0.0, 1.0]), ValueError, "expected times broadcast"),
+    (free.FreeMotion, free.FreeMotion, ([1, 2, 3], M0, [0, 0, 1]), ValueError, "expected q0"),
+    (free.FreeMotion, free.FreeMotion, ([1, 2, -3], M0), ValueError, "expected"),  # A + B < C is fine
+    (free.propagate, free.propagate, ([1, 2, 3], M0, Q0, 1e17), ValueError, r"expected times with \|ω t\|"),
+    (free.momentum, free.momentum, ([1, 2, 3], [NAN, 0, 1], 0.0), ValueError, "expected"),
+    (free.momentum, free.momentum, ([1, 2, 3], M0, INF), ValueError, "expected finite times"),
+    (free.attitude, free.attitude, ([1, 2, 3], M0, np.tile(Q0, (2, 1)), np.zeros(3)), ValueError, "expected"),
+    (free.attitude, free.attitude, ([1, 2, 3], np.ones((3, 3)), Q0, np.zeros(2)), ValueError, "expected"),
+    (free.periods, free.periods, ([1, 2, 3], [1.0, 2.0]), ValueError, "expected"),
+    (free.periods, free.periods, ([-1, 2, 3], M0), ValueError, "expected"),
+    (free.classify, free.classify, ([1, 2, 3], [1.0, 2.0]), ValueError, "expected"),
+    (free.classify, free.classify, ([1, 2, INF], M0), ValueError, "expected"),
+    # -- propagation under a model
+    (propagate, propagate, (MODEL, STATE, []), ValueError, "expected at least one output time"),
+    (propagate, propagate, (MODEL, STATE, NAN), ValueError, "expected finite t"),
+    (propagate, propagate, (MODEL, STATES3, [0.0, 1.0]), ValueError, "expected times broadcastable"),
+    (propagate, propagate, (MODEL, STATE, 1e300), ValueError, r"expected times with \|ω t\|"),
+    (propagate, propagate, (MODEL, STATE, -1e300), ValueError, r"expected times with \|ω t\|"),
+    (propagate, P(propagate, method="splitting", step=1e-9), (MODEL, STATE, [0.0, 1e6]), ValueError, "steps"),
+    (propagate, propagate, (MODEL, STATE, 1e9), ValueError, "expected a DOP853 run of at most"),
+    (propagate, P(propagate, method="splitting", step=NAN), (MODEL, STATE, 1.0), ValueError, "expected"),
+    (propagate, P(propagate, method="rk4"), (MODEL, STATE, 1.0), ValueError, "expected method"),
+    (propagate, P(propagate, t0=INF), (MODEL, STATE, 1.0), ValueError, "expected finite t0"),
+    (propagate, propagate, (BODY, STATE, 1.0), ValueError, "expected an andoyer Model"),
+    (integrate.integrate_reference, integrate.integrate_reference, (MODEL, STATE, []), ValueError, "time"),
+    (
+        integrate.integrate_euler_poisson,
+        integrate.integrate_euler_poisson,
+        (MODEL.body, TOP, M0, [0, 0, 1.0], NAN),
+        ValueError,
+        "expected",
+    ),
+    (
+        integrate.integrate_euler_poisson,
+        integrate.integrate_euler_poisson,
+        (MODEL.body, TOP, M0, [0, 0, 1.0], 1e300),
+        ValueError,
+        r"expected times with \|ω t\|",
+    ),
+    (
+        integrate.integrate_euler_poisson,
+        integrate.integrate_euler_poisson,
+        (MODEL.body, TOP, M0, [0, 0, 1.0], []),
+        ValueError,
+        "expected at least one output time",
+    ),
+    (
+        integrate.integrate_euler_poisson,
+        integrate.integrate_euler_poisson,
+        (MODEL.body, TOP, M0, [0, 0, 1.0], 1e9),
+        ValueError,
+        "expected a DOP853 run of at most",
+    ),
+    (
+        integrate.euler_poisson_rates,
+        integrate.euler_poisson_rates,
+        (MODEL.body, TOP, [1.0, 2.0], [0, 0, 1.0]),
+        ValueError,
+        "expected",
+    ),
+    (
+        integrate.euler_poisson_integrals,
+        integrate.euler_poisson_integrals,
+        (MODEL.body, TOP, M0, [NAN, 0, 1.0]),
+        ValueError,
+        "expected",
+    ),
+    (Model, Model, ("earth",), ValueError, "expected"),
+    (HeavyTop, HeavyTop, (0.0, [0, 0, 1]), ValueError, "expected"),
+    (HeavyTop, HeavyTop, (1.0, [NAN, 0, 1]), ValueError, "expected"),
+    (PrecessingFrame, PrecessingFrame, ([INF, 0, 0],), ValueError, "expected"),
+    (LinearDamping, LinearDamping, (BODY, [-1.0, 0, 0]), ValueError, "expected"),
+    (CircularOrbit, CircularOrbit, (-1.0, 1.0), ValueError, "expected"),
+    (KeplerOrbit, KeplerOrbit, (1.0, 1.5, 0, 0, 0, 0, 1.0), ValueError, "expected"),
+    (PointMass, PointMass, (NAN, CircularOrbit(1.0, 1.0)), ValueError, "expected"),
+    (GravityGradient, GravityGradient, (BODY, []), ValueError, "expected"),
+    (solve_kepler, solve_kepler, (0.5, 1.5), ValueError, "expected"),
+    (solve_kepler, solve_kepler, (INF, 0.5), ValueError, "expected"),
+    (perturbed_rates, perturbed_rates, (BODY, TOP, 0.0, Q0, [1.0, 2.0]), ValueError, "expected"),
+    # -- precession of the planets
+    (precession_rates, precession_rates, ("venus",), ValueError, "expected one of"),
+    (precession_rates, P(precession_rates, integrate=1.0, step=1e8), ("earth",), ValueError, "half the span"),
+    (precession_rates, P(precession_rates, integrate=1e9), ("earth",), ValueError, "would need"),
+    (precession_rates, P(precession_rates, integrate=NAN), ("earth",), ValueError, "expected"),
+    (precession_rates, P(precession_rates, secular_years=-HUGE), ("earth",), ValueError, "expected"),
+    (default_step, default_step, ("pluto",), ValueError, "expected"),
+    (precession_problem, precession_problem, ("pluto",), ValueError, "expected"),
+    (mean_node_rate, mean_node_rate, ([0.0, 1.0], [0.0, 1.0]), ValueError, "expected"),
+    (mean_node_rate, mean_node_rate, (np.arange(4.0), np.zeros(5)), ValueError, "expected"),
+    (fit_trend, fit_trend, ([0.0, 1.0, 2.0], [NAN, 1.0, 2.0]), ValueError, "expected finite"),
+    (fit_trend, fit_trend, ([0.0, 1.0, 2.0], [0.0, 1.0]), ValueError, "expected"),
+    (check_dynamical_ellipticity, check_dynamical_ellipticity, (NAN,), ValueError, "expected"),
+    (check_dynamical_ellipticity, check_dynamical_ellipticity, (HUGE,), ValueError, "expected"),
+    # -- orbit histories
+    (VondrakEcliptic, VondrakEcliptic().normal, (3e5,), ValueError, "expected times within"),
+    (VondrakEcliptic, VondrakEcliptic().normal, (NAN,), ValueError, "expected finite"),
+    (NBodyOrbit, NBodyOrbit, ("pluto",), ValueError, "expected a planet"),
+    (NBodyOrbit, P(NBodyOrbit, step_days=NAN), ("earth",), ValueError, "expected"),
+    (SecularOrbit, SecularOrbit, ("pluto",), ValueError, "expected a planet"),
+    (TableOrbit, TableOrbit, ([0.0, 1.0], [[0, 0, 1], [0, 0, 1]]), ValueError, "expected at least 4 rows"),
+    (TableOrbit, TableOrbit, ([0.0, 1.0, 2.0, NAN], [[0, 0, 1]] * 4), ValueError, "expected"),
+    (check_times, check_times, (NAN, (-1.0, 1.0), "x"), ValueError, "expected finite"),
+    (check_times, check_times, (HUGE, (-1.0, 1.0), "x"), ValueError, "expected times within"),
+    (orbit_history, orbit_history, ("nowhere",), ValueError, "expected an orbit source"),
+    (orbit_history, P(orbit_history, body="mars"), ("vondrak",), ValueError, "expected"),
+    (read_orbit_csv, read_orbit_csv, (andoyer.__file__,), ValueError, "expected a time column"),
+    (read_alkhqp, read_alkhqp, (andoyer.__file__, np.eye(3)), ValueError, "expected 7 columns"),
+    (write_orbit_csv, write_orbit_csv, ("unused.csv", VondrakEcliptic(), [NAN]), ValueError, "expected"),
+    # -- spin-axis histories
+    (spin_axis_history, spin_axis_history, (VondrakEcliptic(), "earth", [HUGE]), ValueError, "expected"),
+    (spin_axis_history, spin_axis_history, (VondrakEcliptic(), "pluto", [0.0]), ValueError, "expected"),
+    (
+        spin_axis_history,
+        P(spin_axis_history, precession_rate=NAN),
+        (VondrakEcliptic(), "earth", [0.0]),
+        ValueError,
+        "expected",
+    ),
+    (
+        build_model,
+        P(build_model, precession_rate=-HUGE),
+        (VondrakEcliptic(), "earth", [0, 0.4, 0.9]),
+        ValueError,
+        "expected",
+    ),
+    (SpinAxisModel, SpinAxisModel, ("earth", NAN, 1.0, 0.01), ValueError, "expected a finite real"),
+    (SpinAxisModel, SpinAxisModel, ("earth", 1e-4, 1.0, 1.5), ValueError, "expected"),
+    (daily_insolation, daily_insolation, (NAN, 0.0, 0.4, 0.01, 1.0), ValueError, "expected finite"),
+    (daily_insolation, daily_insolation, (1.0, 0.0, 0.4, 1.5, 1.0), ValueError, "expected"),
+    (default_axis, default_axis, ("pluto",), ValueError, "expected"),
+    (equinox, equinox, ([0.0, 0.0, 1.0], [0.0, 0.0, 1.0]), ValueError, "expected a spin axis off"),
+    (equinox, equinox, ([NAN, 0.0, 1.0], [0.0, 0.0, 1.0]), ValueError, "expected finite"),
+    (
+        general_precession,
+        general_precession,
+        ([NAN, 0, 1], [0, 0, 1], [0, 1, 1], [0, 0, 1]),
+        ValueError,
+        "expected",
+    ),
+    (output_times, output_times, (0.0, 1.0, -1.0), ValueError, "expected a positive"),
+    (output_times, output_times, (0.0, HUGE, 1e-300), ValueError, "expected"),
+    # -- Cassini states
+    (CassiniBody, CassiniBody, ("x", NAN, 1e-5, 0.3, 1.0, 0.0, 0.1, -0.01), ValueError, "expected"),
+    (CassiniBody, CassiniBody, ("x", 1e-4, 1e-5, 1.5, 1.0, 0.0, 0.1, -0.01), ValueError, "expected"),
+    (ColomboTop, ColomboTop, (NAN, 0.0, -0.01, 0.1), ValueError, "expected finite"),
+    (eccentricity_function, eccentricity_function, (1.5, 1.0), ValueError, "expected"),
+    (andoyer.cassini.get, andoyer.cassini.get, ("pluto",), ValueError, "expected a body"),
+    (andoyer.cassini.states, andoyer.cassini.states, ("pluto",), ValueError, "expected a body"),
+    # -- nutation
+    (nutation, nutation, ([NAN],), ValueError, "expected finite"),
+    (nutation, P(nutation, axis="x"), ([0.0],), ValueError, "expected axis"),
+    (nutation_series, nutation_series, (-1.0,), ValueError, "expected a dynamical ellipticity"),
+    (luni_solar_precession, luni_solar_precession, (NAN,), ValueError, "expected"),
+    (minimum_span, minimum_span, ([[0, 0, 0, 0, NAN]],), ValueError, "expected finite"),
+    (minimum_span, minimum_span, ([[0, 0, 0, 0, 0]],), ValueError, "expected terms with nonzero"),
+    (numeric_terms, numeric_terms, ((0.0, 1.0),), ValueError, "expected a span of at least"),
+    (terms_table, terms_table, ((0.0, HUGE),), ValueError, "expected times within"),
+    (evolve_axes, evolve_axes, (VondrakEcliptic(), MODEL_EARTH, [NAN], [0, 0.4, 0.9]), ValueError, "finite"),
+    (fit_terms, fit_terms, ([0.0, 1.0], [NAN, 1.0], [0.0, 1.0], [[0, 0, 0, 0, 1]]), ValueError, "expected"),
+    # -- special functions
+    (special.ellipk, special.ellipk, (NAN,), ValueError, "expected"),
+    (special.ellipe, special.ellipe, (INF,), ValueError, "expected"),
+    (special.ellipf, special.ellipf, (0.5, 2.0), ValueError, "expected"),
+    (special.ellipeinc, special.ellipeinc, (NAN, 0.5), ValueError, "expected"),
+    (special.ellippi, special.ellippi, (0.5, NAN), ValueError, "expected"),
+    (special.ellippiinc, special.ellippiinc, (0.5, INF, 0.5), ValueError, "expected"),
+    (special.ellipj, special.ellipj, (0.5, 1.5), ValueError, "expected"),
+    (special.am, special.am, (NAN, 0.5), ValueError, "expected"),
+    # -- series and theories
+    (sam_theory, sam_theory, (0,), ValueError, "expected an integer order"),
+    (sam_theory, sam_theory, (200,), ValueError, "would take about"),
+    (sam_tables, sam_tables, (200,), ValueError, "would take about"),
+    (sam_tables, sam_tables, (1.5,), ValueError, "expected an integer order"),
+    (SAMRotation, SAMRotation, (BODY, 0), ValueError, "expected"),
+    (SAMRotation, SAMRotation, (BODY, 4, "XAM"), ValueError, "expected"),
+    (beta_polynomial_value, beta_polynomial_value, ((1, 2), NAN), ValueError, "expected"),
+]
+
+# Public names without bad numeric input of their own, and why.
+EXEMPT = {
+    # types, enums, named tuples and warnings: data holders built by the functions above
+    "RotationMode": "an enum",
+    "Symmetry": "an enum",
+    "SingularChartWarning": "a warning class",
+    "PhasePrecisionWarning": "a warning class",
+    "NonPhysicalInertiaWarning": "a warning class",
+    "OrbitHistory": "a protocol",
+    "SpinAxisHistory": "a record of results",
+    "NutationSeries": "a record of results",
+    "CassiniState": "a record of results",
+    "mean_pole_j2000": "takes no argument",
+    # constants of the applications
+    "AXES": "a constant",
+    "BODIES": "a constant",
+    "DEFAULT_PRECESSION_RATE": "a constant",
+    "EARTH_DYNAMICAL_ELLIPTICITY": "a constant",
+    "EARTH_ROTATION": "a constant",
+    "EPSILON_0": "a constant",
+    "H_MHB2000": "a constant",
+    "IAU2000A": "a constant table",
+    "MEAN_OBLIQUITY": "a constant",
+    "PRINCIPAL_TERMS": "a constant table",
+    "REN2000": "a constant table",
+    "REN2000_NODE": "a constant table",
+    "SOURCES": "a constant",
+    "WOOLARD1953": "a constant table",
+    "Regime": "an enum",
+    "FreePeriods": "a named tuple of results",
+    "Andoyer": "a named tuple of results",
+    "Euler": "a named tuple of results",
+    "Serret": "a named tuple of results",
+    "BodyInfo": "a record of the named bodies",
+    "PrecessionRates": "a record of results",
+    "SAMFrequencies": "a named tuple of results",
+    "SAMTheory": "built by sam_theory (in the table)",
+    "Orbit": "an abstract base class",
+    "Perturbation": "an abstract base class",
+    # constants
+    "ARCSEC": "a constant",
+    "NODE_PHASES": "a constant",
+    "PLANETS": "a constant",
+    "SAM_RING": "a constant ring of exact series",
+    # no arguments, or names only
+    "names": "takes no argument",
+    "sam_hamiltonian": "takes no argument",
+    # exact-rational series (the symbolic layer: input is series, not numbers)
+    "CompiledSeries": "exact series, validated by tests/series",
+    "LieTransform": "exact series, validated by tests/series",
+    "PoissonRing": "exact series, validated by tests/series",
+    "PoissonSeries": "exact series, validated by tests/series",
+    "Term": "exact series, validated by tests/series",
+    "average": "exact series, validated by tests/series",
+    "deprit": "exact series, validated by tests/series",
+    "derivative": "exact series, validated by tests/series",
+    "frequencies": "exact series, validated by tests/series",
+    "lie_sum": "exact series, validated by tests/series",
+    "poisson_bracket": "exact series, validated by tests/series",
+    "solve_homological": "exact series, validated by tests/series",
+    "tables_from_json": "text of exact tables, validated by tests/theories/test_sam_tables.py",
+    "tables_to_json": "text of exact tables, validated by tests/theories/test_sam_tables.py",
+    # user-supplied callables: their input is the user's function
+    "SumOfPerturbations": "a sum of perturbation objects",
+    "TabulatedOrbit": "wraps a user function",
+    "UserPotential": "wraps a user function",
+    "UserTorque": "wraps a user function",
+    # planetary/analytic tops built from a few scalars, checked by tests/test_heavy_tops.py
+    "kovalevskaya_top": "tests/test_heavy_tops.py",
+    "lagrange_top": "tests/test_heavy_tops.py",
+    "kovalevskaya_integral": "tests/test_heavy_tops.py",
+    "kovalevskaya_integral_e3": "tests/test_heavy_tops.py",
+    "andoyer_perturbed_equations": "tests/test_perturbations.py",
+    # the Lie–Poisson layer: symbolic brackets and tables, checked by tests/liepoisson
+    "liepoisson": "the whole subpackage: symbolic algebra, validated by tests/liepoisson",
+}
+
+
+def _public() -> dict[int, tuple[str, object]]:
+    """Every public object: ``andoyer.__all__``, its subpackages' and ``andoyer.precession``'s."""
+    found: dict[int, tuple[str, object]] = {}
+    modules = [andoyer, andoyer.precession, andoyer.cassini, andoyer.nutation, andoyer.spin_axis]
+    for name in andoyer.__all__:
+        obj = getattr(andoyer, name)
+        if isinstance(obj, types.ModuleType):
+            if name not in EXEMPT:
+                modules.append(obj)
+        else:
+            found.setdefault(id(obj), (name, obj))
+    for module in modules[1:]:
+        for name in module.__all__:
+            obj = getattr(module, name)
+            found.setdefault(id(obj), (name, obj))
+    return found
+
+
+def _case_id(case) -> str:
+    target, call, args = case[0], case[1], case[2]
+    name = getattr(target, "__name__", type(target).__name__)
+    inner = getattr(call, "func", call)
+    return f"{name}.{getattr(inner, '__name__', '?')}({', '.join(map(_short, args))})"
+
+
+def _short(value) -> str:
+    if isinstance(value, np.ndarray):
+        return f"array{value.shape}"
+    text = repr(value)
+    return text if len(text) < 20 else type(value).__name__
+
+
+@pytest.mark.parametrize("case", CASES, ids=[_case_id(c) for c in CASES])
+def test_api_bad_input_raises_expected(case):
+    _, call, args, error, match = case
+    with pytest.raises(error, match=match) as info:
+        call(*args)
+    assert "expected" in str(info.value)
+
+
+def test_every_public_name_is_in_the_table_or_exempt():
+    covered = {id(case[0]) for case in CASES}
+    missing = sorted(
+        name for key, (name, _) in _public().items() if key not in covered and name not in EXEMPT
+    )
+    assert missing == [], f"add bad-input cases (or an exemption with its reason) for {missing}"
+
+
+def test_every_exemption_is_a_public_name():
+    public = {name for name, _ in _public().values()} | set(andoyer.__all__)
+    assert sorted(set(EXEMPT) - public) == []
+
+
+def test_every_table_entry_targets_a_public_object():
+    public = set(_public())
+    strays = [_case_id(c) for c in CASES if id(c[0]) not in public]
+    assert strays == []
+    assert all(inspect.isclass(c[3]) and issubclass(c[3], (ValueError, TypeError)) for c in CASES)
