@@ -30,6 +30,7 @@ import numpy as np
 from andoyer._jit import NUMBA
 from andoyer.free import compiled_eval as _ceval
 from andoyer.free import constants as _const
+from andoyer.free import periodic as _periodic
 from andoyer.free import separatrix as _sep
 from andoyer.free import series
 from andoyer.free import triaxial as _tri
@@ -91,6 +92,12 @@ class FreeMotion:
         :class:`Regime` codes.
     periods : FreePeriods
         Period of ``m(t)`` and precession of the attitude per period.
+    periodic_epochs : float
+        Epochs per state from which triaxial states are evaluated through a
+        piecewise-polynomial representation of one period, built once
+        (:mod:`andoyer.free.periodic`: same accuracy, several times faster per epoch);
+        below it, directly.  A class default, settable per instance (``0``: always,
+        ``inf``: never).
 
     Examples
     --------
@@ -101,6 +108,8 @@ class FreeMotion:
     >>> fm.attitude([0.0, T]).shape
     (2, 4)
     """
+
+    periodic_epochs = 4096.0
 
     def __init__(self, moments, m0, q0=None):
         moments, m0 = check_inputs(moments, m0)
@@ -175,6 +184,7 @@ class FreeMotion:
         self._groups = [Group(k, idx, c, tshift[idx], b[idx]) for k, idx, c in groups]
         self._scaled_periods = (period, rate, tshift)
         self._periods = None
+        self._periodic = {}
 
     @property
     def periods(self):
@@ -268,7 +278,26 @@ class FreeMotion:
         t = np.asarray(t, dtype=np.float64)
         if not np.all(np.isfinite(t)):
             raise ValueError(f"expected finite times t, got {t[~np.isfinite(t)].ravel()[:3]}")
-        return evaluate_blocks(self._groups, self.shape, t, attitude)
+        n = max(1, int(np.prod(self.shape)))
+        per_state = np.prod(np.broadcast_shapes(self.shape, t.shape)) / n
+        groups = self._groups
+        if per_state >= self.periodic_epochs:
+            groups = self._periodic_groups(attitude)
+        return evaluate_blocks(groups, self.shape, t, attitude)
+
+    def _periodic_groups(self, attitude):
+        """The groups with the triaxial ones replaced by their periodic representation (cached)."""
+        if True in self._periodic:  # the attitude representation serves the momentum too
+            return self._periodic[True]
+        if attitude not in self._periodic:
+            groups = []
+            for group in self._groups:
+                if group.kernel is _ceval.evaluate or group.kernel is series.evaluate:
+                    groups += [g for g in _periodic.build(group, attitude) if g is not None]
+                else:
+                    groups.append(group)
+            self._periodic[attitude] = groups
+        return self._periodic[attitude]
 
 
 def _triaxial_groups(moments, m0, lam, q0, idx):
