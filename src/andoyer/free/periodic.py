@@ -42,7 +42,7 @@ from andoyer.free.kernels.piecewise import DEGREE, horner, locate
 from andoyer.free.phase import cycles, frequency, sincos_cycles
 from andoyer.free.scalar_dd import two_prod
 
-__all__ = ["DEGREE", "MAX_PIECES", "Periodic", "build", "evaluate", "fill", "fill_numpy", "min_epochs"]
+__all__ = ["DEGREE", "MAX_PIECES", "Periodic", "build", "evaluate", "fill", "fill_numpy"]
 
 #: Most pieces per period; bodies that need more keep the direct evaluation.
 MAX_PIECES = 1 << 15
@@ -83,29 +83,6 @@ class Periodic(NamedTuple):
 
     params: np.ndarray
     coef: np.ndarray
-
-
-def min_epochs(pieces):
-    """Epochs per state above which :func:`build` pays for itself.
-
-    Building samples the kernels ``≈ 2.4 n (DEGREE + 1)`` times per state (twice that
-    with the attitude), and each later epoch costs several times less than a direct one.
-
-    Parameters
-    ----------
-    pieces : int
-        Pieces per period.
-
-    Returns
-    -------
-    int
-
-    Examples
-    --------
-    >>> min_epochs(64)
-    3072
-    """
-    return 4 * _NODES * pieces
 
 
 def _first_pieces(const):
@@ -223,8 +200,8 @@ def build(group, attitude):
     >>> from andoyer.free import FreeMotion
     >>> fm = FreeMotion([1.0, 2.0, 3.0], [0.3, 0.2, 1.0])
     >>> per, rest = build(fm._groups[0], attitude=False)
-    >>> per.const.coef.shape[1:], rest
-    ((3, 12), None)
+    >>> per.const.coef.shape[1:], rest  # degree 9, the momentum and a padding component
+    ((10, 4), None)
     """
     coefs, const = _pieces_for(group, attitude)
     keep = np.array([c is not None for c in coefs])
