@@ -42,6 +42,8 @@ from andoyer.free.regime import Regime, check_inputs, classify_scaled, normalise
 
 __all__ = ["FreeMotion", "FreePeriods", "attitude", "momentum", "periods", "propagate"]
 
+_SETUP_BLOCK = 4096  # states per block of the vectorised triaxial set-up (temporaries stay in cache)
+
 
 class FreePeriods(NamedTuple):
     """Periods of torque-free motion (arrays of the body shape).
@@ -318,12 +320,22 @@ def _triaxial_groups(moments, m0, lam, q0, idx):
         if q0 is None:
             pending = (keep, (moments[~flat], m0[~flat], lam[~flat]))
         return keep, idx[flat], [(_ceval.evaluate, keep, table)], as_triaxial(table), pending
-    frame = polhode_frame(moments, m0, lam)
-    flat = frame.P1[0] == 0
-    if np.any(flat):
-        frame = polhode_frame(moments[~flat], m0[~flat], lam[~flat])
-        q0 = None if q0 is None else q0[~flat]
-    const = _tri.triaxial(frame, q0)
+    # in blocks: the double-double arithmetic makes many temporaries per state, and
+    # beyond the cache their memory traffic, not the arithmetic, set the cost per state
+    flat, consts = [], []
+    for s in range(0, moments.shape[0], _SETUP_BLOCK):
+        b = slice(s, s + _SETUP_BLOCK)
+        frame = polhode_frame(moments[b], m0[b], lam[b])
+        fl = frame.P1[0] == 0
+        qb = None if q0 is None else q0[b]
+        if np.any(fl):
+            sel = s + np.nonzero(~fl)[0]
+            frame = polhode_frame(moments[sel], m0[sel], lam[sel])
+            qb = None if q0 is None else q0[sel]
+        flat.append(fl)
+        consts.append(_tri.triaxial(frame, qb))
+    flat = np.concatenate(flat)
+    const = consts[0] if len(consts) == 1 else _const.concatenate(consts)
     keep = idx[~flat]
     groups = []
     for kind in (True, False):

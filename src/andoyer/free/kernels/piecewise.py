@@ -45,10 +45,10 @@ def locate(f, n):
 
     Examples
     --------
-    >>> locate(0.0, 4.0)
-    (2.0, -1.0)
-    >>> locate(0.5, 4.0)
-    (3.0, 1.0)
+    >>> [float(v) for v in locate(0.0, 4.0)]
+    [2.0, -1.0]
+    >>> [float(v) for v in locate(0.5, 4.0)]
+    [3.0, 1.0]
     """
     x = (f + 0.5) * n
     i = np.minimum(np.maximum(np.floor(x), 0.0), n - 1.0)
