@@ -16,6 +16,10 @@ triaxial ones prepared and evaluated, in compiled loops (:mod:`~andoyer.free.com
 :mod:`~andoyer.free.compiled_setup`, :mod:`~andoyer.free.compiled_eval`: the same formulas
 and accuracy, ~1.5 µs a body to set up and evaluate once, against ~10 µs).
 
+With many epochs per state (:attr:`FreeMotion.periodic_epochs`), the triaxial states are
+evaluated through a piecewise-polynomial representation of one period built once per state
+(:mod:`~andoyer.free.periodic`: same accuracy, several times cheaper per epoch).
+
 Times are measured from the initial state.  Conventions (as the rest of ``andoyer``):
 moments ``I`` along body axes b1, b2, b3 in any order; body angular momentum ``m``;
 attitude quaternions scalar last, rotating body vectors into the reference frame.
@@ -98,8 +102,9 @@ class FreeMotion:
         Epochs per state from which triaxial states are evaluated through a
         piecewise-polynomial representation of one period, built once
         (:mod:`andoyer.free.periodic`: same accuracy, several times faster per epoch);
-        below it, directly.  A class default, settable per instance (``0``: always,
-        ``inf``: never).
+        below it, directly.  A class default (16384 with numba, ``inf`` without, where the
+        vectorised direct path is faster), settable per instance (``0``: always, ``inf``:
+        never).
 
     Examples
     --------
@@ -111,7 +116,10 @@ class FreeMotion:
     (2, 4)
     """
 
-    periodic_epochs = 4096.0
+    # measured break-even (bench_free.py --epochs and 50 bodies at 2^11 … 2^15 epochs): the
+    # build costs ~0.4 ms a state (0.8 with the attitude), about 10⁴ direct epochs; without
+    # numba the vectorised direct kernels beat the per-epoch gathers of the pieces
+    periodic_epochs = 16384.0 if NUMBA else np.inf
 
     def __init__(self, moments, m0, q0=None):
         moments, m0 = check_inputs(moments, m0)

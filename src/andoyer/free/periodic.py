@@ -48,6 +48,7 @@ __all__ = ["DEGREE", "MAX_PIECES", "Periodic", "build", "evaluate", "fill", "fil
 MAX_PIECES = 1 << 15
 _NODES = DEGREE + 1
 _TOL = 32.0  # accepted deviation of the pieces from the kernels (ulps of the scale; the kernels carry a few)
+_FLOOR = 2e-14  # accepted where more pieces no longer help (the kernels' own rounding)
 # Chebyshev nodes of the first kind on [-1, 1] and the maps values -> Chebyshev -> monomial
 _U = np.cos(np.pi * (np.arange(_NODES) + 0.5) / _NODES)
 _TO_CHEB = np.cos(np.pi * np.outer(np.arange(_NODES), np.arange(_NODES) + 0.5) / _NODES) * (2.0 / _NODES)
@@ -151,11 +152,20 @@ def _fit(values):
 
 
 def _pieces_for(group, attitude):
-    """Coefficients per state of a triaxial group: list of arrays or None (too many pieces)."""
+    """Coefficients per state of a triaxial group: list of arrays or None (too many pieces).
+
+    The number of pieces doubles until the pieces agree with the kernels to :data:`_TOL`
+    ulps, or until a doubling no longer helps (the truncation error falls by ``2^{DEGREE+1}``
+    per doubling, the kernels' own rounding does not): then the previous pieces are kept if
+    within :data:`_FLOOR`.
+    """
     const = as_triaxial(group.const) if group.kernel is _ceval.evaluate else group.const
     pieces = _first_pieces(const)
-    out = [None] * group.members.size
-    todo = np.arange(group.members.size)
+    size = group.members.size
+    out = [None] * size
+    prev = [None] * size  # (error, coefficients) at half the pieces
+    todo = np.arange(size)
+    eps = np.finfo(float).eps
     while todo.size:
         nxt = []
         for n in np.unique(pieces[todo]):
@@ -165,12 +175,15 @@ def _pieces_for(group, attitude):
             approx = np.einsum("spjc,uj->spuc", coef, _CHECK[:, None] ** np.arange(_NODES))
             scale = np.max(np.abs(nodes), axis=(1, 2))  # (s, c)
             scale[:, 3:] = 1.0  # quaternion components: absolute (and the padding)
-            err = np.max(np.abs(approx - checks), axis=(1, 2)) / scale
-            ok = np.all(err <= _TOL * np.finfo(float).eps, axis=-1)
+            err = np.max(np.abs(approx - checks) / scale[:, None, None], axis=(1, 2, 3))
             for j, s in enumerate(sel):
-                if ok[j]:
+                if err[j] <= _TOL * eps:
                     out[s] = coef[j]
+                elif prev[s] is not None and err[j] > 0.25 * prev[s][0]:  # at the rounding floor
+                    if prev[s][0] <= _FLOOR:
+                        out[s] = prev[s][1]
                 elif n < MAX_PIECES:
+                    prev[s] = (err[j], coef[j])
                     pieces[s] = 2 * n
                     nxt.append(s)
         todo = np.array(nxt, dtype=np.int64)
