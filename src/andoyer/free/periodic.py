@@ -250,7 +250,7 @@ def build(group, attitude):
     return periodic, rest
 
 
-@jit
+@jit(inline=True)
 def _reduced(hi, lo, offset, t):
     """``offset + (hi + lo) t`` reduced to ``[−1/2, 1/2]`` cycles (error-free product)."""
     p, e = two_prod(hi, t)
@@ -272,15 +272,15 @@ def _fill(params, coef, pos, rows, t, m_out, q_out, attitude):
         for e in range(t.shape[1]):
             tk = t[o if per_row else 0, e]
             x, u = locate(_reduced(nu_hi, nu_lo, f0, tk), n)
-            row = int(base + x)
-            m0, m1, m2, _ = horner(coef, row, u, 0)
+            piece = coef[int(base + x)]
+            m0, m1, m2, _ = horner(piece, 0, u)
             m_out[o, e, 0] = m0
             m_out[o, e, 1] = m1
             m_out[o, e, 2] = m2
             if attitude:
                 sb, cb = _sincos(0.5 * _reduced(g_hi, g_lo, g0, tk))
-                a0, a1, a2, a3 = horner(coef, row, u, 4)
-                b0, b1, b2, b3 = horner(coef, row, u, 8)
+                a0, a1, a2, a3 = horner(piece, 4, u)
+                b0, b1, b2, b3 = horner(piece, 8, u)
                 q_out[o, e, 0] = cb * a0 + sb * b0
                 q_out[o, e, 1] = cb * a1 + sb * b1
                 q_out[o, e, 2] = cb * a2 + sb * b2
@@ -353,11 +353,11 @@ def fill_numpy(const, pos, rows, t, scale, outs):
             cols = slice(c0, c0 + cstep)
             tk = t[o, cols] if per_row else t[:, cols]
             x, u = locate(cycles(nu, tk, offset=p[2]), p[6])
-            row = (p[7] + x).astype(np.intp)
-            m_out[o, cols] = np.stack(horner(coef, row, u, 0)[:3], axis=-1)
+            piece = np.moveaxis(coef[(p[7] + x).astype(np.intp)], (-2, -1), (0, 1))
+            m_out[o, cols] = np.stack(horner(piece, 0, u)[:3], axis=-1)
             if q_out is not None:
                 sb, cb = sincos_cycles(0.5 * cycles(g_nu, tk, offset=p[5]))
-                a, b = horner(coef, row, u, 4), horner(coef, row, u, 8)
+                a, b = horner(piece, 4, u), horner(piece, 8, u)
                 q_out[o, cols] = np.stack([cb * a[k] + sb * b[k] for k in range(4)], axis=-1)
 
 

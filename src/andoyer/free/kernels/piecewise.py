@@ -25,7 +25,7 @@ __all__ = ["DEGREE", "horner", "locate"]
 DEGREE = 9
 
 
-@jit
+@jit(inline=True)
 def locate(f, n):
     """Piece index (a float, to be cast by the caller) and local variable ``u`` of a phase.
 
@@ -55,23 +55,23 @@ def locate(f, n):
     return i, 2.0 * (x - i) - 1.0
 
 
-@jit
-def horner(coef, row, u, k):
-    """Components ``k … k+3`` of the piece ``row`` at ``u``: ``Σⱼ coef[row, j, k+i] uʲ`` (Horner).
+@jit(inline=True)  # the call boundary costs a third of the loop that calls it
+def horner(piece, k, u):
+    """Components ``k … k+3`` of one piece at ``u``: ``Σⱼ piece[j, k+i] uʲ``, by Horner's rule.
 
-    Four components advance together: independent chains, adjacent in ``coef``, which a
-    compiler can keep in one vector register.
+    Four independent chains advance together.  ``piece[j, k]`` is the coefficient of
+    ``uʲ``: a float (the compiled path passes the piece's ``(DEGREE + 1, components)``
+    row of the table) or an array (the numpy path passes the pieces of a block of epochs
+    with those two axes first).
 
     Parameters
     ----------
-    coef : ndarray, shape (pieces, DEGREE + 1, components)
-        Monomial coefficients of every piece (components a multiple of four).
-    row : int or ndarray of int
-        Piece (row of ``coef``).
-    u : float or ndarray
-        Local variable, shaped as ``row``.
+    piece : ndarray, shape (DEGREE + 1, components, ...)
+        Monomial coefficients of the piece (of each epoch).
     k : int
         First component.
+    u : float or ndarray
+        Local variable, shaped as the trailing axes of ``piece``.
 
     Returns
     -------
@@ -79,19 +79,18 @@ def horner(coef, row, u, k):
 
     Examples
     --------
-    >>> coef = np.zeros((1, DEGREE + 1, 4))
-    >>> coef[0, :3, 1] = (1.0, 2.0, 3.0)  # component 1: 1 + 2u + 3u²
-    >>> [float(v) for v in horner(coef, 0, 0.5, 0)]
+    >>> piece = np.zeros((DEGREE + 1, 4))
+    >>> piece[:3, 1] = (1.0, 2.0, 3.0)  # component 1: 1 + 2u + 3u²
+    >>> [float(v) for v in horner(piece, 0, 0.5)]
     [0.0, 2.75, 0.0, 0.0]
     """
-    d = DEGREE
-    a0 = coef[row, d, k]
-    a1 = coef[row, d, k + 1]
-    a2 = coef[row, d, k + 2]
-    a3 = coef[row, d, k + 3]
-    for j in range(d - 1, -1, -1):
-        a0 = a0 * u + coef[row, j, k]
-        a1 = a1 * u + coef[row, j, k + 1]
-        a2 = a2 * u + coef[row, j, k + 2]
-        a3 = a3 * u + coef[row, j, k + 3]
+    a0 = piece[DEGREE, k]
+    a1 = piece[DEGREE, k + 1]
+    a2 = piece[DEGREE, k + 2]
+    a3 = piece[DEGREE, k + 3]
+    for j in range(DEGREE - 1, -1, -1):
+        a0 = a0 * u + piece[j, k]
+        a1 = a1 * u + piece[j, k + 1]
+        a2 = a2 * u + piece[j, k + 2]
+        a3 = a3 * u + piece[j, k + 3]
     return a0, a1, a2, a3
