@@ -15,12 +15,13 @@ f₀ = 0`` (so that their time is the phase) and ``g = 0`` (giving ``A``) or ``g
 (giving ``B``), and fits a polynomial of degree :data:`DEGREE` in each of ``n`` equal
 pieces of the period (values at Chebyshev nodes, then Chebyshev coefficients, then monomial
 ones).  ``n`` starts from the nome (the poles of ``sn, cn, dn`` lie ``K'/(4K)`` cycles
-off the real axis) and doubles until the pieces agree with the kernels at points between
-the nodes to a few ulps; a body that would need more than :data:`MAX_PIECES` keeps the
-direct evaluation.
+off the real axis) and doubles until the pieces agree with the kernels at the ends and
+between the nodes of every piece to 32 ulps, or until doubling stops helping (the kernels'
+own rounding, up to ~40 ulps near the separatrix); a body that would need more than
+:data:`MAX_PIECES` keeps the direct evaluation.
 
-Per epoch the evaluation then costs the two reduced phases, ``3`` (momentum) or ``11``
-(momentum and attitude) polynomials and one ``sincos`` (:func:`fill`, compiled, and
+Per epoch the evaluation then costs the two reduced phases, ``4`` (momentum and a
+padding) or ``12`` (with ``A``, ``B``) polynomials and one ``sincos`` (:func:`fill`, compiled, and
 :func:`fill_numpy`, vectorised; both call :mod:`andoyer.free.kernels.piecewise`).  The
 pieces break at ``f = 0, ±1/4, ±1/2`` (``n`` is a power of two ``≥ 4``), where the
 hyperbolic series of the kernels switch branch.
