@@ -20,7 +20,13 @@ body from 0 to that epoch: the set-up is not amortised.  With numba installed
 :class:`andoyer.free.FreeMotion` builds and evaluates the triaxial solution in compiled
 loops; ``ANDOYER_NUMBA=0`` in the environment measures the numpy path.
 
-Run: ``python3 benchmarks/bench_free.py [--quick]``  (pins numpy to one thread; rates are
+``--epochs``: 10 bodies × 10⁵ epochs over 100 periods (issue 17 item 1): the periodic
+representation chosen automatically, the direct path, heyoka's ``propagate_grid`` at its
+tightest tolerance, and a numba loop of one ``sin`` and one ``cos`` per pair.
+``--setup``: set-up per body at 10⁴, 10⁵, 10⁶ bodies (item 3).  Both run each
+measurement ``--repeat`` times interleaved and give the best and the median.
+
+Run: ``python3 benchmarks/bench_free.py [--quick] [--epochs | --setup]``  (pins numpy to one thread; rates are
 per CPU second of this process, so they do not depend on other load on the machine).
 """
 
@@ -32,6 +38,7 @@ for _v in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_v, "1")
 
 import argparse  # noqa: E402
+import math  # noqa: E402
 import sys  # noqa: E402
 import time  # noqa: E402
 from pathlib import Path  # noqa: E402
@@ -172,10 +179,140 @@ def timed(fn, *args, repeat=3):
     return best, out
 
 
+def heyoka_momentum_integrator(tol):  # pragma: no cover - optional
+    """Euler's equations alone (3 variables; pars: 1/I)."""
+    return hy.taylor_adaptive(heyoka_system()[:3], [0.0] * 3, tol=tol, pars=[1.0, 1.0, 1.0])
+
+
+def sincos_yardstick():
+    """A compiled loop evaluating one ``sin`` and one ``cos`` per (body, epoch) pair (numba)."""
+    import numba
+
+    @numba.njit(cache=True)
+    def loop(w, t, out):
+        for i in range(t.shape[0]):
+            for e in range(t.shape[1]):
+                x = w[i] * t[i, e]
+                out[i, e, 0] = math.sin(x)
+                out[i, e, 1] = math.cos(x)
+
+    return loop
+
+
+def many_epochs(n_bodies, n_epochs, repeat):
+    """Issue 17 item 1: a few bodies, many epochs each, over 100 periods of m(t)."""
+    moments, m0, q0, t = workload(n_bodies, n_epochs, seed=1)
+    pairs = t.size
+    big = (moments[:, None], m0[:, None], q0[:, None])
+
+    def closed(mode, attitude):
+        def run():
+            fm = FreeMotion(*big) if attitude else FreeMotion(*big[:2])
+            fm.periodic_epochs = 0.0 if mode == "periodic" else np.inf
+            return fm.propagate(t) if attitude else fm.momentum(t)
+        return run
+
+    # "periodic": the piecewise representation forced; "direct": the per-epoch theta series
+    runs = {f"{mode}, {what}": closed(mode, what == "momentum + attitude")
+            for what in ("momentum", "momentum + attitude") for mode in ("periodic", "direct")}
+    if NUMBA:
+        loop = sincos_yardstick()
+        out = np.empty((*t.shape, 2))
+        w = 1.0 / FreeMotion(moments, m0).periods.period
+        loop(w, t[:1], out[:1])  # compile
+        runs["numba loop: one sin + one cos"] = lambda: loop(w, t, out)
+    tol = np.finfo(float).eps
+    if hy is not None:  # pragma: no cover - optional
+        ta_m = heyoka_momentum_integrator(tol)
+        ta_f = hy.taylor_adaptive(heyoka_system(), [0.0] * 7, tol=tol, pars=[1.0, 1.0, 1.0])
+
+        def hy_momentum():
+            out_m = np.empty((*t.shape, 3))
+            for i in range(n_bodies):
+                ta_m.time = 0.0
+                ta_m.state[:] = m0[i]
+                ta_m.pars[:] = 1.0 / moments[i]
+                out_m[i] = ta_m.propagate_grid(np.concatenate([[0.0], t[i]]))[-1][1:]
+            return out_m
+
+        runs["heyoka propagate_grid, momentum"] = hy_momentum
+        runs["heyoka propagate_grid, momentum + attitude"] = lambda: heyoka_run(ta_f, moments, m0, q0, t)
+    times = {k: [] for k in runs}
+    for _ in range(repeat):  # interleaved: the machine is shared
+        for k, fn in runs.items():
+            t0 = time.process_time()
+            fn()
+            times[k].append(time.process_time() - t0)
+    # accuracy at 100 periods (2 bodies) against the Taylor reference
+    errs = {}
+    for i in range(2):
+        t_end = 100.0 * float(FreeMotion(moments[i], m0[i]).periods.period)
+        mr, qr = TaylorReference(moments[i], m0[i], q0[i]).advance_to(t_end)
+        for mode, thresh in (("periodic", 0.0), ("direct", np.inf)):
+            fm = FreeMotion(moments[i], m0[i], q0[i])
+            fm.periodic_epochs = thresh
+            m, q = fm.propagate(t_end)
+            e = errs.setdefault(mode, [0.0, 0.0])
+            e[0], e[1] = max(e[0], relative_error(mr, m)), max(e[1], angle_between(qr, q))
+        if hy is not None:  # pragma: no cover - optional
+            mh, qh = heyoka_run(ta_f, moments[i : i + 1], m0[i : i + 1], q0[i : i + 1], np.array([[t_end]]))
+            e = errs.setdefault("heyoka", [0.0, 0.0])
+            e[0] = max(e[0], relative_error(mr, mh[0, 0]))
+            e[1] = max(e[1], angle_between(qr, qh[0, 0] / np.linalg.norm(qh[0, 0])))
+    print(f"many epochs per body: {n_bodies} bodies x {n_epochs} epochs in [0, 100 periods], {repeat} runs"
+          " interleaved (CPU time of this process, one core); pairs/s best and median")
+    print(f"{'method':46s} {'best':>10s} {'median':>10s}")
+    rate = {}
+    for k, ts in times.items():
+        rate[k] = pairs / min(ts), pairs / float(np.median(ts))
+        print(f"{k:46s} {rate[k][0]:10.3e} {rate[k][1]:10.3e}")
+    for what in ("momentum", "momentum + attitude"):
+        p, d = rate[f"periodic, {what}"], rate[f"direct, {what}"]
+        line = f"{what}: periodic / direct {p[0] / d[0]:.1f}x (median {p[1] / d[1]:.1f}x)"
+        if f"heyoka propagate_grid, {what}" in rate:  # pragma: no cover - optional
+            h = rate[f"heyoka propagate_grid, {what}"]
+            line += f"; periodic / heyoka {p[0] / h[0]:.1f}x (median {p[1] / h[1]:.1f}x)"
+        if "numba loop: one sin + one cos" in rate:
+            y = rate["numba loop: one sin + one cos"]
+            line += f"; periodic / sin+cos loop {p[0] / y[0]:.2f}x (median {p[1] / y[1]:.2f}x)"
+        print(line)
+    for k, (em, eq) in errs.items():
+        print(f"error at 100 periods vs the 57-digit reference, {k}: |dm|/|m| {em:.1e}, attitude {eq:.1e}")
+    print(f"heyoka at tol = {tol:.1e} (its tightest in double): it cannot reach 1e-14 over 100 periods")
+    auto = "periodic" if n_epochs >= FreeMotion.periodic_epochs else "direct"
+    print(f"FreeMotion's automatic choice at {n_epochs} epochs per body: {auto}"
+          f" (FreeMotion.periodic_epochs = {FreeMotion.periodic_epochs:g}); build included in the rates")
+
+
+def setup_scaling(sizes, repeat):
+    """Issue 17 item 3: set-up cost per body against the number of bodies."""
+    times = {n: [] for n in sizes}
+    data = {n: workload(n, 1, seed=2)[:3] for n in sizes}
+    for _ in range(repeat):
+        for n in sizes:
+            t0 = time.process_time()
+            FreeMotion(*data[n])
+            times[n].append((time.process_time() - t0) / n)
+    print(f"set-up per body (FreeMotion(moments, m0, q0)), {repeat} runs interleaved, compiled: {NUMBA}")
+    for n in sizes:
+        best, med = min(times[n]) * 1e6, np.median(times[n]) * 1e6
+        print(f"{n:9d} bodies: best {best:6.2f} us, median {med:6.2f} us,"
+              f" ratio to {sizes[0]}: {min(times[n]) / min(times[sizes[0]]):.2f}x")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="small sizes (smoke run)")
+    ap.add_argument("--epochs", action="store_true", help="many epochs per body (10 x 1e5)")
+    ap.add_argument("--setup", action="store_true", help="set-up per body from 1e4 to 1e6 bodies")
+    ap.add_argument("--repeat", type=int, default=5, help="interleaved runs of --epochs/--setup")
     args = ap.parse_args()
+    if args.epochs:
+        many_epochs(10, 5000 if args.quick else 100_000, args.repeat)
+        return
+    if args.setup:
+        setup_scaling((10_000, 100_000) if args.quick else (10_000, 100_000, 1_000_000), args.repeat)
+        return
     nb, ne = (200, 500) if args.quick else (2000, 2000)
     nb_ivp, ne_ivp = (4, 50) if args.quick else (20, 200)
     n_ref = 1 if args.quick else 3

@@ -24,8 +24,17 @@ NUMBA = _numba is not None
 __all__ = ["NUMBA", "jit", "jitable"]
 
 
-def jit(function):
+def jit(function=None, *, inline=False):
     """``numba.njit(cache=True)`` when numba is installed, else the function itself.
+
+    Parameters
+    ----------
+    function : callable, optional
+        The kernel (``@jit``); omitted when options are given (``@jit(inline=True)``).
+    inline : bool, optional
+        Inline the kernel into its compiled callers (numba's ``inline="always"``): for
+        small kernels in hot loops, where the call boundary keeps LLVM from interleaving
+        the caller's work with the kernel's.
 
     Examples
     --------
@@ -36,9 +45,12 @@ def jit(function):
     >>> round(float(carlson_rf(0.0, 1.0, 2.0)), 13)
     1.3110287771461
     """
+    if function is None:
+        return lambda f: jit(f, inline=inline)
     if _numba is None:  # pragma: no cover - depends on the environment
         return function
-    return _numba.njit(cache=True, error_model="numpy")(function)
+    options = {"inline": "always"} if inline else {}
+    return _numba.njit(cache=True, error_model="numpy", **options)(function)
 
 
 def jitable(function):

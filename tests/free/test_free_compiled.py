@@ -141,3 +141,24 @@ def test_compiled_classification_equals_classify_and_normalise():
     assert np.array_equal(ms, mw)
     assert np.array_equal(a, aw)
     assert np.array_equal(b, bw)
+
+
+def test_numpy_setup_in_blocks_equals_setup_at_once(monkeypatch):
+    # the vectorised set-up runs in blocks of states (issue 17: cost per state independent
+    # of the batch); steady spins whose wobble underflows fall in several blocks
+    moments, m0, _, q0 = _states()
+    moments, m0, q0 = moments[:40].copy(), m0[:40].copy(), q0[:40]
+    spins = [3, 17, 18, 31]
+    for i in spins:  # about the axis of largest moment, with a wobble that underflows
+        j = int(np.argmax(moments[i]))
+        m0[i] = 0.0
+        m0[i, j], m0[i, (j + 1) % 3] = 0.5, 1e-170
+    t = np.array([[0.0, 0.37, -9.71, 100.0]])
+    monkeypatch.setattr(motion, "NUMBA", False)
+    m_one, q_one = FreeMotion(moments[:, None], m0[:, None], q0[:, None]).propagate(t)
+    monkeypatch.setattr(motion, "_SETUP_BLOCK", 7)
+    fm = FreeMotion(moments[:, None], m0[:, None], q0[:, None])
+    m_blk, q_blk = fm.propagate(t)
+    assert np.array_equal(m_one, m_blk)
+    assert np.array_equal(q_one, q_blk)
+    assert np.array_equal(m_blk[spins], np.broadcast_to(m0[spins, None], (4, 4, 3)))

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["rows", "subset"]
+__all__ = ["concatenate", "rows", "subset"]
 
 
 def _map(fn, tree):
@@ -68,3 +68,29 @@ def rows(const, sel):
     [[3.0], [1.0]]
     """
     return _map(lambda a: a[..., sel][..., None], const)
+
+
+def concatenate(consts):
+    """Constants of several tables of the same type, one after the other along the state axis.
+
+    Parameters
+    ----------
+    consts : sequence of NamedTuple
+        Tables of one type (arrays with the state axis last).
+
+    Returns
+    -------
+    NamedTuple
+        Same type and layout, ``Σ Nᵢ`` states.
+
+    Examples
+    --------
+    >>> from andoyer.free.phase import frequency
+    >>> concatenate([frequency(np.array([1.0])), frequency(np.array([2.0, 3.0]))]).hi.tolist()
+    [1.0, 2.0, 3.0]
+    """
+    first = consts[0]
+    if isinstance(first, tuple):
+        items = (concatenate([c[i] for c in consts]) for i in range(len(first)))
+        return type(first)(*items) if hasattr(first, "_fields") else tuple(items)
+    return np.concatenate([np.asarray(c) for c in consts], axis=-1)

@@ -16,6 +16,10 @@ triaxial ones prepared and evaluated, in compiled loops (:mod:`~andoyer.free.com
 :mod:`~andoyer.free.compiled_setup`, :mod:`~andoyer.free.compiled_eval`: the same formulas
 and accuracy, ~1.5 µs a body to set up and evaluate once, against ~10 µs).
 
+With many epochs per state (:attr:`FreeMotion.periodic_epochs`), the triaxial states are
+evaluated through a piecewise-polynomial representation of one period built once per state
+(:mod:`~andoyer.free.periodic`: same accuracy, several times cheaper per epoch).
+
 Times are measured from the initial state.  Conventions (as the rest of ``andoyer``):
 moments ``I`` along body axes b1, b2, b3 in any order; body angular momentum ``m``;
 attitude quaternions scalar last, rotating body vectors into the reference frame.
@@ -31,6 +35,7 @@ from andoyer._jit import NUMBA
 from andoyer._limits import check_spin_phase, spin_bound
 from andoyer.free import compiled_eval as _ceval
 from andoyer.free import constants as _const
+from andoyer.free import periodic as _periodic
 from andoyer.free import separatrix as _sep
 from andoyer.free import series
 from andoyer.free import triaxial as _tri
@@ -41,6 +46,8 @@ from andoyer.free.compiled_setup import as_triaxial, triaxial_table
 from andoyer.free.regime import Regime, check_inputs, classify_scaled, normalise, polhode_frame
 
 __all__ = ["FreeMotion", "FreePeriods", "attitude", "momentum", "periods", "propagate"]
+
+_SETUP_BLOCK = 4096  # states per block of the vectorised triaxial set-up (temporaries stay in cache)
 
 
 class FreePeriods(NamedTuple):
@@ -92,6 +99,13 @@ class FreeMotion:
         :class:`Regime` codes.
     periods : FreePeriods
         Period of ``m(t)`` and precession of the attitude per period.
+    periodic_epochs : float
+        Epochs per state from which triaxial states are evaluated through a
+        piecewise-polynomial representation of one period, built once
+        (:mod:`andoyer.free.periodic`: same accuracy, several times faster per epoch);
+        below it, directly.  A class default (16384 with numba, ``inf`` without, where the
+        vectorised direct path is faster), settable per instance (``0``: always, ``inf``:
+        never).
 
     Examples
     --------
@@ -102,6 +116,11 @@ class FreeMotion:
     >>> fm.attitude([0.0, T]).shape
     (2, 4)
     """
+
+    # measured break-even (bench_free.py --epochs and 50 bodies at 2^11 … 2^15 epochs): the
+    # build costs ~0.4 ms a state (0.8 with the attitude), about 10⁴ direct epochs; without
+    # numba the vectorised direct kernels beat the per-epoch gathers of the pieces
+    periodic_epochs = 16384.0 if NUMBA else np.inf
 
     def __init__(self, moments, m0, q0=None):
         moments, m0 = check_inputs(moments, m0)
@@ -178,6 +197,7 @@ class FreeMotion:
         self._groups = [Group(k, idx, c, tshift[idx], b[idx]) for k, idx, c in groups]
         self._scaled_periods = (period, rate, tshift)
         self._periods = None
+        self._periodic = {}
 
     @property
     def periods(self):
@@ -279,7 +299,26 @@ class FreeMotion:
         if self._spin_bound is None:
             self._spin_bound = spin_bound(*self._spin)
         check_spin_phase(*self._spin, t, "the free motion", self._spin_bound)
-        return evaluate_blocks(self._groups, self.shape, t, attitude)
+        n = max(1, int(np.prod(self.shape)))
+        per_state = np.prod(np.broadcast_shapes(self.shape, t.shape)) / n
+        groups = self._groups
+        if per_state >= self.periodic_epochs:
+            groups = self._periodic_groups(attitude)
+        return evaluate_blocks(groups, self.shape, t, attitude)
+
+    def _periodic_groups(self, attitude):
+        """The groups with the triaxial ones replaced by their periodic representation (cached)."""
+        if True in self._periodic:  # the attitude representation serves the momentum too
+            return self._periodic[True]
+        if attitude not in self._periodic:
+            groups = []
+            for group in self._groups:
+                if group.kernel is _ceval.evaluate or group.kernel is series.evaluate:
+                    groups += [g for g in _periodic.build(group, attitude) if g is not None]
+                else:
+                    groups.append(group)
+            self._periodic[attitude] = groups
+        return self._periodic[attitude]
 
 
 def _triaxial_groups(moments, m0, lam, q0, idx):
@@ -300,12 +339,22 @@ def _triaxial_groups(moments, m0, lam, q0, idx):
         if q0 is None:
             pending = (keep, (moments[~flat], m0[~flat], lam[~flat]))
         return keep, idx[flat], [(_ceval.evaluate, keep, table)], as_triaxial(table), pending
-    frame = polhode_frame(moments, m0, lam)
-    flat = frame.P1[0] == 0
-    if np.any(flat):
-        frame = polhode_frame(moments[~flat], m0[~flat], lam[~flat])
-        q0 = None if q0 is None else q0[~flat]
-    const = _tri.triaxial(frame, q0)
+    # in blocks: the double-double arithmetic makes many temporaries per state, and
+    # beyond the cache their memory traffic, not the arithmetic, set the cost per state
+    flat, consts = [], []
+    for s in range(0, moments.shape[0], _SETUP_BLOCK):
+        b = slice(s, s + _SETUP_BLOCK)
+        frame = polhode_frame(moments[b], m0[b], lam[b])
+        fl = frame.P1[0] == 0
+        qb = None if q0 is None else q0[b]
+        if np.any(fl):
+            sel = s + np.nonzero(~fl)[0]
+            frame = polhode_frame(moments[sel], m0[sel], lam[sel])
+            qb = None if q0 is None else q0[sel]
+        flat.append(fl)
+        consts.append(_tri.triaxial(frame, qb))
+    flat = np.concatenate(flat)
+    const = consts[0] if len(consts) == 1 else _const.concatenate(consts)
     keep = idx[~flat]
     groups = []
     for kind in (True, False):

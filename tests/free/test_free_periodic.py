@@ -1,0 +1,174 @@
+"""Many epochs per body: the piecewise-polynomial representation of one period.
+
+:mod:`andoyer.free.periodic` replaces the per-epoch theta series of triaxial states by
+polynomials of the reduced polhode phase, built once per state.  Checked here against the
+57-digit Taylor reference of ``free_reference.py`` (negative times through time reversal:
+``m(−t) = −n(t)``, ``q(−t) = p(t)`` where ``(n, p)`` start from ``(−m₀, q₀)``), against
+the direct path (a different algorithm), against its own periodicity, and on both the
+compiled and the numpy fills.
+"""
+
+import numpy as np
+import pytest
+from free_cases import cases
+from free_reference import TaylorReference, angle_between, relative_error
+from scipy.spatial.transform import Rotation
+
+from andoyer.free import FreeMotion, periodic
+from andoyer.free.kernels.piecewise import DEGREE, horner, locate
+
+BY_NAME = {c[0]: c for c in cases()}
+TOL = 1e-14
+
+SLOW = pytest.mark.slow
+REGIMES = (
+    "sam-0",
+    "lam-1",
+    pytest.param("near-separatrix-sam-1e-10", marks=SLOW),
+    "near-separatrix-lam-1e-10",
+    "near-separatrix-sam-1e-6",
+    "k2-above-half",
+    pytest.param("earth-wobble-0.3", marks=SLOW),
+    "scaled-large-moments",
+    "oblate",
+    "sphere",
+)
+
+
+def _forced(moments, m0, q0=None, periodic_epochs=0.0):
+    fm = FreeMotion(moments, m0, q0)
+    fm.periodic_epochs = periodic_epochs
+    return fm
+
+
+def _random_states(n, seed):
+    rng = np.random.default_rng(seed)
+    moments = rng.uniform(1.0, 2.0, (n, 3))
+    m0 = rng.normal(size=(n, 3)) * np.exp(rng.uniform(-2, 2, (n, 1)))
+    q0 = Rotation.random(n, random_state=seed).as_quat()
+    return moments, m0, q0
+
+
+@pytest.mark.parametrize("name", REGIMES)
+def test_periodic_matches_reference_in_every_regime(name):
+    _, moments, m0, q0, t_unit = BY_NAME[name]
+    fm = _forced(moments, m0, q0)
+    forward = TaylorReference(moments, m0, q0)
+    for k in (0.0, 0.37, 2.3):
+        m_ref, q_ref = forward.advance_to(k * t_unit)
+        m, q = fm.propagate(k * t_unit)
+        assert relative_error(m_ref, m) <= TOL, k
+        assert angle_between(q_ref, q) <= TOL, k
+    backward = TaylorReference(moments, -np.asarray(m0), q0)  # time reversal
+    n_ref, p_ref = backward.advance_to(1.7 * t_unit)
+    m, q = fm.propagate(-1.7 * t_unit)
+    assert relative_error([-x for x in n_ref], m) <= TOL
+    assert angle_between(p_ref, q) <= TOL
+
+
+def test_periodic_equals_direct_on_random_states():
+    moments, m0, q0 = _random_states(100, 11)
+    period = FreeMotion(moments, m0).periods.period
+    rng = np.random.default_rng(5)
+    t = rng.uniform(-30.0, 30.0, (100, 40)) * period[:, None]
+    t[:, :7] = np.arange(-3, 4) * period[:, None]  # exact multiples of the period, and 0
+    m_p, q_p = _forced(moments[:, None], m0[:, None], q0[:, None]).propagate(t)
+    m_d, q_d = _forced(moments[:, None], m0[:, None], q0[:, None], np.inf).propagate(t)
+    g = np.linalg.norm(m0, axis=-1)[:, None, None]
+    assert np.max(np.abs(m_p - m_d) / g) <= TOL
+    assert np.max(np.abs(q_p - q_d)) <= TOL  # the same quaternions, sign included
+
+
+def test_periodic_returns_after_whole_periods():
+    moments, m0, q0 = _random_states(50, 3)
+    fm = _forced(moments[:, None], m0[:, None], q0[:, None])
+    period = fm.periods.period
+    k = np.array([-5.0, -1.0, 0.0, 1.0, 2.0, 5.0])  # t = kT carries k ulps of T
+    m = fm.momentum(k * period)
+    assert np.max(np.abs(m - m0[:, None]) / np.linalg.norm(m0, axis=-1)[:, None, None]) <= TOL
+
+
+def test_periodic_is_chosen_from_the_epochs_per_state():
+    moments, m0, q0 = _random_states(3, 2)
+    t = np.linspace(-50.0, 50.0, 2000)
+    many = _forced(moments[:, None], m0[:, None], q0[:, None], periodic_epochs=2000)
+    m_auto, q_auto = many.propagate(t)
+    assert many._periodic  # the representation was built
+    few = _forced(moments[:, None], m0[:, None], q0[:, None], periodic_epochs=2000)
+    m_few, _ = few.propagate(t[:1999])
+    assert not few._periodic
+    m_d, q_d = _forced(moments[:, None], m0[:, None], q0[:, None], np.inf).propagate(t)
+    g = np.linalg.norm(m0, axis=-1)[:, None, None]
+    assert np.max(np.abs(m_auto - m_d) / g) <= TOL
+    assert np.max(np.abs(q_auto - q_d)) <= TOL
+    assert np.array_equal(m_few, m_d[:, :1999])
+
+
+def test_periodic_one_body_huge_epoch_count():
+    moments, m0, q0 = _random_states(1, 4)
+    fm = FreeMotion(moments[0], m0[0], q0[0])
+    t = np.linspace(-1e3, 1e3, 400_001) * fm.periods.period
+    m, q = fm.propagate(t)
+    m_d, q_d = _forced(moments[0], m0[0], q0[0], np.inf).propagate(t[::4001])
+    assert np.max(np.abs(m[::4001] - m_d)) <= TOL * np.linalg.norm(m0)
+    assert np.max(np.abs(q[::4001] - q_d)) <= TOL
+
+
+def test_periodic_compiled_and_numpy_fills_agree():
+    moments, m0, q0 = _random_states(20, 9)
+    fm = FreeMotion(moments[:, None], m0[:, None], q0[:, None])
+    group = next(g for g in fm._groups if g.members.size == 20 or g.members.size > 1)
+    per, rest = periodic.build(group, attitude=True)
+    assert rest is None
+    t = np.random.default_rng(1).uniform(-1e3, 1e3, (group.members.size, 33))
+    outs = []
+    for fill in (periodic.fill, periodic.fill_numpy):
+        m = np.empty((*t.shape, 3))
+        q = np.empty((*t.shape, 4))
+        rows = np.arange(t.shape[0])
+        fill(per.const, rows, rows, t, None, (m, q))
+        outs.append((m, q))
+    assert np.max(np.abs(outs[0][0] - outs[1][0])) <= 4e-16 * np.abs(outs[0][0]).max()
+    assert np.max(np.abs(outs[0][1] - outs[1][1])) <= 4e-16
+
+
+def test_periodic_leaves_states_needing_too_many_pieces_direct(monkeypatch):
+    _, moments, m0, q0, t_unit = BY_NAME["near-separatrix-sam-1e-10"]
+    monkeypatch.setattr(periodic, "MAX_PIECES", 8)
+    fm = _forced(moments, m0, q0)
+    t = np.array([0.0, 0.37, -2.3]) * t_unit
+    m, q = fm.propagate(t)
+    assert all(g.kernel is not periodic.evaluate for g in fm._periodic[True])
+    m_d, q_d = _forced(moments, m0, q0, np.inf).propagate(t)
+    assert np.array_equal(m, m_d)
+    assert np.array_equal(q, q_d)
+
+
+def test_periodic_chunked_consistently():
+    moments, m0, q0 = _random_states(1, 8)
+    fm = _forced(moments[0], m0[0], q0[0])
+    t = np.linspace(-1e4, 1e4, 50_001)
+    m, q = fm.propagate(t)
+    m2, q2 = fm.propagate(t[::997])
+    assert np.array_equal(m[::997], m2)
+    assert np.array_equal(q[::997], q2)
+
+
+@pytest.mark.parametrize("n", [4, 16])
+def test_piecewise_kernels_reproduce_cos_and_sin(n):
+    # pieces of cos(2πf), sin(2πf) from values at the nodes; compared with numpy's own
+    u = periodic._U
+    f = -0.5 + (np.arange(n)[:, None] + 0.5 * (u + 1.0)) / n
+    vals = np.stack([np.cos(2 * np.pi * f), np.sin(2 * np.pi * f), f * f, np.ones_like(f)], axis=-1)
+    coef = np.ascontiguousarray(periodic._fit(vals))
+    assert coef.shape == (n, DEGREE + 1, 4)
+    x = np.random.default_rng(0).uniform(-0.5, 0.5, 1000)
+    x[:3] = (-0.5, 0.0, 0.5)
+    i, t = locate(x, float(n))
+    got = horner(np.moveaxis(coef[i.astype(np.intp)], (-2, -1), (0, 1)), 0, t)
+    tol = 4e-15 if n == 16 else 1e-9  # a few ulps from the fit and Horner; n = 4: truncation ~1e-10
+    assert np.max(np.abs(got[0] - np.cos(2 * np.pi * x))) <= tol
+    assert np.max(np.abs(got[1] - np.sin(2 * np.pi * x))) <= tol
+    assert np.max(np.abs(got[2] - x * x)) <= 1e-15
+    scalar = [horner(coef[int(a)], 0, b)[0] for a, b in zip(i[:5], t[:5], strict=True)]
+    assert np.array_equal(scalar, got[0][:5])
