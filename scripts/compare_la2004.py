@@ -111,7 +111,7 @@ def compare(body: str, paths: list[str], args: argparse.Namespace, rate: float, 
     }
     if args.fit_rate:
         near = np.abs(t) <= 250000.0
-        rates = rate + np.linspace(-0.06, 0.06, 121)
+        rates = rate * (1.0 + np.linspace(-0.02, 0.02, 161))  # ±2 %
         misfit = []
         for r in rates:
             hr = spin_axis_history(nbody(body, args), body, t[near], precession_rate=r, tidal_dissipation=td)
