@@ -38,7 +38,9 @@ them are within 0.02″/yr of La2004's (``g5`` 4.2454, ``g6`` 28.2583, ``g7`` 3.
 ``scripts/check_outer_frequencies.py``; from Standish's mean elements taken as osculating,
 as before 2026-11-25, Saturn ran 0.7% fast and ``g6`` came out 26.05″/yr).
 The Moon's action on the Earth–Moon barycentre's orbit, the
-Sun's J2 and oblateness, asteroids and tides are left out.
+Sun's J2 and oblateness, asteroids and tides are left out. What each costs in obliquity and
+climatic precession over 1 Myr, and the distance from La2004, are measured in
+docs/spin-axis.md (``scripts/nbody_variants.py``, ``scripts/compare_la2004.py``).
 
 **Cache.** Results are stored under ``$ANDOYER_CACHE_DIR``, else ``$XDG_CACHE_HOME/andoyer``,
 else ``~/.cache/andoyer``, in files named by a SHA-256 of the initial conditions, the
