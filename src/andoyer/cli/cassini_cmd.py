@@ -7,6 +7,7 @@ import json
 import math
 from typing import TYPE_CHECKING
 
+from andoyer.cli.numbers import finite_number
 from andoyer.cli.output import CliError, add_output_argument, atomic_output, format_rows
 
 EXAMPLES = """examples:
@@ -26,26 +27,22 @@ if TYPE_CHECKING:
     from andoyer.cassini import CassiniBody
 
 
-def _real(text: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        value = math.nan
-    if not math.isfinite(value):
-        msg = f"expected a finite number, got {text!r}"
-        raise argparse.ArgumentTypeError(msg)
-    return value
-
-
 def add_cassini_arguments(parser: argparse.ArgumentParser) -> None:
     """The options that override a named body's moments and orbit (shared with ``portrait cassini``)."""
-    parser.add_argument("--j2", type=_real, metavar="J2", help="unnormalised J2")
-    parser.add_argument("--c22", type=_real, metavar="C22", help="unnormalised C22")
-    parser.add_argument("--moment-of-inertia", type=_real, metavar="C_MR2", help="polar moment C/MR^2")
+    parser.add_argument("--j2", type=finite_number, metavar="J2", help="unnormalised J2")
+    parser.add_argument("--c22", type=finite_number, metavar="C22", help="unnormalised C22")
     parser.add_argument(
-        "--node-period", type=_real, metavar="YEARS", help="period of the node's regression, Julian years"
+        "--moment-of-inertia", type=finite_number, metavar="C_MR2", help="polar moment C/MR^2"
     )
-    parser.add_argument("--inclination", type=_real, metavar="DEG", help="orbit to Laplace plane, degrees")
+    parser.add_argument(
+        "--node-period",
+        type=finite_number,
+        metavar="YEARS",
+        help="period of the node's regression, Julian years",
+    )
+    parser.add_argument(
+        "--inclination", type=finite_number, metavar="DEG", help="orbit to Laplace plane, degrees"
+    )
 
 
 def cassini_body_from_args(name: str, args: argparse.Namespace) -> CassiniBody:

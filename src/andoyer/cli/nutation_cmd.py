@@ -6,6 +6,7 @@ import argparse
 import json
 import math
 
+from andoyer.cli.numbers import finite_number
 from andoyer.cli.output import CliError, add_output_argument, atomic_output, format_rows
 
 EXAMPLES = """examples:
@@ -23,17 +24,6 @@ JSON keys: t, dpsi, deps (and with --terms: terms, precession_arcsec_per_year).
 _MAX_POINTS = 2_000_000
 
 
-def _finite(text: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        value = math.nan
-    if not math.isfinite(value):
-        msg = f"expected a finite number, got {text!r}"
-        raise argparse.ArgumentTypeError(msg)
-    return value
-
-
 def register(commands: argparse._SubParsersAction) -> None:
     """Add the sub-command to the parser."""
     from andoyer.nutation import AXES, H_MHB2000
@@ -44,11 +34,11 @@ def register(commands: argparse._SubParsersAction) -> None:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     parser.add_argument("body", type=str.lower, choices=("earth",))
-    parser.add_argument("--span", nargs=2, type=_finite, metavar=("T0", "T1"), required=True)
-    parser.add_argument("--step", type=_finite, metavar="DT", required=True, help="years")
+    parser.add_argument("--span", nargs=2, type=finite_number, metavar=("T0", "T1"), required=True)
+    parser.add_argument("--step", type=finite_number, metavar="DT", required=True, help="years")
     parser.add_argument(
         "--dynamical-ellipticity",
-        type=_finite,
+        type=finite_number,
         metavar="H",
         default=H_MHB2000,
         help=f"H = (C - (A+B)/2)/C (default {H_MHB2000}, MHB2000)",

@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 
 import numpy as np
 
+from andoyer.cli.numbers import finite_number
 from andoyer.cli.output import CliError, add_output_argument, atomic_output, format_rows
 
 EXAMPLES = """examples:
@@ -30,17 +30,6 @@ DEFAULT_SPAN = (-200000.0, 0.0)
 DEFAULT_STEP = 1000.0
 
 
-def _finite(text: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        value = math.nan
-    if not math.isfinite(value):
-        msg = f"expected a finite number, got {text!r}"
-        raise argparse.ArgumentTypeError(msg)
-    return value
-
-
 def register(commands: argparse._SubParsersAction) -> None:
     """Add the sub-command to the parser."""
     parser = commands.add_parser(
@@ -52,14 +41,16 @@ def register(commands: argparse._SubParsersAction) -> None:
     parser.add_argument(
         "--orbit", metavar="SOURCE", help="vondrak|nbody|secular|PATH (default: earth vondrak, mars nbody)"
     )
-    parser.add_argument("--span", nargs=2, type=_finite, metavar=("T0", "T1"), default=DEFAULT_SPAN)
-    parser.add_argument("--step", type=_finite, metavar="DT", default=DEFAULT_STEP, help="output step, years")
+    parser.add_argument("--span", nargs=2, type=finite_number, metavar=("T0", "T1"), default=DEFAULT_SPAN)
+    parser.add_argument(
+        "--step", type=finite_number, metavar="DT", default=DEFAULT_STEP, help="output step, years"
+    )
     strength = parser.add_mutually_exclusive_group()
     strength.add_argument(
-        "--precession-rate", type=_finite, metavar="P", help="psi_A rate at J2000, arcsec/yr"
+        "--precession-rate", type=finite_number, metavar="P", help="psi_A rate at J2000, arcsec/yr"
     )
-    strength.add_argument("--dynamical-ellipticity", type=_finite, metavar="H")
-    parser.add_argument("--tidal-dissipation", type=_finite, metavar="TD", default=0.0)
+    strength.add_argument("--dynamical-ellipticity", type=finite_number, metavar="H")
+    parser.add_argument("--tidal-dissipation", type=finite_number, metavar="TD", default=0.0)
     parser.add_argument("--format", choices=("json", "csv", "table"), default="table")
     add_output_argument(parser)
     add_output_argument(parser, "--plot", "PNG of obliquity and climatic precession")

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 
+from andoyer.cli.numbers import positive_number
 from andoyer.cli.output import CliError, add_output_argument, atomic_output
 
 EXAMPLES = """examples:
@@ -21,17 +21,6 @@ JSON keys: body, perturbers, obliquity_deg, secular_arcsec_per_year, integrated_
 """
 
 
-def _positive(text: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        value = math.nan
-    if not (math.isfinite(value) and value > 0):
-        msg = f"expected a positive number, got {text!r}"
-        raise argparse.ArgumentTypeError(msg)
-    return value
-
-
 def register(commands: argparse._SubParsersAction) -> None:
     """Add the sub-command to the parser."""
     from andoyer.precession import PLANETS
@@ -43,11 +32,11 @@ def register(commands: argparse._SubParsersAction) -> None:
     )
     parser.add_argument("body", type=str.lower, choices=PLANETS)
     parser.add_argument(
-        "--integrate", type=_positive, metavar="YEARS", help="also integrate the full torque this long"
+        "--integrate", type=positive_number, metavar="YEARS", help="also integrate the full torque this long"
     )
     parser.add_argument(
         "--step",
-        type=_positive,
+        type=positive_number,
         metavar="DAYS",
         help="splitting step (default: andoyer.precession.default_step)",
     )
