@@ -7,7 +7,7 @@ is Andoyer's node ``h = atan2(M₁, −M₂)`` of the angular momentum in the ec
 
 * splitting: :func:`andoyer.integrate.splitting.integrate_splitting`, order 2, exact free
   flow (compiled lean kernel when numba is installed), over the full span;
-* secular: :class:`andoyer.integrate.secular.SecularGravityGradient` on the averaged
+* secular: :class:`andoyer.perturbations.secular.SecularGravityGradient` on the averaged
   equations, over the full span: its default propagation (composition of exact rotations
   about the orbit normals, order 8, step set by Richardson's estimate for ``rtol``, compiled
   with numba when installed) at two tolerances, and its DOP853 path for comparison. Its
@@ -52,9 +52,10 @@ from andoyer import State, bodies  # noqa: E402
 from andoyer._jit import NUMBA  # noqa: E402
 from andoyer.integrate import integrate_reference  # noqa: E402
 from andoyer.integrate.reference_heyoka import heyoka_system  # noqa: E402
-from andoyer.integrate.secular import SecularGravityGradient  # noqa: E402
+from andoyer.integrate.secular import propagate_momentum  # noqa: E402
 from andoyer.integrate.splitting import integrate_splitting  # noqa: E402
 from andoyer.perturbations import GravityGradient, Model  # noqa: E402
+from andoyer.perturbations.secular import SecularGravityGradient  # noqa: E402
 from andoyer.perturbations.solar_system import DAY, JULIAN_YEAR, OBLIQUITY, mean_perturbers  # noqa: E402
 
 try:
@@ -66,7 +67,7 @@ SIDEREAL_DAY = 86164.0905
 ARCSEC = 180 * 3600 / np.pi
 EARTH = bodies.get("earth")
 PERTURBERS = mean_perturbers("earth")
-MODEL = Model(EARTH, GravityGradient(EARTH, PERTURBERS))
+MODEL = Model(EARTH, GravityGradient(PERTURBERS))
 G0 = EARTH.C * 2 * np.pi / SIDEREAL_DAY
 START = State.from_attitude(Rotation.from_euler("X", OBLIQUITY["earth"]), [0.0, 0.0, G0])
 
@@ -104,8 +105,8 @@ def cpu_mean(fn, least=0.5):
 
 def secular_h(years, rtol=1e-12, method="rotations"):
     secular = SecularGravityGradient(EARTH, PERTURBERS)
-    M = secular.propagate_momentum(
-        START.m_reference, G0, np.array([0.0, years * JULIAN_YEAR]), rtol=rtol, method=method
+    M = propagate_momentum(
+        secular, START.m_reference, G0, np.array([0.0, years * JULIAN_YEAR]), rtol=rtol, method=method
     )
     return float(node(M[-1]))
 

@@ -59,14 +59,14 @@ def earth_start():
 CASES = {
     # Earth + Sun + Moon (eccentric orbits, regressing lunar node), one body: scalar heyoka path.
     "earth-sun-moon": (
-        Model(EARTH, GravityGradient(EARTH, mean_perturbers("earth"))),
+        Model(EARTH, GravityGradient(mean_perturbers("earth"))),
         earth_start(),
         np.array([-3.0, 5.0, 20.0]) * DAY,
         1e-11,
     ),
     # Torque comparable to the free motion, drifting node and periapsis: batch path with padding.
     "strong-triaxial": (
-        Model(BODY, GravityGradient(BODY, STRONG)),
+        Model(BODY, GravityGradient(STRONG)),
         states(3, 1),
         np.array([-2.0, 1, 10]),
         1e-10,
@@ -142,7 +142,7 @@ def test_heyoka_absent_raises_and_dop853_still_runs(monkeypatch):
         UserTorque(BODY, lambda t, rot, w: -0.1 * w),
         UserPotential(lambda rot, t: rot.apply([0.0, 0.0, 1.0])[..., 2]),
         PrecessingFrame(lambda t: np.stack([0 * t, 0 * t, 0.1 + 0 * t], -1)),
-        GravityGradient(BODY, PointMass(1.0, TabulatedOrbit(lambda t: np.stack([t, 1 + 0 * t, 0 * t], -1)))),
+        GravityGradient(PointMass(1.0, TabulatedOrbit(lambda t: np.stack([t, 1 + 0 * t, 0 * t], -1)))),
     ],
     ids=["user-torque", "user-potential", "time-dependent-frame", "tabulated-orbit"],
 )
@@ -200,7 +200,7 @@ RHS_MODELS = {
     "tabulated-orbit": Model(
         BODY,
         GravityGradient(
-            BODY, PointMass(2.0, TabulatedOrbit(lambda t: np.stack([np.cos(t), np.sin(t), 0.3 + 0 * t], -1)))
+            PointMass(2.0, TabulatedOrbit(lambda t: np.stack([np.cos(t), np.sin(t), 0.3 + 0 * t], -1)))
         ),
     ),
 }

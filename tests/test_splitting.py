@@ -42,7 +42,7 @@ def test_splitting_frame_only_is_exact():
 
 MODELS = {
     "gravity-gradient": lambda body: GravityGradient(
-        body, PointMass(4.0, CircularOrbit(2.0, 0.3, inclination=0.4))
+        PointMass(4.0, CircularOrbit(2.0, 0.3, inclination=0.4))
     ),
     "heavy-top": lambda body: HeavyTop(0.8, [0.1, 0.0, 0.3]),
 }

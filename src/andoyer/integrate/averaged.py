@@ -1,6 +1,6 @@
 r"""Mean (secular) states of a fast rotator: the averaged model carried on a full :class:`~andoyer.State`.
 
-:class:`~andoyer.integrate.secular.SecularGravityGradient` evolves the mean
+:class:`~andoyer.perturbations.secular.SecularGravityGradient` evolves the mean
 reference-frame angular momentum ``M̄`` (equivalently the Andoyer node ``h``
 and ``H = G cos I``; ``G`` and ``L`` are constant) after averaging over the
 fast angles ``l``, ``g`` and the perturbers' mean anomalies. A precessing
@@ -28,62 +28,54 @@ as well as the small secular drift of the fast phases ``∂⟨ΔH⟩/∂L``,
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.integrate import solve_ivp
 from scipy.spatial.transform import Rotation
 
-from andoyer import _quaternion as quat
 from andoyer.free import FreeRotation
 from andoyer.integrate.output import gather_states, output_times
-from andoyer.integrate.secular import SecularGravityGradient
-from andoyer.perturbations.frame import PrecessingFrame
-from andoyer.perturbations.gravity import GravityGradient
 from andoyer.perturbations.model import Model
-from andoyer.perturbations.orbits import KeplerOrbit
 from andoyer.state import State
 
 __all__ = ["integrate_secular", "secular_parts"]
 
 Array = NDArray[np.float64]
 
+#: An averaged term: ``momentum_rate(t, M (N, 3), L (N,)) -> dM̄/dt (N, 3)``.
+SecularTerm = Any
 
-def secular_parts(model: Model) -> tuple[SecularGravityGradient, list[PrecessingFrame]]:
-    """Split ``model`` into its averaged gravity-gradient part and its precessing frames.
 
-    Raises ``ValueError`` for any other perturbation (its average is not implemented).
+def secular_parts(model: Model) -> list[SecularTerm]:
+    """The averaged terms of ``model``, in order (each term's ``secular_average()``).
+
+    Raises ``ValueError`` for a term without an average (gravity gradients need perturbers on
+    :class:`~andoyer.perturbations.KeplerOrbit`; precessing frames are their own average).
 
     Examples
     --------
     >>> from andoyer import RigidBody
-    >>> averaged, frames = secular_parts(Model(RigidBody(1, 1, 1.2), PrecessingFrame([0, 0, 1e-3])))
-    >>> len(averaged.perturbers), len(frames)
-    (0, 1)
+    >>> from andoyer.perturbations import PrecessingFrame
+    >>> averages = secular_parts(Model(RigidBody(1, 1, 1.2), PrecessingFrame([0, 0, 1e-3])))
+    >>> [type(a).__name__ for a in averages]
+    ['FrameAverage']
     """
     if not isinstance(model, Model):
         msg = f"expected an andoyer Model, got {type(model).__name__}"
         raise ValueError(msg)
-    perturbers, frames = [], []
+    averages = []
     for item in model.parts:
-        if isinstance(item, PrecessingFrame):
-            frames.append(item)
-            continue
-        if not isinstance(item, GravityGradient) or not all(
-            isinstance(p.orbit, KeplerOrbit) for p in item.perturbers
-        ):
+        average = item.secular_average()
+        if average is None:
             msg = (
                 "expected gravity-gradient models on Kepler orbits or precessing frames for the secular "
                 f"method, got {item!r} (use method='splitting' or 'reference')"
             )
             raise ValueError(msg)
-        if not np.array_equal(item.body.moments, model.body.moments):
-            msg = (
-                f"expected the gravity-gradient model to act on the model's body {model.body!r}, "
-                f"got {item.body!r}"
-            )
-            raise ValueError(msg)
-        perturbers.extend(item.perturbers)
-    return SecularGravityGradient(model.body, perturbers), frames
+        averages.append(average)
+    return averages
 
 
 def _node_and_inclination(M: Array) -> tuple[Array, Array]:
@@ -121,6 +113,7 @@ def integrate_secular(
     Examples
     --------
     >>> from andoyer import RigidBody
+    >>> from andoyer.perturbations import PrecessingFrame
     >>> body = RigidBody(1.0, 1.0, 1.2)
     >>> frame = PrecessingFrame([0.0, 0.0, 0.01])
     >>> s = State.from_andoyer(0.0, 0.0, 0.5, 0.9, 1.0, 0.8)
@@ -129,7 +122,7 @@ def integrate_secular(
     >>> round(float(h[1] - h[0]), 12)
     -0.1
     """
-    averaged, frames = secular_parts(model)
+    averages = secular_parts(model)
     times, unique, shape = output_times(state, t)
     t0 = float(t0)
     q0 = state.quaternion.reshape(-1, 4)
@@ -143,9 +136,9 @@ def integrate_secular(
 
     def rhs(time: float, y: Array) -> Array:
         M = y.reshape(n, 3)
-        rate = averaged.momentum_rate(time, M, L)
-        for frame in frames:
-            rate = rate + quat.cross(M, frame.rate(np.asarray(time)))
+        rate = np.zeros_like(M)
+        for average in averages:
+            rate = rate + average.momentum_rate(time, M, L)
         return rate.ravel()
 
     scale = max(float(np.max(np.linalg.norm(M0, axis=-1), initial=0.0)), np.finfo(float).tiny)

@@ -8,6 +8,7 @@ rotations unless an analytic torque is given:
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -17,6 +18,7 @@ from andoyer import _quaternion as quat
 from andoyer._validation import as_finite, as_vectors
 from andoyer.body import RigidBody
 from andoyer.perturbations.base import Perturbation
+from andoyer.perturbations.expressions import HeyokaContext, HubRates, Quaternion, Vector
 
 __all__ = ["LinearDamping", "UserPotential", "UserTorque"]
 
@@ -120,6 +122,13 @@ class UserTorque(Perturbation):
         value = self._user_torque(t, Rotation.from_quat(q), m / self.body.moments)
         return as_vectors(value, "torque(t, rotation, omega)") * np.ones_like(m)
 
+    def bind(self, body: RigidBody) -> UserTorque:
+        """Itself; ``ValueError`` if it was built for a body of other moments than the model's."""
+        if not np.array_equal(self.body.moments, body.moments):
+            msg = f"expected the torque model to act on the model's body {body!r}, got {self.body!r}"
+            raise ValueError(msg)
+        return self
+
 
 class LinearDamping(UserTorque):
     """Linear damping of the body angular velocity, ``τ = -c ω`` (``c >= 0``, per axis or scalar).
@@ -139,3 +148,25 @@ class LinearDamping(UserTorque):
             raise ValueError(msg)
         self.coefficient = c
         super().__init__(body, lambda _t, _rot, w: -c * w)
+
+    # The term protocol (andoyer.perturbations.base).
+
+    def hub_rates(self) -> HubRates:
+        """``δṁ = −c m/I`` on components."""
+        c = np.broadcast_to(self.coefficient, 3).tolist()
+        I = self.body.moments.tolist()
+
+        def rates(_t: float, _q: Quaternion, m: Vector) -> tuple[None, Vector]:
+            return None, (-c[0] * (m[0] / I[0]), -c[1] * (m[1] / I[1]), -c[2] * (m[2] / I[2]))
+
+        return rates
+
+    @property
+    def heyoka_supported(self) -> bool:
+        """Always."""
+        return True
+
+    def heyoka_rates(self, ctx: HeyokaContext) -> tuple[None, list[list[Any]]]:
+        """``δṁ = −(c/I) m`` with ``c/I`` runtime parameters."""
+        damping = np.broadcast_to(ctx.time_unit * self.coefficient * self.body.inverse_moments, 3).tolist()
+        return None, [[-ctx.par(damping[i]) * ctx.m[i] for i in range(3)]]
