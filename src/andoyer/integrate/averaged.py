@@ -37,6 +37,7 @@ from scipy.spatial.transform import Rotation
 
 from andoyer.free import FreeRotation
 from andoyer.integrate.output import gather_states, output_times
+from andoyer.integrate.secular import propagate_momentum
 from andoyer.perturbations.model import Model
 from andoyer.state import State
 
@@ -103,7 +104,9 @@ def integrate_secular(
         Output times (absolute: the perturbers' orbits are functions of ``t``).
     t0 : float
     rtol : float
-        DOP853 tolerance on ``M̄``.
+        Tolerance on ``M̄``: for a gravity-gradient model alone (forwards in time), the target
+        relative global error of the compiled exact-rotation composition
+        (:func:`~andoyer.integrate.secular.propagate_momentum`); otherwise DOP853's tolerance.
 
     Returns
     -------
@@ -143,9 +146,16 @@ def integrate_secular(
 
     scale = max(float(np.max(np.linalg.norm(M0, axis=-1), initial=0.0)), np.finfo(float).tiny)
     means: dict[float, Array] = {t0: M0}
+    # One averaged term whose flow is exact rotations (the gravity gradient on Kepler orbits):
+    # the compiled composition, forwards; anything else (frames, several terms, backwards): DOP853.
+    rotations = averages[0] if len(averages) == 1 and averages[0].exact_rotations else None
     for direction in (1.0, -1.0):
         targets = unique[(unique - t0) * direction > 0]
         if targets.size == 0:
+            continue
+        if rotations is not None and direction > 0:
+            M = propagate_momentum(rotations, M0, L, targets, rtol=rtol, t0=t0)
+            means.update({float(x): M[k] for k, x in enumerate(targets)})
             continue
         sol = solve_ivp(
             rhs,

@@ -36,19 +36,20 @@ def propagate_momentum(
     method: str = "rotations",
     order: int = 8,
     max_step: float | None = None,
+    t0: float = 0.0,
 ) -> Array:
-    """Integrate ``dM/dt`` from ``t = 0`` to the times ``t`` (1-D, increasing), shape (len(t), ..., 3).
+    """Integrate ``dM/dt`` from ``t0`` to the times ``t`` (1-D, increasing), shape (len(t), ..., 3).
 
     Parameters
     ----------
     model : SecularGravityGradient
         The averaged model (:meth:`andoyer.perturbations.GravityGradient.secular_average`).
     M0 : array_like, shape (..., 3)
-        Reference-frame angular momenta at ``t = 0``.
+        Reference-frame angular momenta at ``t0``.
     L : array_like, shape (...)
         ``L = M·b3`` (constant in the averaged model).
     t : array_like, shape (K,)
-        Output times, non-negative and increasing.
+        Output times, ``≥ t0`` and increasing (absolute: the orbit normals are functions of ``t``).
     rtol : float
         Relative tolerance: DOP853's (per step), or for ``"rotations"`` the target
         relative global error of ``M``, met by Richardson's estimate
@@ -62,6 +63,9 @@ def propagate_momentum(
         Order of the composition (``"rotations"`` only).
     max_step : float, optional
         Upper bound on the step (``"rotations"`` only; same units as ``t``).
+
+    t0 : float
+        The time of ``M0`` (default 0).
 
     Returns
     -------
@@ -83,11 +87,12 @@ def propagate_momentum(
     M0 = as_vectors(M0, "M0")
     L = np.broadcast_to(as_finite(L, "L"), M0.shape[:-1])
     times = as_finite(t, "t")
-    if times.ndim != 1 or np.any(np.diff(times) < 0) or times[0] < 0:
-        msg = "expected increasing, non-negative output times (1-D), got another array"
+    t0 = float(as_finite(t0, "t0"))
+    if times.ndim != 1 or np.any(np.diff(times) < 0) or times[0] < t0:
+        msg = "expected increasing output times (1-D), none before t0, got another array"
         raise ValueError(msg)
     if method == "dop853":
-        return _propagate_dop853(model, M0, L, times, rtol)
+        return _propagate_dop853(model, M0, L, times, rtol, t0)
     if method != "rotations":
         msg = f"expected method 'rotations' or 'dop853', got {method!r}"
         raise ValueError(msg)
@@ -108,17 +113,19 @@ def propagate_momentum(
     normals = (
         np.array([np.sin(o.inclination) for o in orbits]),
         np.array([np.cos(o.inclination) for o in orbits]),
-        np.array([o.node - o.node_rate * o.epoch for o in orbits]),
+        np.array([o.node + o.node_rate * (t0 - o.epoch) for o in orbits]),  # the nodes at t0
         np.array([o.node_rate for o in orbits]),
     )
     fastest = max([float(np.max(np.abs(coef) * G, initial=0.0)), *np.abs(normals[3])], default=0.0)
     drifting = coef[inner].reshape(len(inner), len(M))
     bound = np.inf if max_step is None else float(max_step)
-    out, _ = propagate_controlled(M, c0, k0, drifting, normals, times, fastest, rtol, order, bound)
+    out, _ = propagate_controlled(M, c0, k0, drifting, normals, times - t0, fastest, rtol, order, bound)
     return out.reshape((len(times), *shape))
 
 
-def _propagate_dop853(model: SecularModel, M0: Array, L: Array, times: Array, rtol: float) -> Array:
+def _propagate_dop853(
+    model: SecularModel, M0: Array, L: Array, times: Array, rtol: float, t0: float = 0.0
+) -> Array:
     """DOP853 steps over years: the model has no fast angle left."""
     shape = M0.shape
 
@@ -128,7 +135,7 @@ def _propagate_dop853(model: SecularModel, M0: Array, L: Array, times: Array, rt
     scale = float(np.max(np.linalg.norm(M0, axis=-1)))
     sol = solve_ivp(
         rhs,
-        (0.0, float(times[-1])),
+        (t0, float(times[-1])),
         M0.ravel(),
         method="DOP853",
         t_eval=times,

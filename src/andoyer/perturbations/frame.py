@@ -115,6 +115,9 @@ class PrecessingFrame(Perturbation):
 class FrameAverage:
     """The average of a precessing frame over the fast angles: itself, ``dM̄/dt = M̄ × μ(t)``."""
 
+    #: Not propagated by the compiled rotations of the gravity gradient's average (DOP853 instead).
+    exact_rotations = False
+
     def __init__(self, frame: PrecessingFrame) -> None:
         self.frame = frame
 

@@ -71,6 +71,10 @@ class SecularGravityGradient:
     15.97
     """
 
+    #: Its flow is a composition of exact rotations about the orbit normals
+    #: (:func:`andoyer.integrate.secular.propagate_momentum`, compiled with numba).
+    exact_rotations = True
+
     def __init__(self, body: RigidBody, perturbers: PointMass | Sequence[PointMass]) -> None:
         if not isinstance(body, RigidBody):
             msg = f"expected an andoyer.RigidBody, got {type(body).__name__}"
