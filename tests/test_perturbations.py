@@ -167,7 +167,7 @@ def test_precessing_frame_equals_inertial_motion_seen_from_the_frame(regime):
 
 def test_damping_dissipates_energy():
     body = RigidBody(1.0, 1.5, 2.0)
-    damping = LinearDamping(body, 0.05)
+    damping = LinearDamping(0.05).bind(body)
     sol = integrate(body, damping, [0, 0, 0, 1.0], np.array([0.5, 0.3, 1.0]), 20.0)
     energy = body.energy(sol.y[4:].T)
     assert np.all(np.diff(energy) < 0)
@@ -180,7 +180,7 @@ def test_damping_dissipates_energy():
 
 def test_user_torque_matches_constant_spin_up():
     body = RigidBody(1.0, 1.0, 1.0)
-    spin_up = UserTorque(body, lambda t, rot, w: np.array([0.0, 0.0, 0.5]))
+    spin_up = UserTorque(lambda t, rot, w: np.array([0.0, 0.0, 0.5])).bind(body)
     sol = integrate(body, spin_up, [0, 0, 0, 1.0], np.zeros(3), 4.0)
     assert sol.y[6, -1] == pytest.approx(2.0, abs=1e-12)
     # Angle turned: ∫ 0.5 t dt = t²/4 = 4 rad about s3.
@@ -215,7 +215,8 @@ BAD = {
     "weight <= 0": lambda: HeavyTop(0.0, [0, 0, 1]),
     "centre of mass shape": lambda: HeavyTop(1.0, [0, 1]),
     "rate shape": lambda: PrecessingFrame([0.0, 1.0]),
-    "damping negative": lambda: LinearDamping(RigidBody(1, 1, 1), -1.0),
+    "damping negative": lambda: LinearDamping(-1.0),
+    "damping of a non-body": lambda: LinearDamping("earth", 1.0),
     "not callable": lambda: UserPotential(3.0),
     "not a body": lambda: GravityGradient("earth", SUN_LIKE),
     "no perturbers": lambda: GravityGradient([]),
@@ -244,15 +245,15 @@ def test_gravity_gradient_deprecated_signature_gives_same_torque(rng):
     assert np.array_equal(Model(body, old).parts[0].torque(0.7, q, m), new.torque(0.7, q, m))
 
 
-def _deprecated_gravity_gradient(body):
+def _deprecated(term, *args):
     with pytest.warns(DeprecationWarning, match="give the body to the Model"):
-        return GravityGradient(body, SUN_LIKE)
+        return term(*args)
 
 
 INCONSISTENT = {
-    "gravity gradient of another body": lambda: _deprecated_gravity_gradient(RigidBody(4, 5, 6)),
-    "damping of another body": lambda: LinearDamping(RigidBody(4, 5, 6), 0.1),
-    "torque of another body": lambda: UserTorque(RigidBody(1, 2, 2.5), lambda t, rot, w: -w),
+    "gravity gradient of another body": lambda: _deprecated(GravityGradient, RigidBody(4, 5, 6), SUN_LIKE),
+    "damping of another body": lambda: _deprecated(LinearDamping, RigidBody(4, 5, 6), 0.1),
+    "torque of another body": lambda: _deprecated(UserTorque, RigidBody(1, 2, 2.5), lambda t, rot, w: -w),
 }
 
 

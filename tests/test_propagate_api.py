@@ -164,10 +164,10 @@ def orbiting(orbit):
 BAD_MODELS = {
     "damping with splitting": (
         "splitting",
-        LinearDamping(TRIAXIAL, 0.1),
+        LinearDamping(0.1),
         r"expected Hamiltonian attitude-only models or precessing frames for method='splitting'",
     ),
-    "damping with secular": ("secular", LinearDamping(TRIAXIAL, 0.1), "expected gravity-gradient models"),
+    "damping with secular": ("secular", LinearDamping(0.1), "expected gravity-gradient models"),
     "heavy top with secular": ("secular", HeavyTop(1.0, [0, 0, 0.1]), "expected gravity-gradient models"),
     "tabulated orbit with secular": (
         "secular",

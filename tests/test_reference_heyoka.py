@@ -79,7 +79,7 @@ CASES = {
         1e-11,
     ),
     "damping": (
-        Model(BODY, LinearDamping(BODY, [0.1, 0.2, 0.05])),
+        Model(BODY, LinearDamping([0.1, 0.2, 0.05])),
         states(2, 4),
         np.array([-1.0, 10]),
         1e-11,
@@ -139,7 +139,7 @@ def test_heyoka_absent_raises_and_dop853_still_runs(monkeypatch):
 @pytest.mark.parametrize(
     "part",
     [
-        UserTorque(BODY, lambda t, rot, w: -0.1 * w),
+        UserTorque(lambda t, rot, w: -0.1 * w),
         UserPotential(lambda rot, t: rot.apply([0.0, 0.0, 1.0])[..., 2]),
         PrecessingFrame(lambda t: np.stack([0 * t, 0 * t, 0.1 + 0 * t], -1)),
         GravityGradient(PointMass(1.0, TabulatedOrbit(lambda t: np.stack([t, 1 + 0 * t, 0 * t], -1)))),
@@ -190,12 +190,12 @@ RHS_MODELS = {
     "earth-sun-moon": CASES["earth-sun-moon"][0],
     "strong-triaxial": CASES["strong-triaxial"][0],
     "frame+top+damping": Model(
-        BODY, [PrecessingFrame([0.1, -0.2, 0.3]), HeavyTop(0.5, [0.1, 0.2, 0.3]), LinearDamping(BODY, 0.2)]
+        BODY, [PrecessingFrame([0.1, -0.2, 0.3]), HeavyTop(0.5, [0.1, 0.2, 0.3]), LinearDamping(0.2)]
     ),
     "time-dependent-frame": Model(
         BODY, PrecessingFrame(lambda t: np.stack([0.1 * np.sin(t), 0 * t, 0.2 + 0 * t], -1))
     ),
-    "user-torque": Model(BODY, UserTorque(BODY, lambda t, rot, w: -0.1 * w + rot.apply([0.0, 0.0, 1.0]))),
+    "user-torque": Model(BODY, UserTorque(lambda t, rot, w: -0.1 * w + rot.apply([0.0, 0.0, 1.0]))),
     "user-potential": Model(BODY, UserPotential(lambda rot, t: 0.3 * rot.apply([0.0, 0.0, 1.0])[..., 2])),
     "tabulated-orbit": Model(
         BODY,

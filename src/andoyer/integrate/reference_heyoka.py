@@ -94,7 +94,7 @@ def heyoka_system(
     >>> from andoyer import RigidBody
     >>> from andoyer.perturbations import UserTorque
     >>> body = RigidBody(1, 2, 3)
-    >>> heyoka_system(Model(body, UserTorque(body, lambda t, rot, w: -w)))  # doctest: +ELLIPSIS
+    >>> heyoka_system(Model(body, UserTorque(lambda t, rot, w: -w)))  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
     ValueError: expected gravity gradients of Kepler/circular orbits, ...UserTorque... (use method='dop853')
