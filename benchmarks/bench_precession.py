@@ -12,6 +12,9 @@ is Andoyer's node ``h = atan2(M₁, −M₂)`` of the angular momentum in the ec
   about the orbit normals, order 8, step set by Richardson's estimate for ``rtol``, compiled
   with numba when installed) at two tolerances, and its DOP853 path for comparison. Its
   CPU time is the mean over repeated calls (a call takes about a millisecond);
+* the public path ``andoyer.propagate(model, state, t, method="secular")`` (mean state:
+  the compiled rotations for ``M̄`` plus the exact free motion), mean CPU time as above;
+* ``--order4-steps``: order-4 splitting rows at those steps (the accuracy-vs-cost curve);
 * peer: heyoka's Taylor integrator on the same equations (quaternion + body momentum, the
   orbits through ``kepE``), time in days, over ``--peer-years`` at a ladder of
   tolerances; its cost is scaled to the full span by the measured cost per year (stated
@@ -21,13 +24,16 @@ Accuracy: the error of the precession angle at ``--peer-years`` against heyoka a
 tol 1e-15 (cross-checked with order-4 splitting at a small step). Each method is compared
 with the cheapest peer tolerance that is at least as accurate.
 
-Run: ``python3 benchmarks/bench_precession.py [--years 1000] [--peer-years 2] [--step 0.37]``
+Run: ``python3 benchmarks/bench_precession.py [--years 1000] [--peer-years 2] [--steps 0.37,...]``
+``[--order4-steps 3.7,6.7]``
 (pins numpy to one thread; CPU time of this process).
 
 The step of the splitting can be a sizable fraction of the day and even several days:
 the free flow is exact, and what is left of the leading error term averages out over
 the spin unless the step resonates with it (multiples of half a sidereal day alias the
-semi-diurnal term of the triaxiality ``B − A``); the first table quantifies this.
+semi-diurnal term of the triaxiality ``B − A``); the first table quantifies this. For the
+Earth the recommended step is 6.7 sidereal days at order 2 (rate error 7e-6″/yr, 0.09″ of
+short-period error, about 60× heyoka at matched accuracy; ``benchmarks/RESULTS.md``).
 """
 
 from __future__ import annotations
@@ -150,7 +156,7 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--years", type=float, default=1000.0)
     parser.add_argument("--peer-years", type=float, default=2.0)
-    parser.add_argument("--steps", default="0.37,1.37,3.7", help="splitting steps in sidereal days")
+    parser.add_argument("--steps", default="0.37,1.37,3.7,6.7", help="splitting steps in sidereal days")
     parser.add_argument(
         "--order4-steps", default="", help="order-4 splitting steps in sidereal days (accuracy-vs-cost rows)"
     )
@@ -169,7 +175,7 @@ def main():
     ref_rate = wrapped(splitting_h(args.rate_years, 0.05, order=4) - h0) * ARCSEC / args.rate_years
     print(f"  reference (order 4, step 0.05 d): {ref_rate:.6f} arcsec/yr")
     print("  step (sidereal d)   rate (arcsec/yr)   rate error (arcsec/yr)   steps/yr")
-    for frac in (0.05, 0.1, 0.25, 0.37, 0.5, 0.73, 1.0, 1.37, 2.5, 3.7, 9.7):
+    for frac in (0.05, 0.1, 0.25, 0.37, 0.5, 0.73, 1.0, 1.37, 2.5, 3.7, 4.7, 6.7, 8.7, 9.7):
         rate = wrapped(splitting_h(args.rate_years, frac) - h0) * ARCSEC / args.rate_years
         per_year = JULIAN_YEAR / (frac * SIDEREAL_DAY)
         print(f"  {frac:17.2f}   {rate:16.6f}   {rate - ref_rate:22.2e}   {per_year:8.0f}")

@@ -15,6 +15,7 @@ once so that near-axisymmetric bodies keep their digits. The monopole
 from __future__ import annotations
 
 import warnings
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
@@ -71,7 +72,9 @@ class GravityGradient(Perturbation):
     hamiltonian = True
     attitude_only = True
 
-    def __init__(self, *args: Any) -> None:
+    def __init__(self, perturbers: PointMass | Sequence[PointMass], *deprecated: Any) -> None:
+        # ``GravityGradient(body, perturbers)``, the former signature, arrives as (body, (perturbers,)).
+        args = (perturbers, *deprecated)
         if len(args) == 2:
             body, perturbers = args
             if not isinstance(body, RigidBody):

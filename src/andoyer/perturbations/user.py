@@ -163,8 +163,9 @@ class UserTorque(_BodyTerm):
     hamiltonian = False
     attitude_only = False
 
-    def __init__(self, *args: Any) -> None:
-        body, torque = _body_and(args, "UserTorque")
+    def __init__(self, torque: Callable[[Array, Rotation, Array], ArrayLike], *deprecated: Any) -> None:
+        # ``UserTorque(body, torque)``, the former signature, arrives as (body, (torque,)).
+        body, torque = _body_and((torque, *deprecated), "UserTorque")
         _check_callable(torque, "torque(t, rotation, omega)")
         self._body = body
         self._user_torque = torque
@@ -190,8 +191,9 @@ class LinearDamping(UserTorque):
     [-0.1, -0.1, -0.2]
     """
 
-    def __init__(self, *args: Any) -> None:
-        body, coefficient = _body_and(args, "LinearDamping")
+    def __init__(self, coefficient: ArrayLike, *deprecated: Any) -> None:
+        # ``LinearDamping(body, coefficient)``, the former signature, arrives as (body, (coefficient,)).
+        body, coefficient = _body_and((coefficient, *deprecated), "LinearDamping")
         c = as_finite(coefficient, "coefficient")
         if np.any(c < 0) or c.shape not in {(), (3,)}:
             msg = f"expected a non-negative scalar or 3-vector coefficient, got {c.tolist()!r}"
