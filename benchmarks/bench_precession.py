@@ -7,11 +7,14 @@ is Andoyer's node ``h = atan2(M₁, −M₂)`` of the angular momentum in the ec
 
 * splitting: :func:`andoyer.integrate.splitting.integrate_splitting`, order 2, exact free
   flow (compiled lean kernel when numba is installed), over the full span;
-* secular: :class:`andoyer.integrate.secular.SecularGravityGradient` on the averaged
+* secular: :class:`andoyer.perturbations.secular.SecularGravityGradient` on the averaged
   equations, over the full span: its default propagation (composition of exact rotations
   about the orbit normals, order 8, step set by Richardson's estimate for ``rtol``, compiled
   with numba when installed) at two tolerances, and its DOP853 path for comparison. Its
   CPU time is the mean over repeated calls (a call takes about a millisecond);
+* the public path ``andoyer.propagate(model, state, t, method="secular")`` (mean state:
+  the compiled rotations for ``M̄`` plus the exact free motion), mean CPU time as above;
+* ``--order4-steps``: order-4 splitting rows at those steps (the accuracy-vs-cost curve);
 * peer: heyoka's Taylor integrator on the same equations (quaternion + body momentum, the
   orbits through ``kepE``), time in days, over ``--peer-years`` at a ladder of
   tolerances; its cost is scaled to the full span by the measured cost per year (stated
@@ -21,13 +24,16 @@ Accuracy: the error of the precession angle at ``--peer-years`` against heyoka a
 tol 1e-15 (cross-checked with order-4 splitting at a small step). Each method is compared
 with the cheapest peer tolerance that is at least as accurate.
 
-Run: ``python3 benchmarks/bench_precession.py [--years 1000] [--peer-years 2] [--step 0.37]``
+Run: ``python3 benchmarks/bench_precession.py [--years 1000] [--peer-years 2] [--steps 0.37,...]``
+``[--order4-steps 3.7,6.7]``
 (pins numpy to one thread; CPU time of this process).
 
 The step of the splitting can be a sizable fraction of the day and even several days:
 the free flow is exact, and what is left of the leading error term averages out over
 the spin unless the step resonates with it (multiples of half a sidereal day alias the
-semi-diurnal term of the triaxiality ``B − A``); the first table quantifies this.
+semi-diurnal term of the triaxiality ``B − A``); the first table quantifies this. For the
+Earth the recommended step is 6.7 sidereal days at order 2 (rate error 7e-6″/yr, 0.09″ of
+short-period error, about 60× heyoka at matched accuracy; ``benchmarks/RESULTS.md``).
 """
 
 from __future__ import annotations
@@ -48,13 +54,18 @@ from scipy.spatial.transform import Rotation  # noqa: E402
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 
-from andoyer import State, bodies  # noqa: E402
+from andoyer import (  # noqa: E402
+    State,
+    bodies,
+    propagate,
+)
 from andoyer._jit import NUMBA  # noqa: E402
 from andoyer.integrate import integrate_reference  # noqa: E402
 from andoyer.integrate.reference_heyoka import heyoka_system  # noqa: E402
-from andoyer.integrate.secular import SecularGravityGradient  # noqa: E402
+from andoyer.integrate.secular import propagate_momentum  # noqa: E402
 from andoyer.integrate.splitting import integrate_splitting  # noqa: E402
 from andoyer.perturbations import GravityGradient, Model  # noqa: E402
+from andoyer.perturbations.secular import SecularGravityGradient  # noqa: E402
 from andoyer.perturbations.solar_system import DAY, JULIAN_YEAR, OBLIQUITY, mean_perturbers  # noqa: E402
 
 try:
@@ -66,7 +77,7 @@ SIDEREAL_DAY = 86164.0905
 ARCSEC = 180 * 3600 / np.pi
 EARTH = bodies.get("earth")
 PERTURBERS = mean_perturbers("earth")
-MODEL = Model(EARTH, GravityGradient(EARTH, PERTURBERS))
+MODEL = Model(EARTH, GravityGradient(PERTURBERS))
 G0 = EARTH.C * 2 * np.pi / SIDEREAL_DAY
 START = State.from_attitude(Rotation.from_euler("X", OBLIQUITY["earth"]), [0.0, 0.0, G0])
 
@@ -104,10 +115,16 @@ def cpu_mean(fn, least=0.5):
 
 def secular_h(years, rtol=1e-12, method="rotations"):
     secular = SecularGravityGradient(EARTH, PERTURBERS)
-    M = secular.propagate_momentum(
-        START.m_reference, G0, np.array([0.0, years * JULIAN_YEAR]), rtol=rtol, method=method
+    M = propagate_momentum(
+        secular, START.m_reference, G0, np.array([0.0, years * JULIAN_YEAR]), rtol=rtol, method=method
     )
     return float(node(M[-1]))
+
+
+def public_secular_h(years):
+    """The public path: ``andoyer.propagate(model, state, t, method="secular")`` (a full mean state)."""
+    out = propagate(MODEL, START, years * JULIAN_YEAR, method="secular")
+    return float(node(out.m_reference))
 
 
 def heyoka_integrator(tol):  # pragma: no cover - optional
@@ -139,7 +156,10 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--years", type=float, default=1000.0)
     parser.add_argument("--peer-years", type=float, default=2.0)
-    parser.add_argument("--steps", default="0.37,1.37,3.7", help="splitting steps in sidereal days")
+    parser.add_argument("--steps", default="0.37,1.37,3.7,6.7", help="splitting steps in sidereal days")
+    parser.add_argument(
+        "--order4-steps", default="", help="order-4 splitting steps in sidereal days (accuracy-vs-cost rows)"
+    )
     parser.add_argument("--rate-years", type=float, default=20.0, help="span of the rate-vs-step table")
     args = parser.parse_args()
     S, Y = args.peer_years, args.years
@@ -155,7 +175,7 @@ def main():
     ref_rate = wrapped(splitting_h(args.rate_years, 0.05, order=4) - h0) * ARCSEC / args.rate_years
     print(f"  reference (order 4, step 0.05 d): {ref_rate:.6f} arcsec/yr")
     print("  step (sidereal d)   rate (arcsec/yr)   rate error (arcsec/yr)   steps/yr")
-    for frac in (0.05, 0.1, 0.25, 0.37, 0.5, 0.73, 1.0, 1.37, 2.5, 3.7, 9.7):
+    for frac in (0.05, 0.1, 0.25, 0.37, 0.5, 0.73, 1.0, 1.37, 2.5, 3.7, 4.7, 6.7, 8.7, 9.7):
         rate = wrapped(splitting_h(args.rate_years, frac) - h0) * ARCSEC / args.rate_years
         per_year = JULIAN_YEAR / (frac * SIDEREAL_DAY)
         print(f"  {frac:17.2f}   {rate:16.6f}   {rate - ref_rate:22.2e}   {per_year:8.0f}")
@@ -207,6 +227,13 @@ def main():
         rows.append(
             (f"splitting order 2, step {step} d", err, t_own, abs(wrapped(value - half)) * ARCSEC, value)
         )
+    for step in [float(x) for x in args.order4_steps.split(",") if x]:
+        err = abs(wrapped(splitting_h(S, step, order=4) - ref)) * ARCSEC
+        value, t_own = cpu(lambda step=step: splitting_h(Y, step, order=4))
+        half = splitting_h(Y, step / 2, order=4)
+        rows.append(
+            (f"splitting order 4, step {step} d", err, t_own, abs(wrapped(value - half)) * ARCSEC, value)
+        )
     best = rows[0][4]
     secular_best = secular_h(Y, 1e-12, "dop853")
     for rtol, method in ((1e-12, "rotations"), (1e-6, "rotations"), (1e-12, "dop853"), (1e-8, "dop853")):
@@ -217,6 +244,11 @@ def main():
         own = abs(wrapped(value - secular_best)) * ARCSEC
         rows.append((name, err, t_own, abs(wrapped(value - best)) * ARCSEC, value))
         print(f"{name} vs secular DOP853 rtol 1e-12 at {Y:g} yr: {own:.2e} arcsec")
+    err = abs(wrapped(public_secular_h(S) - ref)) * ARCSEC
+    value, t_own = cpu_mean(lambda: public_secular_h(Y))
+    rows.append(("propagate(method='secular')", err, t_own, abs(wrapped(value - best)) * ARCSEC, value))
+    print(f"propagate(method='secular') vs secular DOP853 rtol 1e-12 at {Y:g} yr: "
+          f"{abs(wrapped(value - secular_best)) * ARCSEC:.2e} arcsec")
     print(
         f"\nover {Y:g} yr; error at {S:g} yr vs {peer_name} 1e-15; 'spread' = splitting step vs step/2, "
         f"secular vs the first splitting row; peer cost = CPU s per year at {S:g} yr x {Y:g}"

@@ -57,6 +57,7 @@ from andoyer.perturbations import (
     Model,
     PointMass,
     PrecessingFrame,
+    SecularGravityGradient,
     perturbed_rates,
     solve_kepler,
 )
@@ -236,7 +237,9 @@ CASES = [
     (CircularOrbit, CircularOrbit, (-1.0, 1.0), ValueError, "expected"),
     (KeplerOrbit, KeplerOrbit, (1.0, 1.5, 0, 0, 0, 0, 1.0), ValueError, "expected"),
     (PointMass, PointMass, (NAN, CircularOrbit(1.0, 1.0)), ValueError, "expected"),
-    (GravityGradient, GravityGradient, (BODY, []), ValueError, "expected"),
+    (GravityGradient, GravityGradient, ([],), ValueError, "expected"),
+    (SecularGravityGradient, SecularGravityGradient, (BODY, []), ValueError, "expected"),
+    (SecularGravityGradient, SecularGravityGradient, ("earth", []), ValueError, "expected"),
     (solve_kepler, solve_kepler, (0.5, 1.5), ValueError, "expected"),
     (solve_kepler, solve_kepler, (INF, 0.5), ValueError, "expected"),
     (perturbed_rates, perturbed_rates, (BODY, TOP, 0.0, Q0, [1.0, 2.0]), ValueError, "expected"),

@@ -5,7 +5,7 @@ on a dense grid of the equation written out here; the four-state region against 
 bifurcation ``|g|/α = (sin^{2/3} i + cos^{2/3} i)^{-3/2}`` (Ward 1975; Henrard & Murigande 1987);
 the stability against the eigenvalues of the linearised flow of the 3-D vector field; the
 equilibria against a numerical integration of the project's secular gravity-gradient model
-(:class:`andoyer.integrate.secular.SecularGravityGradient`) with a regressing node; the resonant
+(:class:`andoyer.perturbations.secular.SecularGravityGradient`) with a regressing node; the resonant
 constants ``α, β`` against an orbit average of the project's MacCullagh potential
 (:class:`andoyer.perturbations.GravityGradient`); ``G_p(e)`` against Peale's series and mpmath
 quadrature; the Moon and Mercury against their published obliquities.
@@ -30,8 +30,9 @@ from scipy.spatial.transform import Rotation
 from andoyer import RigidBody, State, cassini, propagate
 from andoyer.cassini import ARCSEC, CassiniBody, ColomboTop, eccentricity_function
 from andoyer.cli import main
-from andoyer.integrate.secular import SecularGravityGradient
+from andoyer.integrate.secular import propagate_momentum
 from andoyer.perturbations import GravityGradient, KeplerOrbit, Model, PointMass, PrecessingFrame
+from andoyer.perturbations.secular import SecularGravityGradient
 
 # Regimes of (alpha, beta, g, i): four states, two states, resonant (beta > 0), near the bifurcation.
 REGIMES = {
@@ -298,7 +299,7 @@ def test_constants_orbit_average_of_maccullagh_potential(resonance, e, j2, c22, 
         total = 0.0
         for w in periapses:
             orbit = KeplerOrbit(1.0, e, 0.0, 0.0, w, 0.0, 1.0)  # gm = n² a³ = 1 (mass_ratio 0)
-            model = GravityGradient(moments, PointMass(1.0, orbit))
+            model = GravityGradient(PointMass(1.0, orbit)).bind(moments)
             # Long axis b1 at angle p M + ω from the node line (x) in the equator, tilted θ about x.
             q = Rotation.from_euler("ZXZ", np.stack([0 * M, theta + 0 * M, resonance * M + w], -1)).as_quat()
             total += np.mean(model.potential(M, q, np.array([0.0, 0.0, 1.0])))
@@ -346,7 +347,7 @@ def _integrate_in_node_frame(body, s0, periods, samples=41):
     model = SecularGravityGradient(moments, PointMass(body.mean_motion**2, orbit))
     G = c * body.spin_rate
     t = np.linspace(0.0, periods * 2 * np.pi / abs(body.node_rate), samples)
-    M = model.propagate_momentum(G * s0, G, t, rtol=1e-12)
+    M = propagate_momentum(model, G * s0, G, t, rtol=1e-12)
     node = body.node_rate * t
     # Rotate by -Ω(t) about the Laplace pole (z) into the frame where the node stays at 0.
     cO, sO = np.cos(node), np.sin(node)
@@ -379,7 +380,7 @@ def test_equilibrium_stays_in_the_precessing_frame(ratio):
     c, j2 = body.moment_of_inertia, body.j2
     moments = RigidBody(c - j2, c - j2, c)
     orbit = KeplerOrbit(1.0, body.eccentricity, body.inclination, 0.0, 0.0, 0.0, body.mean_motion)
-    gradient = GravityGradient(moments, PointMass(body.mean_motion**2, orbit))
+    gradient = GravityGradient(PointMass(body.mean_motion**2, orbit)).bind(moments)
     model = Model(moments, [gradient, PrecessingFrame([0.0, 0.0, body.node_rate])])
     G = c * body.spin_rate
     t = np.linspace(0.0, 2 * 2 * np.pi / abs(body.node_rate), 21)
@@ -518,7 +519,7 @@ def _full_moon_run(start_theta, years=2.0, step_days=0.5):
     body = RigidBody(c - j2 - 2 * c22, c - j2 + 2 * c22, c)
     orbit = KeplerOrbit(1.0, moon.eccentricity, i, 0.0, 0.7, 0.0, n - g)
     earth = PointMass(n**2 / (1 + moon.mass_ratio), orbit)
-    model = Model(body, [GravityGradient(body, earth), PrecessingFrame([0.0, 0.0, g])])
+    model = Model(body, [GravityGradient(earth), PrecessingFrame([0.0, 0.0, g])])
     s0 = _laplace_frame_axis(start_theta, i)
     toward = orbit.position(0.0) - (orbit.position(0.0) @ s0) * s0
     b1 = toward / np.linalg.norm(toward)

@@ -111,7 +111,7 @@ def test_spin_averaged_rate_is_the_gravity_gradient_torque(seed):
     m = rng.normal(size=3)
     m /= np.linalg.norm(m)
     body = RigidBody(1 - H, 1 - H, 1.0)
-    torque_model = GravityGradient(body, precise_perturbers(precession_rate=0.0, planetary=False))
+    torque_model = GravityGradient(precise_perturbers(precession_rate=0.0, planetary=False)).bind(body)
     axis = np.cross([0.0, 0.0, 1.0], m)
     rotation = Rotation.from_rotvec(axis / np.linalg.norm(axis) * np.arccos(m[2]))
     q = rotation.as_quat()
@@ -430,7 +430,7 @@ def test_splitting_rigid_body_confirms_spin_averaged_model_and_oppolzer_terms():
 
     eps, w, day = nutation.MEAN_OBLIQUITY, nutation.EARTH_ROTATION, 86400.0
     body = RigidBody(1 - H, 1 - H, 1.0)
-    model = Model(body, GravityGradient(body, precise_perturbers(precession_rate=0.0, planetary=False)))
+    model = Model(body, GravityGradient(precise_perturbers(precession_rate=0.0, planetary=False)))
     start = State.from_andoyer(0.0, 0.0, -np.pi, w, w, w * np.cos(eps))  # J = 0, node at −π: ψ = 0
     period = 2 * np.pi * (1 - H) / w  # free precession of the figure axis about L, in space
     t = np.arange(0.0, 30 * day, period / 100)

@@ -16,6 +16,7 @@ from andoyer.perturbations import (
     HeavyTop,
     KeplerOrbit,
     LinearDamping,
+    Model,
     PointMass,
     PrecessingFrame,
     TabulatedOrbit,
@@ -46,7 +47,7 @@ def numeric_torque(model, t, q, m, h=1e-5):
 
 
 MODELS = {
-    "gravity-gradient": lambda body: GravityGradient(body, [SUN_LIKE, MOON_LIKE]),
+    "gravity-gradient": lambda body: GravityGradient([SUN_LIKE, MOON_LIKE]).bind(body),
     "heavy-top": lambda body: HeavyTop(2.5, [0.1, -0.2, 0.7]),
     "precessing-frame": lambda body: PrecessingFrame([0.01, -0.02, 0.3]),
     "precessing-frame-t": lambda body: PrecessingFrame(
@@ -85,7 +86,7 @@ def test_precessing_frame_momentum_gradient_is_minus_mu_body(rng):
 def test_gravity_gradient_torque_without_cancellation_on_earth():
     mpmath.mp.dps = 40
     earth = bodies.get("earth")
-    model = GravityGradient(earth, PointMass(1.0, TabulatedOrbit(lambda t: np.array([0.3, 0.5, 0.8]))))
+    model = GravityGradient(PointMass(1.0, TabulatedOrbit(lambda t: np.array([0.3, 0.5, 0.8])))).bind(earth)
     got = model.torque(0.0, [0, 0, 0, 1.0], [0, 0, 1.0])
     r = [mpmath.mpf(x) for x in (0.3, 0.5, 0.8)]
     I = [mpmath.mpf(x) for x in earth.moments]
@@ -99,7 +100,7 @@ def test_gravity_gradient_torque_without_cancellation_on_earth():
 
 def test_gravity_gradient_potential_macCullagh_formula(rng):
     body = RigidBody(0.7, 1.0, 1.3)
-    model = GravityGradient(body, SUN_LIKE)
+    model = GravityGradient(SUN_LIKE).bind(body)
     q = Rotation.random(10, rng=rng).as_quat()
     t = 1.7
     r_ref = SUN_LIKE.orbit.position(t)
@@ -139,7 +140,7 @@ def test_heavy_top_conserves_energy_and_casimirs():
 
 def test_gravity_gradient_fixed_perturber_conserves_energy():
     body = RigidBody(0.7, 1.0, 1.3)
-    model = GravityGradient(body, PointMass(5.0, CircularOrbit(3.0, 0.0, inclination=0.3)))
+    model = GravityGradient(PointMass(5.0, CircularOrbit(3.0, 0.0, inclination=0.3))).bind(body)
     q0 = Rotation.from_euler("ZXZ", [0.1, 0.8, 0.3]).as_quat()
     sol = integrate(body, model, q0, np.array([0.2, 0.1, 1.0]), 40.0)
     y = sol.y.T
@@ -166,7 +167,7 @@ def test_precessing_frame_equals_inertial_motion_seen_from_the_frame(regime):
 
 def test_damping_dissipates_energy():
     body = RigidBody(1.0, 1.5, 2.0)
-    damping = LinearDamping(body, 0.05)
+    damping = LinearDamping(0.05).bind(body)
     sol = integrate(body, damping, [0, 0, 0, 1.0], np.array([0.5, 0.3, 1.0]), 20.0)
     energy = body.energy(sol.y[4:].T)
     assert np.all(np.diff(energy) < 0)
@@ -179,7 +180,7 @@ def test_damping_dissipates_energy():
 
 def test_user_torque_matches_constant_spin_up():
     body = RigidBody(1.0, 1.0, 1.0)
-    spin_up = UserTorque(body, lambda t, rot, w: np.array([0.0, 0.0, 0.5]))
+    spin_up = UserTorque(lambda t, rot, w: np.array([0.0, 0.0, 0.5])).bind(body)
     sol = integrate(body, spin_up, [0, 0, 0, 1.0], np.zeros(3), 4.0)
     assert sol.y[6, -1] == pytest.approx(2.0, abs=1e-12)
     # Angle turned: ∫ 0.5 t dt = t²/4 = 4 rad about s3.
@@ -214,10 +215,13 @@ BAD = {
     "weight <= 0": lambda: HeavyTop(0.0, [0, 0, 1]),
     "centre of mass shape": lambda: HeavyTop(1.0, [0, 1]),
     "rate shape": lambda: PrecessingFrame([0.0, 1.0]),
-    "damping negative": lambda: LinearDamping(RigidBody(1, 1, 1), -1.0),
+    "damping negative": lambda: LinearDamping(-1.0),
+    "damping of a non-body": lambda: LinearDamping("earth", 1.0),
     "not callable": lambda: UserPotential(3.0),
     "not a body": lambda: GravityGradient("earth", SUN_LIKE),
-    "no perturbers": lambda: GravityGradient(RigidBody(1, 1, 1), []),
+    "no perturbers": lambda: GravityGradient([]),
+    "three arguments": lambda: GravityGradient(RigidBody(1, 1, 1), SUN_LIKE, SUN_LIKE),
+    "unbound gravity gradient": lambda: GravityGradient(SUN_LIKE).torque(0.0, [0, 0, 0, 1.0], [0, 0, 1.0]),
     "quaternion shape": lambda: HeavyTop(1.0, [0, 0, 1]).torque(0.0, [0, 0, 1.0], [0, 0, 1.0]),
 }
 
@@ -228,8 +232,53 @@ def test_perturbation_bad_input_raises(case):
         BAD[case]()
 
 
+def test_gravity_gradient_deprecated_signature_gives_same_torque(rng):
+    """``GravityGradient(body, perturbers)`` warns and equals ``GravityGradient(perturbers)`` on that body."""
+    body = RigidBody(0.8, 1.1, 1.4)
+    q = Rotation.random(5, random_state=rng).as_quat()
+    m = rng.normal(size=(5, 3))
+    with pytest.warns(DeprecationWarning, match="give the body to the Model"):
+        old = GravityGradient(body, [SUN_LIKE, MOON_LIKE])
+    new = Model(body, GravityGradient([SUN_LIKE, MOON_LIKE])).parts[0]
+    assert new.body is body
+    assert np.array_equal(old.torque(0.7, q, m), new.torque(0.7, q, m))
+    assert np.array_equal(Model(body, old).parts[0].torque(0.7, q, m), new.torque(0.7, q, m))
+
+
+def _deprecated(term, *args):
+    with pytest.warns(DeprecationWarning, match="give the body to the Model"):
+        return term(*args)
+
+
+INCONSISTENT = {
+    "gravity gradient of another body": lambda: _deprecated(GravityGradient, RigidBody(4, 5, 6), SUN_LIKE),
+    "damping of another body": lambda: _deprecated(LinearDamping, RigidBody(4, 5, 6), 0.1),
+    "torque of another body": lambda: _deprecated(UserTorque, RigidBody(1, 2, 2.5), lambda t, rot, w: -w),
+}
+
+
+@pytest.mark.parametrize("case", list(INCONSISTENT))
+def test_model_refuses_a_term_built_for_another_body(case):
+    term = INCONSISTENT[case]()
+    with pytest.raises(ValueError, match=r"^expected .+ the model's body RigidBody.+, got RigidBody"):
+        Model(RigidBody(1, 2, 3), term)
+    with pytest.raises(ValueError, match=r"^expected .+ the model's body"):
+        Model(RigidBody(1, 2, 3), [HeavyTop(1.0, [0, 0, 1]) + term])
+
+
+def test_model_binds_terms_to_its_body_and_leaves_the_term_unbound():
+    body = RigidBody(1, 2, 3)
+    term = GravityGradient(SUN_LIKE)
+    model = Model(body, [term, PrecessingFrame([0, 0, 1.0])])
+    assert model.parts[0].body is body
+    assert model.perturbation.models[0].body is body
+    assert model.parts[1] is model.perturbations[1]
+    with pytest.raises(ValueError, match=r"^expected a GravityGradient bound to a body"):
+        _ = term.body
+
+
 ANDOYER_MODELS = {
-    "gravity-gradient": lambda body: GravityGradient(body, [SUN_LIKE, MOON_LIKE]),
+    "gravity-gradient": lambda body: GravityGradient([SUN_LIKE, MOON_LIKE]).bind(body),
     "heavy-top": lambda body: HeavyTop(0.7, [0.1, -0.2, 0.5]),
     "precessing-frame": lambda body: PrecessingFrame([0.01, -0.02, 0.3]),
 }

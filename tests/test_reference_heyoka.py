@@ -59,14 +59,14 @@ def earth_start():
 CASES = {
     # Earth + Sun + Moon (eccentric orbits, regressing lunar node), one body: scalar heyoka path.
     "earth-sun-moon": (
-        Model(EARTH, GravityGradient(EARTH, mean_perturbers("earth"))),
+        Model(EARTH, GravityGradient(mean_perturbers("earth"))),
         earth_start(),
         np.array([-3.0, 5.0, 20.0]) * DAY,
         1e-11,
     ),
     # Torque comparable to the free motion, drifting node and periapsis: batch path with padding.
     "strong-triaxial": (
-        Model(BODY, GravityGradient(BODY, STRONG)),
+        Model(BODY, GravityGradient(STRONG)),
         states(3, 1),
         np.array([-2.0, 1, 10]),
         1e-10,
@@ -79,7 +79,7 @@ CASES = {
         1e-11,
     ),
     "damping": (
-        Model(BODY, LinearDamping(BODY, [0.1, 0.2, 0.05])),
+        Model(BODY, LinearDamping([0.1, 0.2, 0.05])),
         states(2, 4),
         np.array([-1.0, 10]),
         1e-11,
@@ -139,10 +139,10 @@ def test_heyoka_absent_raises_and_dop853_still_runs(monkeypatch):
 @pytest.mark.parametrize(
     "part",
     [
-        UserTorque(BODY, lambda t, rot, w: -0.1 * w),
+        UserTorque(lambda t, rot, w: -0.1 * w),
         UserPotential(lambda rot, t: rot.apply([0.0, 0.0, 1.0])[..., 2]),
         PrecessingFrame(lambda t: np.stack([0 * t, 0 * t, 0.1 + 0 * t], -1)),
-        GravityGradient(BODY, PointMass(1.0, TabulatedOrbit(lambda t: np.stack([t, 1 + 0 * t, 0 * t], -1)))),
+        GravityGradient(PointMass(1.0, TabulatedOrbit(lambda t: np.stack([t, 1 + 0 * t, 0 * t], -1)))),
     ],
     ids=["user-torque", "user-potential", "time-dependent-frame", "tabulated-orbit"],
 )
@@ -190,17 +190,17 @@ RHS_MODELS = {
     "earth-sun-moon": CASES["earth-sun-moon"][0],
     "strong-triaxial": CASES["strong-triaxial"][0],
     "frame+top+damping": Model(
-        BODY, [PrecessingFrame([0.1, -0.2, 0.3]), HeavyTop(0.5, [0.1, 0.2, 0.3]), LinearDamping(BODY, 0.2)]
+        BODY, [PrecessingFrame([0.1, -0.2, 0.3]), HeavyTop(0.5, [0.1, 0.2, 0.3]), LinearDamping(0.2)]
     ),
     "time-dependent-frame": Model(
         BODY, PrecessingFrame(lambda t: np.stack([0.1 * np.sin(t), 0 * t, 0.2 + 0 * t], -1))
     ),
-    "user-torque": Model(BODY, UserTorque(BODY, lambda t, rot, w: -0.1 * w + rot.apply([0.0, 0.0, 1.0]))),
+    "user-torque": Model(BODY, UserTorque(lambda t, rot, w: -0.1 * w + rot.apply([0.0, 0.0, 1.0]))),
     "user-potential": Model(BODY, UserPotential(lambda rot, t: 0.3 * rot.apply([0.0, 0.0, 1.0])[..., 2])),
     "tabulated-orbit": Model(
         BODY,
         GravityGradient(
-            BODY, PointMass(2.0, TabulatedOrbit(lambda t: np.stack([np.cos(t), np.sin(t), 0.3 + 0 * t], -1)))
+            PointMass(2.0, TabulatedOrbit(lambda t: np.stack([np.cos(t), np.sin(t), 0.3 + 0 * t], -1)))
         ),
     ),
 }

@@ -6,8 +6,9 @@ import numpy as np
 import pytest
 
 from andoyer import RigidBody, State, bodies
-from andoyer.integrate.secular import SecularGravityGradient
+from andoyer.integrate.secular import propagate_momentum
 from andoyer.perturbations import GravityGradient, KeplerOrbit, PointMass
+from andoyer.perturbations.secular import SecularGravityGradient
 from andoyer.perturbations.solar_system import JULIAN_YEAR, OBLIQUITY, mean_perturbers
 
 ARCSEC = np.pi / 648000
@@ -15,7 +16,7 @@ ARCSEC = np.pi / 648000
 
 def brute_force_average(body, perturber, h, I, J, G, n=48, n_orbit=96):
     """⟨ΔH⟩ over uniform l, g and the perturber's mean anomaly, by the trapezoid rule (spectral)."""
-    model = GravityGradient(body, perturber)
+    model = GravityGradient(perturber).bind(body)
     grid = 2 * np.pi * np.arange(n) / n
     l, g = np.meshgrid(grid, grid, indexing="ij")
     state = State.from_andoyer(l, g, h, G * np.cos(J), G, G * np.cos(I))
@@ -69,7 +70,7 @@ def precession_rate(planet, years=1000.0):
     model = SecularGravityGradient(body, mean_perturbers(planet))
     t = np.linspace(0.0, years * JULIAN_YEAR, 2001)
     M0 = G * np.array([np.sin(eps) * np.sin(0.0), -np.sin(eps) * np.cos(0.0), np.cos(eps)])
-    M = model.propagate_momentum(M0, G, t)
+    M = propagate_momentum(model, M0, G, t)
     h = np.unwrap(np.arctan2(M[:, 0], -M[:, 1]))
     slope = np.polyfit(t / JULIAN_YEAR, h, 1)[0]
     return -slope / ARCSEC
@@ -120,4 +121,20 @@ def test_secular_bad_input():
         mean_perturbers("venus")
     model = SecularGravityGradient(bodies.get("earth"), mean_perturbers("earth"))
     with pytest.raises(ValueError, match="expected increasing"):
-        model.propagate_momentum([0, 0, 1.0], 1.0, [2.0, 1.0])
+        propagate_momentum(model, [0, 0, 1.0], 1.0, [2.0, 1.0])
+
+
+def test_secular_deprecated_alias_warns_and_propagates_the_same():
+    """``andoyer.integrate.secular.SecularGravityGradient`` moved to the models; the old name still works."""
+    import andoyer.integrate.secular as old_place
+
+    with pytest.warns(DeprecationWarning, match="andoyer.perturbations.secular.SecularGravityGradient"):
+        alias = old_place.SecularGravityGradient
+    body = bodies.get("earth")
+    G = body.C * 2 * np.pi / 86164.0905
+    M0 = G * np.array([0.0, -0.4, np.sqrt(1 - 0.16)])
+    old = alias(body, mean_perturbers("earth"))
+    assert isinstance(old, SecularGravityGradient)
+    t = [0.0, 3e9]
+    new = propagate_momentum(SecularGravityGradient(body, mean_perturbers("earth")), M0, G, t)
+    assert np.array_equal(old.propagate_momentum(M0, G, t), new)

@@ -42,7 +42,7 @@ def test_splitting_frame_only_is_exact():
 
 MODELS = {
     "gravity-gradient": lambda body: GravityGradient(
-        body, PointMass(4.0, CircularOrbit(2.0, 0.3, inclination=0.4))
+        PointMass(4.0, CircularOrbit(2.0, 0.3, inclination=0.4))
     ),
     "heavy-top": lambda body: HeavyTop(0.8, [0.1, 0.0, 0.3]),
 }
@@ -75,6 +75,6 @@ def test_splitting_rejects_dissipative_models():
 
     body = RigidBody(1.0, 1.5, 2.0)
     with pytest.raises(ValueError, match=r"expected Hamiltonian attitude-only models"):
-        integrate_splitting(Model(body, LinearDamping(body, 0.1)), start(), [1.0], step=0.1)
+        integrate_splitting(Model(body, LinearDamping(0.1)), start(), [1.0], step=0.1)
     with pytest.raises(ValueError, match=r"expected a positive finite step"):
         integrate_splitting(Model(body), start(), [1.0], step=0.0)

@@ -170,7 +170,7 @@ def precession_problem(body: str, dynamical_ellipticity: float | None = None) ->
     G = planet.C * 2 * np.pi / info.rotation_period
     h0 = 2 * np.pi * np.arange(NODE_PHASES) / NODE_PHASES
     states = State.from_andoyer(0.0, 0.0, h0, G, G, G * np.cos(OBLIQUITY[key]))
-    return Model(planet, GravityGradient(planet, mean_perturbers(key))), states
+    return Model(planet, GravityGradient(mean_perturbers(key))), states
 
 
 def default_step(body: str) -> float:

@@ -9,8 +9,8 @@ from scipy.integrate import solve_ivp
 from spin_cases import FixedOrbit, PrecessingOrbit, angle
 
 from andoyer import bodies
-from andoyer.integrate.secular import SecularGravityGradient
 from andoyer.orbits import VondrakEcliptic
+from andoyer.perturbations.secular import SecularGravityGradient
 from andoyer.perturbations.solar_system import JULIAN_YEAR, mean_perturbers
 from andoyer.spin_axis import (
     EPSILON_0,

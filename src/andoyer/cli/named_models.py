@@ -33,16 +33,16 @@ MODELS: dict[str, NamedModel] = {
     "free": NamedModel("torque-free (the exact closed-form flow by default)", lambda body, _: Model(body)),
     "gravity-gradient-sun": NamedModel(
         "gravity gradient of the Sun on the Earth's mean orbit (1 au, SI seconds)",
-        lambda body, _: Model(body, GravityGradient(body, mean_perturbers("earth")[0])),
+        lambda body, _: Model(body, GravityGradient(mean_perturbers("earth")[0])),
     ),
     "earth-lunisolar": NamedModel(
         "gravity gradients of the Sun and the Moon on their mean orbits about the Earth (SI seconds)",
-        lambda body, _: Model(body, GravityGradient(body, mean_perturbers("earth"))),
+        lambda body, _: Model(body, GravityGradient(mean_perturbers("earth"))),
         default_body="earth",
     ),
     "mars-solar": NamedModel(
         "gravity gradient of the Sun on Mars' mean orbit (SI seconds)",
-        lambda body, _: Model(body, GravityGradient(body, mean_perturbers("mars"))),
+        lambda body, _: Model(body, GravityGradient(mean_perturbers("mars"))),
         default_body="mars",
     ),
     "heavy-top": NamedModel(

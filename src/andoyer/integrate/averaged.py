@@ -1,6 +1,6 @@
 r"""Mean (secular) states of a fast rotator: the averaged model carried on a full :class:`~andoyer.State`.
 
-:class:`~andoyer.integrate.secular.SecularGravityGradient` evolves the mean
+:class:`~andoyer.perturbations.secular.SecularGravityGradient` evolves the mean
 reference-frame angular momentum ``M̄`` (equivalently the Andoyer node ``h``
 and ``H = G cos I``; ``G`` and ``L`` are constant) after averaging over the
 fast angles ``l``, ``g`` and the perturbers' mean anomalies. A precessing
@@ -29,65 +29,57 @@ as well as the small secular drift of the fast phases ``∂⟨ΔH⟩/∂L``,
 from __future__ import annotations
 
 import warnings
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.integrate import solve_ivp
 from scipy.spatial.transform import Rotation
 
-from andoyer import _quaternion as quat
 from andoyer._limits import PhasePrecisionWarning, check_size
 from andoyer._validation import as_finite
 from andoyer.free import FreeRotation
 from andoyer.integrate.output import gather_states, output_times
-from andoyer.integrate.secular import SecularGravityGradient
-from andoyer.perturbations.frame import PrecessingFrame
-from andoyer.perturbations.gravity import GravityGradient
+from andoyer.integrate.secular import propagate_momentum
 from andoyer.perturbations.model import Model
-from andoyer.perturbations.orbits import KeplerOrbit
 from andoyer.state import State
 
 __all__ = ["integrate_secular", "secular_parts"]
 
 Array = NDArray[np.float64]
 
+#: An averaged term: ``momentum_rate(t, M (N, 3), L (N,)) -> dM̄/dt (N, 3)``.
+SecularTerm = Any
 
-def secular_parts(model: Model) -> tuple[SecularGravityGradient, list[PrecessingFrame]]:
-    """Split ``model`` into its averaged gravity-gradient part and its precessing frames.
 
-    Raises ``ValueError`` for any other perturbation (its average is not implemented).
+def secular_parts(model: Model) -> list[SecularTerm]:
+    """The averaged terms of ``model``, in order (each term's ``secular_average()``).
+
+    Raises ``ValueError`` for a term without an average (gravity gradients need perturbers on
+    :class:`~andoyer.perturbations.KeplerOrbit`; precessing frames are their own average).
 
     Examples
     --------
     >>> from andoyer import RigidBody
-    >>> averaged, frames = secular_parts(Model(RigidBody(1, 1, 1.2), PrecessingFrame([0, 0, 1e-3])))
-    >>> len(averaged.perturbers), len(frames)
-    (0, 1)
+    >>> from andoyer.perturbations import PrecessingFrame
+    >>> averages = secular_parts(Model(RigidBody(1, 1, 1.2), PrecessingFrame([0, 0, 1e-3])))
+    >>> [type(a).__name__ for a in averages]
+    ['FrameAverage']
     """
     if not isinstance(model, Model):
         msg = f"expected an andoyer Model, got {type(model).__name__}"
         raise ValueError(msg)
-    perturbers, frames = [], []
+    averages = []
     for item in model.parts:
-        if isinstance(item, PrecessingFrame):
-            frames.append(item)
-            continue
-        if not isinstance(item, GravityGradient) or not all(
-            isinstance(p.orbit, KeplerOrbit) for p in item.perturbers
-        ):
+        average = item.secular_average()
+        if average is None:
             msg = (
                 "expected gravity-gradient models on Kepler orbits or precessing frames for the secular "
                 f"method, got {item!r} (use method='splitting' or 'reference')"
             )
             raise ValueError(msg)
-        if not np.array_equal(item.body.moments, model.body.moments):
-            msg = (
-                f"expected the gravity-gradient model to act on the model's body {model.body!r}, "
-                f"got {item.body!r}"
-            )
-            raise ValueError(msg)
-        perturbers.extend(item.perturbers)
-    return SecularGravityGradient(model.body, perturbers), frames
+        averages.append(average)
+    return averages
 
 
 #: DOP853 steps of the mean momentum per radian of the fastest perturber's mean motion at
@@ -97,9 +89,10 @@ _STEPS_PER_ORBITAL_RADIAN = 0.007
 _SECONDS_PER_STEP = 5e-4
 
 
-def _check_secular_size(averaged: SecularGravityGradient, unique: Array, t0: float, rtol: float) -> None:
+def _check_secular_size(averages: list[Any], unique: Array, t0: float, rtol: float) -> None:
     """Refuse, before it starts, a secular run longer than :func:`andoyer._limits.check_size` allows."""
-    motions = [abs(p.orbit.mean_motion) for p in averaged.perturbers]
+    # Frames have no perturber: only the averaged gravity gradients set the step.
+    motions = [abs(p.orbit.mean_motion) for a in averages for p in getattr(a, "perturbers", ())]
     if not motions or not rtol > 0:
         return
     span = max(float(unique[-1]) - t0, 0.0) + max(t0 - float(unique[0]), 0.0)
@@ -132,7 +125,9 @@ def integrate_secular(
         Output times (absolute: the perturbers' orbits are functions of ``t``).
     t0 : float
     rtol : float
-        DOP853 tolerance on ``M̄``.
+        Tolerance on ``M̄``: for a gravity-gradient model alone (forwards in time), the target
+        relative global error of the compiled exact-rotation composition
+        (:func:`~andoyer.integrate.secular.propagate_momentum`); otherwise DOP853's tolerance.
 
     Returns
     -------
@@ -142,6 +137,7 @@ def integrate_secular(
     Examples
     --------
     >>> from andoyer import RigidBody
+    >>> from andoyer.perturbations import PrecessingFrame
     >>> body = RigidBody(1.0, 1.0, 1.2)
     >>> frame = PrecessingFrame([0.0, 0.0, 0.01])
     >>> s = State.from_andoyer(0.0, 0.0, 0.5, 0.9, 1.0, 0.8)
@@ -150,10 +146,10 @@ def integrate_secular(
     >>> round(float(h[1] - h[0]), 12)
     -0.1
     """
-    averaged, frames = secular_parts(model)
+    averages = secular_parts(model)
     t0 = float(as_finite(t0, "t0"))
     times, unique, shape = output_times(state, t, model.body.moments, t0)
-    _check_secular_size(averaged, unique, t0, rtol)
+    _check_secular_size(averages, unique, t0, rtol)
     q0 = state.quaternion.reshape(-1, 4)
     m0 = state.m_body.reshape(-1, 3)
     M0 = state.m_reference.reshape(-1, 3)
@@ -165,16 +161,23 @@ def integrate_secular(
 
     def rhs(time: float, y: Array) -> Array:
         M = y.reshape(n, 3)
-        rate = averaged.momentum_rate(time, M, L)
-        for frame in frames:
-            rate = rate + quat.cross(M, frame.rate(np.asarray(time)))
+        rate = np.zeros_like(M)
+        for average in averages:
+            rate = rate + average.momentum_rate(time, M, L)
         return rate.ravel()
 
     scale = max(float(np.max(np.linalg.norm(M0, axis=-1), initial=0.0)), np.finfo(float).tiny)
     means: dict[float, Array] = {t0: M0}
+    # One averaged term whose flow is exact rotations (the gravity gradient on Kepler orbits):
+    # the compiled composition, forwards; anything else (frames, several terms, backwards): DOP853.
+    rotations = averages[0] if len(averages) == 1 and averages[0].exact_rotations else None
     for direction in (1.0, -1.0):
         targets = unique[(unique - t0) * direction > 0]
         if targets.size == 0:
+            continue
+        if rotations is not None and direction > 0:
+            M = propagate_momentum(rotations, M0, L, targets, rtol=rtol, t0=t0)
+            means.update({float(x): M[k] for k, x in enumerate(targets)})
             continue
         sol = solve_ivp(
             rhs,

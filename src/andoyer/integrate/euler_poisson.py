@@ -38,6 +38,7 @@ from scipy.integrate import ode
 from andoyer._limits import check_phase, check_size, spin_rate
 from andoyer._validation import as_finite, as_vectors, broadcast
 from andoyer.body import RigidBody
+from andoyer.perturbations.base import Perturbation
 from andoyer.perturbations.heavy_top import HeavyTop
 
 __all__ = ["euler_poisson_integrals", "euler_poisson_rates", "integrate_euler_poisson"]
@@ -52,7 +53,8 @@ def _check_models(body: Any, top: Any) -> None:
     if not isinstance(body, RigidBody):
         msg = f"expected an andoyer RigidBody, got {type(body).__name__}"
         raise ValueError(msg)
-    if not isinstance(top, HeavyTop):
+    # A heavy top is any term whose torque is γ × c in a uniform field (HeavyTop's uniform_field()).
+    if not isinstance(top, Perturbation) or top.uniform_field() is None:
         msg = f"expected an andoyer HeavyTop, got {type(top).__name__}"
         raise ValueError(msg)
 
@@ -96,7 +98,7 @@ def euler_poisson_rates(
     _check_models(body, top)
     m, gamma = _points(m, gamma)
     c = body.euler_coefficients
-    w = top.weight * top.center_of_mass
+    w = top.uniform_field()
     omega = m / body.moments
     m1, m2, m3 = np.moveaxis(m, -1, 0)
     g1, g2, g3 = np.moveaxis(gamma, -1, 0)
@@ -150,7 +152,7 @@ def _scalar_rhs(body: RigidBody, top: HeavyTop) -> Callable[[float, Array], list
     """The right-hand side on Python floats: a numpy call per operation would cost 20× more."""
     c1, c2, c3 = body.euler_coefficients.tolist()
     i1, i2, i3 = body.inverse_moments.tolist()
-    x, y, z = (top.weight * top.center_of_mass).tolist()
+    x, y, z = top.uniform_field().tolist()
 
     def rhs(_t: float, state: Array) -> list[float]:
         m1, m2, m3, g1, g2, g3 = state.tolist()
@@ -213,7 +215,7 @@ def _heyoka_runner(body: RigidBody, top: HeavyTop, rtol: float | None) -> Callab
     pars = [
         *body.euler_coefficients.tolist(),
         *body.inverse_moments.tolist(),
-        *(top.weight * top.center_of_mass).tolist(),
+        *top.uniform_field().tolist(),
     ]
 
     def run(y0: Array, t0: float, targets: Array) -> Array:  # pragma: no cover - optional dependency

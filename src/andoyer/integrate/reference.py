@@ -12,7 +12,6 @@ batches. The quaternion is renormalised on output only: the flow preserves
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 from typing import Any
 
@@ -24,13 +23,7 @@ from andoyer._limits import check_size, progress, spin_rate
 from andoyer._validation import as_finite
 from andoyer.integrate.output import gather_states, output_times
 from andoyer.integrate.reference_heyoka import _propagate_heyoka
-from andoyer.perturbations.base import Perturbation
-from andoyer.perturbations.frame import PrecessingFrame
-from andoyer.perturbations.gravity import GravityGradient
-from andoyer.perturbations.heavy_top import HeavyTop
 from andoyer.perturbations.model import Model
-from andoyer.perturbations.orbits import CircularOrbit, KeplerOrbit, Orbit
-from andoyer.perturbations.user import LinearDamping
 from andoyer.state import State
 
 __all__ = ["integrate_reference"]
@@ -210,154 +203,14 @@ def _reporting(
 # The right-hand side of the DOP853 path. The generic hub equations
 # (:func:`andoyer.perturbations.perturbed_rates`) cost 0.1-1 ms a call, most of
 # it numpy's per-call overhead on small arrays (stack, broadcast, a vectorised
-# Kepler solve for one time); here each known model is one function on the
-# components of the state, the orbit positions are solved on Python floats,
-# and any other model goes through its generic ``_momentum_gradient``/``_torque``.
-
-# Components: Python floats for one body (a numpy call costs 20 times a float operation), else arrays (N,).
-Vector = tuple[Any, Any, Any]
-Quaternion = tuple[Any, Any, Any, Any]
-Term = Callable[[float, Quaternion, Vector], tuple[Vector | None, Vector | None]]
-
-
-def _to_body(q: Quaternion, v: Vector) -> Vector:
-    """``Rᵀ v`` (as ``quat.rotate(quat.conjugate(q), v)``), by components."""
-    ux, uy, uz, w = -q[0], -q[1], -q[2], q[3]
-    tx, ty, tz = 2.0 * (uy * v[2] - uz * v[1]), 2.0 * (uz * v[0] - ux * v[2]), 2.0 * (ux * v[1] - uy * v[0])
-    return (
-        v[0] + w * tx + (uy * tz - uz * ty),
-        v[1] + w * ty + (uz * tx - ux * tz),
-        v[2] + w * tz + (ux * ty - uy * tx),
-    )
-
-
-def _eccentric_anomaly(M: float, e: float) -> float:
-    """:func:`~andoyer.perturbations.solve_kepler` on one float (same start and stopping rule)."""
-    turns = math.floor((M + math.pi) / (2 * math.pi))
-    Mr = M - 2 * math.pi * turns
-    E = Mr + 0.85 * e * (math.copysign(1.0, math.sin(Mr)) if math.sin(Mr) != 0 else 0.0)
-    for _ in range(60):
-        step = (E - e * math.sin(E) - Mr) / (1 - e * math.cos(E))
-        E -= step
-        if abs(step) <= 4 * np.finfo(float).eps * max(1.0, abs(E)):
-            break
-    return E + 2 * math.pi * turns
-
-
-def _position(orbit: Orbit) -> Callable[[float], Vector]:
-    """``orbit.position`` at one time, on Python floats for Kepler and circular orbits."""
-    if type(orbit) not in (KeplerOrbit, CircularOrbit):
-        return lambda t: tuple(np.asarray(orbit.position(t), dtype=float).reshape(3).tolist())
-    a, e, epoch = orbit.semi_major_axis, orbit.eccentricity, orbit.epoch
-    b = a * math.sqrt((1 - e) * (1 + e))
-    ci, si = math.cos(orbit.inclination), math.sin(orbit.inclination)
-
-    def position(t: float) -> Vector:
-        dt = t - epoch
-        mean = orbit.mean_anomaly + orbit.mean_motion * dt
-        if e == 0.0:
-            x, y = a * math.cos(mean), a * math.sin(mean)
-        else:
-            E = _eccentric_anomaly(mean, e)
-            x, y = a * (math.cos(E) - e), b * math.sin(E)
-        node = orbit.node + orbit.node_rate * dt
-        periapsis = orbit.periapsis + orbit.periapsis_rate * dt
-        cO, sO, cw, sw = math.cos(node), math.sin(node), math.cos(periapsis), math.sin(periapsis)
-        return (
-            (cO * cw - sO * ci * sw) * x + (-cO * sw - sO * ci * cw) * y,
-            (sO * cw + cO * ci * sw) * x + (-sO * sw + cO * ci * cw) * y,
-            si * sw * x + si * cw * y,
-        )
-
-    return position
-
-
-def _gravity_term(part: GravityGradient) -> Term:
-    I1, I2, I3 = part.body.moments.tolist()
-    perturbers = [(3 * p.gm, _position(p.orbit)) for p in part.perturbers]
-
-    def term(t: float, q: Quaternion, _m: Vector) -> tuple[None, Vector]:
-        total = [0.0, 0.0, 0.0]
-        for gm3, position in perturbers:
-            x, y, z = _to_body(q, position(t))
-            scale = gm3 / (x * x + y * y + z * z) ** 2.5
-            total = [
-                total[0] + scale * ((I3 - I2) * y * z),
-                total[1] + scale * ((I1 - I3) * z * x),
-                total[2] + scale * ((I2 - I1) * x * y),
-            ]
-        return None, (total[0], total[1], total[2])
-
-    return term
-
-
-def _frame_term(part: PrecessingFrame) -> Term:
-    # ∂ΔH/∂m = -μ_b and the torque m × μ_b cancel exactly in dm/dt (eq. 132): neither is formed.
-    constant = None if part._constant is None else part._constant.tolist()
-
-    def term(t: float, q: Quaternion, _m: Vector) -> tuple[Vector, None]:
-        mu = constant or part.rate(t).reshape(3).tolist()
-        bx, by, bz = _to_body(q, mu)
-        return (-bx, -by, -bz), None
-
-    return term
-
-
-def _heavy_top_term(part: HeavyTop) -> Term:
-    x, y, z = (part.weight * part.center_of_mass).tolist()
-
-    def term(_t: float, q: Quaternion, _m: Vector) -> tuple[None, Vector]:
-        qx, qy, qz, qw = q
-        g1, g2, g3 = 2 * (qx * qz - qw * qy), 2 * (qy * qz + qw * qx), 1 - 2 * (qx * qx + qy * qy)
-        return None, (g2 * z - g3 * y, g3 * x - g1 * z, g1 * y - g2 * x)
-
-    return term
-
-
-def _damping_term(part: LinearDamping) -> Term:
-    c = np.broadcast_to(part.coefficient, 3).tolist()
-    I = part.body.moments.tolist()
-
-    def term(_t: float, _q: Quaternion, m: Vector) -> tuple[None, Vector]:
-        return None, (-c[0] * (m[0] / I[0]), -c[1] * (m[1] / I[1]), -c[2] * (m[2] / I[2]))
-
-    return term
-
-
-def _generic_term(part: Perturbation) -> Term:
-    def term(t: float, qc: Quaternion, mc: Vector) -> tuple[Vector | None, Vector]:
-        q, m = np.stack(np.broadcast_arrays(*qc), -1), np.stack(np.broadcast_arrays(*mc), -1)
-        torque = np.broadcast_to(part._torque(t, q, m), m.shape)
-        if part.attitude_only:
-            return None, (torque[..., 0], torque[..., 1], torque[..., 2])
-        g = np.broadcast_to(part._momentum_gradient(t, q, m), m.shape)
-        m1, m2, m3 = mc
-        g1, g2, g3 = g[..., 0], g[..., 1], g[..., 2]
-        rate = (
-            m2 * g3 - m3 * g2 + torque[..., 0],
-            m3 * g1 - m1 * g3 + torque[..., 1],
-            m1 * g2 - m2 * g1 + torque[..., 2],
-        )
-        return (g1, g2, g3), rate
-
-    return term
-
-
-def _term(part: Perturbation) -> Term:
-    if type(part) is GravityGradient:
-        return _gravity_term(part)
-    if type(part) is PrecessingFrame:
-        return _frame_term(part)
-    if type(part) is HeavyTop:
-        return _heavy_top_term(part)
-    if type(part) is LinearDamping:
-        return _damping_term(part)
-    return _generic_term(part)
+# Kepler solve for one time); here each term gives its share of the equations on
+# the components of the state (``Perturbation.hub_rates``: Python floats for one
+# body, arrays (N,) for many), with the orbit positions solved on Python floats.
 
 
 def _rhs(model: Model, n: int) -> Callable[[float, Array], Array]:
     """The hub equations of ``n`` bodies on the flat state ``(q (n, 4), m (n, 3))``."""
-    terms = [_term(part) for part in model.parts]
+    terms = [part.hub_rates() for part in model.parts]
     c1, c2, c3 = model.body.euler_coefficients.tolist()
     I1, I2, I3 = model.body.moments.tolist()
 

@@ -1,6 +1,6 @@
 r"""Exact-rotation compositions for the secular gravity-gradient equations.
 
-The averaged equations of :class:`~andoyer.integrate.secular.SecularGravityGradient`,
+The averaged equations of :class:`~andoyer.perturbations.secular.SecularGravityGradient`,
 
 .. math:: \dot{\mathbf M} = \sum_p c_p\,(\mathbf M\cdot\mathbf k_p(t))\;\mathbf k_p(t)\times\mathbf M,
    \qquad c_p = 2\kappa_p/G^2,

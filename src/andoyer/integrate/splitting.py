@@ -34,9 +34,6 @@ from andoyer.free.lean import NUMBA, free_step
 from andoyer.integrate.output import gather_states, output_times
 from andoyer.integrate.split_kernel import run_tabulated
 from andoyer.perturbations.base import Perturbation
-from andoyer.perturbations.frame import PrecessingFrame
-from andoyer.perturbations.gravity import GravityGradient
-from andoyer.perturbations.heavy_top import HeavyTop
 from andoyer.perturbations.model import Model
 from andoyer.state import State
 
@@ -88,16 +85,17 @@ def splitting_coefficients(order: int) -> list[float]:
 COMPOSITIONS = {order: splitting_coefficients(order) for order in (2, 4, 6)}
 
 
-def splitting_parts(model: Model) -> tuple[list[Perturbation], list[PrecessingFrame]]:
+def splitting_parts(model: Model) -> tuple[list[Perturbation], list[Perturbation]]:
     """The kicks (attitude-only Hamiltonian terms) and precessing frames of ``model``.
 
+    Each term says which it is (:attr:`~andoyer.perturbations.Perturbation.splitting_flow`).
     Raises ``ValueError`` for any other term: its flow is not a kick or a frame rotation.
     """
     kicks, frames = [], []
     for part in model.parts:
-        if isinstance(part, PrecessingFrame):
+        if part.splitting_flow == "frame":
             frames.append(part)
-        elif part.hamiltonian and part.attitude_only:
+        elif part.splitting_flow == "kick":
             kicks.append(part)
         else:
             msg = (
@@ -160,14 +158,14 @@ def split_step(
     for weight in COMPOSITIONS[order]:
         sub = weight * h
         for kick in kicks:
-            m = m + kick._torque(np.asarray(time), q, m) * (0.5 * sub)
+            m = m + kick.kick(np.asarray(time), q, m) * (0.5 * sub)
         q, m = flow(moments, q, m, sub)
         if frames:
-            mu = sum(np.asarray(frame.rate(np.asarray(time + 0.5 * sub))) for frame in frames)
+            mu = sum(np.asarray(frame.frame_rate(np.asarray(time + 0.5 * sub))) for frame in frames)
             q = quat.multiply(np.broadcast_to(_frame_quaternion(mu, sub), q.shape), q)
         time = time + sub
         for kick in kicks:
-            m = m + kick._torque(np.asarray(time), q, m) * (0.5 * sub)
+            m = m + kick.kick(np.asarray(time), q, m) * (0.5 * sub)
     return q, m
 
 
@@ -180,7 +178,7 @@ def _frame_quaternion(mu: Array, sub: float) -> Array:
 
 
 def _tabulable(kicks: list[Perturbation]) -> bool:
-    return NUMBA and all(type(kick) in (GravityGradient, HeavyTop) for kick in kicks)
+    return NUMBA and all(kick.tabulable for kick in kicks)
 
 
 _CHUNK = 4096
@@ -189,23 +187,19 @@ _CHUNK = 4096
 class _Tables:
     """Perturber positions and frame rates of one chunk of steps, for :func:`run_tabulated`."""
 
-    def __init__(self, kicks: list[Perturbation], frames: list[PrecessingFrame], order: int) -> None:
+    def __init__(self, kicks: list[Perturbation], frames: list[Perturbation], order: int) -> None:
         weights = np.array(COMPOSITIONS[order])
         self.weights = weights
         self.nodes = np.concatenate([[0.0], np.cumsum(weights)])
         self.mids = 0.5 * (self.nodes[:-1] + self.nodes[1:])
-        self.sources = [
-            (p, kick.body.moments)
-            for kick in kicks
-            if isinstance(kick, GravityGradient)
-            for p in kick.perturbers
-        ]
+        self.sources = [source for kick in kicks for source in kick.point_masses()]
         self.gm = np.array([p.gm for p, _ in self.sources], dtype=np.float64)
         self.inertia = np.array([moments for _, moments in self.sources], dtype=np.float64).reshape(-1, 3)
         heavy = np.zeros(3)
         for kick in kicks:
-            if isinstance(kick, HeavyTop):
-                heavy += kick.weight * kick.center_of_mass
+            field = kick.uniform_field()
+            if field is not None:
+                heavy += field
         self.heavy = heavy
         self.frames = frames
 
@@ -217,7 +211,7 @@ class _Tables:
         rates = np.zeros((hs.size, self.weights.size, 3))
         mids = starts[:, None] + hs[:, None] * self.mids
         for frame in self.frames:
-            rates += np.asarray(frame.rate(mids), dtype=np.float64)
+            rates += np.asarray(frame.frame_rate(mids), dtype=np.float64)
         return positions, rates
 
 

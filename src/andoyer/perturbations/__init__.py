@@ -1,5 +1,8 @@
 """Disturbing models: each a Hamiltonian term ``ΔH`` with its torque, or a torque alone.
 
+Each term carries its own pieces for the integrators (the term protocol of
+:mod:`andoyer.perturbations.base`); the body is given once, to the :class:`Model`.
+
 See :mod:`andoyer.perturbations.base` for the equations of motion they enter.
 """
 
@@ -17,6 +20,7 @@ from andoyer.perturbations.heavy_top import (
 )
 from andoyer.perturbations.model import Model
 from andoyer.perturbations.orbits import CircularOrbit, KeplerOrbit, Orbit, TabulatedOrbit, solve_kepler
+from andoyer.perturbations.secular import SecularGravityGradient
 from andoyer.perturbations.user import LinearDamping, UserPotential, UserTorque
 
 __all__ = [
@@ -30,6 +34,7 @@ __all__ = [
     "Perturbation",
     "PointMass",
     "PrecessingFrame",
+    "SecularGravityGradient",
     "SumOfPerturbations",
     "TabulatedOrbit",
     "UserPotential",

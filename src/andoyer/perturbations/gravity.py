@@ -14,8 +14,9 @@ once so that near-axisymmetric bodies keep their digits. The monopole
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Sequence
-from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -23,55 +24,47 @@ from numpy.typing import ArrayLike, NDArray
 from andoyer import _quaternion as quat
 from andoyer.body import RigidBody
 from andoyer.perturbations.base import Perturbation
-from andoyer.perturbations.orbits import Orbit
+from andoyer.perturbations.expressions import (
+    HeyokaContext,
+    HubRates,
+    Quaternion,
+    Vector,
+    float_position,
+    kepler_position,
+    to_body,
+)
+from andoyer.perturbations.orbits import CircularOrbit, KeplerOrbit
+from andoyer.perturbations.point_mass import PointMass
+from andoyer.perturbations.secular import SecularGravityGradient
 
 __all__ = ["GravityGradient", "PointMass"]
 
 Array = NDArray[np.float64]
 
 
-@dataclass(frozen=True)
-class PointMass:
-    """A perturbing point mass: gravitational parameter ``gm = G M`` and its orbit.
-
-    Examples
-    --------
-    >>> from andoyer.perturbations import CircularOrbit
-    >>> sun = PointMass(1.0, CircularOrbit(1.0, 1.0), name="Sun")
-    >>> sun.name
-    'Sun'
-    """
-
-    gm: float
-    orbit: Orbit
-    name: str = ""
-
-    def __post_init__(self) -> None:
-        if not np.isfinite(self.gm) or self.gm <= 0:
-            msg = f"expected a positive finite gravitational parameter gm, got {self.gm!r}"
-            raise ValueError(msg)
-        if not isinstance(self.orbit, Orbit):
-            msg = f"expected an Orbit, got {type(self.orbit).__name__}"
-            raise ValueError(msg)
-
-
 class GravityGradient(Perturbation):
     """The gravity-gradient (MacCullagh) torque of one or several point masses on a body.
 
+    The body is the model's: ``Model(body, GravityGradient(perturbers))`` (or
+    ``GravityGradient(perturbers).bind(body)`` to evaluate the term alone).
+
     Parameters
     ----------
-    body : RigidBody
-        Moments in the same units as ``gm * time²`` per length² times mass·length²,
-        i.e. consistent with the angular momentum.
     perturbers : PointMass or sequence of PointMass
-        The Sun and the Moon, say.
+        The Sun and the Moon, say. Their ``gm`` in units consistent with the body's moments
+        and the angular momentum (``gm`` · moment / length³ is a torque).
+
+    Notes
+    -----
+    The former signature ``GravityGradient(body, perturbers)`` still works and issues a
+    ``DeprecationWarning``; the term is then bound to that body, and a model of another body
+    refuses it.
 
     Examples
     --------
     >>> from andoyer import RigidBody
     >>> from andoyer.perturbations import CircularOrbit
-    >>> body = RigidBody(1.0, 2.0, 2.5)
-    >>> model = GravityGradient(body, PointMass(1.0, CircularOrbit(1.0, 0.0)))
+    >>> model = GravityGradient(PointMass(1.0, CircularOrbit(1.0, 0.0))).bind(RigidBody(1.0, 2.0, 2.5))
     >>> model.torque(0.0, [0, 0, 0, 1.0], [0, 0, 1.0]).tolist()  # perturber on b1
     [0.0, 0.0, 0.0]
     """
@@ -79,15 +72,56 @@ class GravityGradient(Perturbation):
     hamiltonian = True
     attitude_only = True
 
-    def __init__(self, body: RigidBody, perturbers: PointMass | Sequence[PointMass]) -> None:
-        if not isinstance(body, RigidBody):
-            msg = f"expected an andoyer.RigidBody, got {type(body).__name__}"
+    def __init__(self, perturbers: PointMass | Sequence[PointMass], *deprecated: Any) -> None:
+        # ``GravityGradient(body, perturbers)``, the former signature, arrives as (body, (perturbers,)).
+        args = (perturbers, *deprecated)
+        if len(args) == 2:
+            body, perturbers = args
+            if not isinstance(body, RigidBody):
+                msg = f"expected an andoyer.RigidBody, got {type(body).__name__}"
+                raise ValueError(msg)
+            warnings.warn(
+                "GravityGradient(body, perturbers) is deprecated: give the body to the Model, "
+                "Model(body, GravityGradient(perturbers))",
+                DeprecationWarning,
+                stacklevel=2,
+            )
+        elif len(args) == 1:
+            body, perturbers = None, args[0]
+        else:
+            msg = f"expected GravityGradient(perturbers), got {len(args)} arguments"
             raise ValueError(msg)
-        self.body = body
+        self._body = body
         self.perturbers = (perturbers,) if isinstance(perturbers, PointMass) else tuple(perturbers)
         if not self.perturbers or not all(isinstance(p, PointMass) for p in self.perturbers):
             msg = f"expected one or more PointMass perturbers, got {perturbers!r}"
             raise ValueError(msg)
+
+    @property
+    def body(self) -> RigidBody:
+        """The body the term acts on (its model's); ``ValueError`` before it is bound."""
+        if self._body is None:
+            msg = (
+                "expected a GravityGradient bound to a body (inside a Model, or through bind(body)), "
+                "got an unbound term"
+            )
+            raise ValueError(msg)
+        return self._body
+
+    def bind(self, body: RigidBody) -> GravityGradient:
+        """The term on ``body``; ``ValueError`` if it was built for a body of other moments."""
+        if self._body is not None:
+            if not np.array_equal(self._body.moments, body.moments):
+                msg = (
+                    f"expected the gravity-gradient model to act on the model's body {body!r}, "
+                    f"got {self._body!r}"
+                )
+                raise ValueError(msg)
+            return self
+        bound = object.__new__(GravityGradient)
+        bound.__dict__.update(self.__dict__)
+        bound._body = body
+        return bound
 
     def _directions(self, t: ArrayLike, q: Array) -> list[tuple[float, Array]]:
         conj = quat.conjugate(q)
@@ -113,6 +147,66 @@ class GravityGradient(Perturbation):
             )
         return total * np.ones((*np.broadcast_shapes(np.shape(total)[:-1], m.shape[:-1]), 3))
 
+    # The term protocol (andoyer.perturbations.base).
+
+    @property
+    def tabulable(self) -> bool:
+        """Always: the kick depends on time only through the perturbers' positions."""
+        return True
+
+    def point_masses(self) -> tuple[tuple[PointMass, Array], ...]:
+        """Each perturber with the body's moments."""
+        return tuple((p, self.body.moments) for p in self.perturbers)
+
+    def secular_average(self) -> Any | None:
+        """:class:`~andoyer.perturbations.secular.SecularGravityGradient` (Kepler orbits), else ``None``."""
+        if not all(isinstance(p.orbit, KeplerOrbit) for p in self.perturbers):
+            return None
+        return SecularGravityGradient(self.body, self.perturbers)
+
+    def hub_rates(self) -> HubRates:
+        """``δṁ = Σ_p 3μ_p/ρ⁵ ((I3−I2) ρ2 ρ3, …)`` on components, positions solved on floats."""
+        I1, I2, I3 = self.body.moments.tolist()
+        perturbers = [(3 * p.gm, float_position(p.orbit)) for p in self.perturbers]
+
+        def rates(t: float, q: Quaternion, _m: Vector) -> tuple[None, Vector]:
+            total = [0.0, 0.0, 0.0]
+            for gm3, position in perturbers:
+                x, y, z = to_body(q, position(t))
+                scale = gm3 / (x * x + y * y + z * z) ** 2.5
+                total = [
+                    total[0] + scale * ((I3 - I2) * y * z),
+                    total[1] + scale * ((I1 - I3) * z * x),
+                    total[2] + scale * ((I2 - I1) * x * y),
+                ]
+            return None, (total[0], total[1], total[2])
+
+        return rates
+
+    @property
+    def heyoka_supported(self) -> bool:
+        """Kepler and circular orbits (closed-form positions)."""
+        return all(type(p.orbit) in (KeplerOrbit, CircularOrbit) for p in self.perturbers)
+
+    def heyoka_rates(self, ctx: HeyokaContext) -> tuple[None, list[list[Any]]]:
+        """The torque of each perturber, ``kepE`` for its eccentric anomaly."""
+        I1, I2, I3 = self.body.moments.tolist()
+        par, q, factor = ctx.par, ctx.q, ctx.time_unit / ctx.scale
+        out = []
+        for p in self.perturbers:
+            rho = to_body(q, kepler_position(ctx.hy, par, p.orbit, ctx.time))
+            r5 = (rho[0] * rho[0] + rho[1] * rho[1] + rho[2] * rho[2]) ** -2.5
+            k = 3 * p.gm * factor
+            out.append(
+                [
+                    par(k * (I3 - I2)) * r5 * rho[1] * rho[2],
+                    par(k * (I1 - I3)) * r5 * rho[2] * rho[0],
+                    par(k * (I2 - I1)) * r5 * rho[0] * rho[1],
+                ]
+            )
+        return None, out
+
     def __repr__(self) -> str:
         names = ", ".join(p.name or "PointMass" for p in self.perturbers)
-        return f"GravityGradient({self.body!r}, [{names}])"
+        body = "" if self._body is None else f"{self._body!r}, "
+        return f"GravityGradient({body}[{names}])"

@@ -12,6 +12,8 @@ point.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
@@ -19,6 +21,7 @@ from andoyer import _quaternion as quat
 from andoyer._validation import as_finite, as_vectors
 from andoyer.body import RigidBody
 from andoyer.perturbations.base import Perturbation
+from andoyer.perturbations.expressions import HeyokaContext, HubRates, Quaternion, Vector
 
 __all__ = [
     "HeavyTop",
@@ -74,6 +77,42 @@ class HeavyTop(Perturbation):
     def _torque(self, t: Array, q: Array, m: Array) -> Array:
         value = self.weight * quat.cross(self.gamma(q), self.center_of_mass)
         return value * np.ones((*np.broadcast_shapes(np.shape(t), m.shape[:-1], value.shape[:-1]), 3))
+
+    # The term protocol (andoyer.perturbations.base).
+
+    @property
+    def tabulable(self) -> bool:
+        """Always: ``τ = γ × c`` with ``γ`` the fixed vertical seen in the body."""
+        return True
+
+    def uniform_field(self) -> Array:
+        """``c = m g0 r_c`` (body components): ``τ = γ × c``."""
+        return self.weight * self.center_of_mass
+
+    def hub_rates(self) -> HubRates:
+        """``δṁ = γ × c`` with ``γ`` from the quaternion's components."""
+        x, y, z = self.uniform_field().tolist()
+
+        def rates(_t: float, q: Quaternion, _m: Vector) -> tuple[None, Vector]:
+            qx, qy, qz, qw = q
+            g1, g2, g3 = 2 * (qx * qz - qw * qy), 2 * (qy * qz + qw * qx), 1 - 2 * (qx * qx + qy * qy)
+            return None, (g2 * z - g3 * y, g3 * x - g1 * z, g1 * y - g2 * x)
+
+        return rates
+
+    @property
+    def heyoka_supported(self) -> bool:
+        """Always."""
+        return True
+
+    def heyoka_rates(self, ctx: HeyokaContext) -> tuple[None, list[list[Any]]]:
+        """``δṁ = γ × c`` with ``c`` runtime parameters."""
+        par = ctx.par
+        x, y, z = (ctx.time_unit * self.weight * self.center_of_mass / ctx.scale).tolist()
+        qx, qy, qz, qw = ctx.q
+        g = [2 * (qx * qz - qw * qy), 2 * (qy * qz + qw * qx), 1 - 2 * (qx * qx + qy * qy)]
+        torque = [g[1] * par(z) - g[2] * par(y), g[2] * par(x) - g[0] * par(z), g[0] * par(y) - g[1] * par(x)]
+        return None, [torque]
 
     def __repr__(self) -> str:
         return f"HeavyTop(weight={self.weight!r}, center_of_mass={self.center_of_mass.tolist()})"

@@ -18,7 +18,9 @@ class Model:
     Parameters
     ----------
     body : RigidBody
+        Given once, here: each term reads it from the model (:meth:`Perturbation.bind`).
     perturbations : Perturbation or sequence of Perturbation, optional
+        Stored bound to ``body``; a term built for another body is refused.
 
     Examples
     --------
@@ -50,6 +52,7 @@ class Model:
             if not isinstance(item, Perturbation):
                 msg = f"expected Perturbation models, got {type(item).__name__}"
                 raise ValueError(msg)
+        items = tuple(item.bind(self.body) for item in items)
         object.__setattr__(self, "perturbations", items)
         total = None if not items else items[0] if len(items) == 1 else SumOfPerturbations(items)
         object.__setattr__(self, "_sum", total)
