@@ -22,7 +22,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from andoyer._jit import jit
-from andoyer.integrate.secular_steps import COMPOSITIONS
+from andoyer.integrate.secular_steps import COMPOSITIONS, turn_about
 
 __all__ = ["rotate_stages", "stage_times"]
 
@@ -93,18 +93,7 @@ def rotate_stages(s0: Array, normals: Array, rates: Array, durations: Array, sta
         sx, sy, sz = s0[m, 0], s0[m, 1], s0[m, 2]
         for k in range(durations.shape[0]):
             nx, ny, nz = normals[k, 0], normals[k, 1], normals[k, 2]
-            d = sx * nx + sy * ny + sz * nz
-            angle = -rates[m, k] * d * durations[k]
-            sn = np.sin(angle)
-            v = 2.0 * np.sin(0.5 * angle) ** 2
-            cx = ny * sz - nz * sy
-            cy = nz * sx - nx * sz
-            cz = nx * sy - ny * sx
-            sx, sy, sz = (
-                sx + sn * cx + v * (d * nx - sx),
-                sy + sn * cy + v * (d * ny - sy),
-                sz + sn * cz + v * (d * nz - sz),
-            )
+            sx, sy, sz = turn_about(sx, sy, sz, nx, ny, nz, -rates[m, k] * durations[k])
             if k % stages == stages - 1:
                 scale = 1.0 / np.sqrt(sx * sx + sy * sy + sz * sz)
                 sx, sy, sz = sx * scale, sy * scale, sz * scale
