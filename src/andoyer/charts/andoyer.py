@@ -406,6 +406,6 @@ register(
         lambda s, body, **o: s.as_initial_andoyer(body, **o),
         needs_body=True,
         options=("epoch", "t"),
-        source="andoyer.state_charts",
+        source="andoyer.state",
     )
 )
