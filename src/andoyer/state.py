@@ -13,7 +13,7 @@ from andoyer._validation import as_vectors, check_magnitude, describe
 from andoyer.body import RigidBody
 from andoyer.charts.andoyer import Andoyer, andoyer_to_hub, hub_to_andoyer
 from andoyer.charts.euler import Euler, euler_to_hub, hub_to_euler
-from andoyer.state_charts import FreeBodyCharts, check_body
+from andoyer.state_charts import check_body, free_flow
 
 __all__ = ["State"]
 
@@ -27,7 +27,7 @@ def _check_rotation(rotation: Any) -> Array:
     return np.asarray(rotation.as_quat(), dtype=np.float64)
 
 
-class State(FreeBodyCharts):
+class State:
     r"""Rotation state of a rigid body: attitude and angular momentum, vectorised.
 
     The attitude is a rotation :math:`\mathcal{R}` taking body components to
@@ -242,6 +242,194 @@ class State(FreeBodyCharts):
         0.4
         """
         return hub_to_andoyer(self._q, self._m, stacklevel=2)
+
+    # ------------------------------------------ the charts that need the body
+
+    @classmethod
+    def from_sadov(
+        cls,
+        body: RigidBody,
+        phi_l: ArrayLike,
+        phi_g: ArrayLike,
+        phi_h: ArrayLike,
+        I_l: ArrayLike,
+        I_g: ArrayLike,
+        I_h: ArrayLike,
+    ) -> State:
+        """State from Sadov's action–angle variables (Gurfil §5); see :mod:`andoyer.charts.sadov`.
+
+        Examples
+        --------
+        >>> from andoyer import RigidBody, State
+        >>> body = RigidBody(1.0, 2.0, 3.0)
+        >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.9, 1.0, 0.2)
+        >>> back = State.from_sadov(body, *s.as_sadov(body))
+        >>> bool(abs(back.m_body - s.m_body).max() < 1e-13)
+        True
+        """
+        from andoyer.charts.sadov import sadov_to_andoyer
+
+        return cls.from_andoyer(*sadov_to_andoyer(check_body(body), phi_l, phi_g, phi_h, I_l, I_g, I_h))
+
+    def as_sadov(self, body: RigidBody):
+        """Sadov's action–angle variables ``(phi_l, phi_g, phi_h, I_l, I_g, I_h)`` of the free body.
+
+        Examples
+        --------
+        >>> from andoyer import RigidBody, State
+        >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.9, 1.0, 0.2)
+        >>> round(float(s.as_sadov(RigidBody(1.0, 2.0, 3.0)).I_g), 12)
+        1.0
+        """
+        from andoyer.charts.sadov import andoyer_to_sadov
+
+        return andoyer_to_sadov(check_body(body), *self.as_andoyer())
+
+    def as_initial_andoyer(self, body: RigidBody, epoch: ArrayLike, t: ArrayLike = 0.0) -> Andoyer:
+        """The modified Andoyer set (Gurfil §4.1): Andoyer variables at ``epoch`` of the free motion.
+
+        The state is taken at time ``t``; the free flow carries it to ``epoch``.
+        ``(l0, g0, h, L0, G, H)`` are constants of the free motion.
+
+        Examples
+        --------
+        >>> from andoyer import FreeRotation, RigidBody, State
+        >>> body = RigidBody(1.0, 2.0, 3.0)
+        >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.9, 1.0, 0.2)
+        >>> later = FreeRotation(body).propagate(s, 2.5)
+        >>> a, b = s.as_initial_andoyer(body, 0.0), later.as_initial_andoyer(body, 0.0, t=2.5)
+        >>> bool(max(abs(x - y) for x, y in zip(a, b)) < 1e-12)
+        True
+        """
+        dt = np.asarray(epoch, dtype=float) - np.asarray(t, dtype=float)
+        return free_flow(check_body(body), self, dt).as_andoyer()
+
+    @classmethod
+    def from_initial_andoyer(
+        cls,
+        body: RigidBody,
+        l0: ArrayLike,
+        g0: ArrayLike,
+        h: ArrayLike,
+        L0: ArrayLike,
+        G: ArrayLike,
+        H: ArrayLike,
+        epoch: ArrayLike,
+        t: ArrayLike = 0.0,
+    ) -> State:
+        """State at time ``t`` of the free motion whose Andoyer variables at ``epoch`` are given.
+
+        The inverse of :meth:`as_initial_andoyer` (Gurfil §4.1's modified Andoyer set
+        ``(l0, g0, h, L0, G, H)``): the free flow carries ``from_andoyer(l0, …, H)`` from
+        ``epoch`` to ``t``. All arguments broadcast.
+
+        Examples
+        --------
+        >>> from andoyer import RigidBody, State
+        >>> body = RigidBody(1.0, 2.0, 3.0)
+        >>> s = State.from_initial_andoyer(body, 0.3, 0.4, 0.5, 0.9, 1.0, 0.2, epoch=1.0, t=2.5)
+        >>> a = s.as_initial_andoyer(body, 1.0, t=2.5)
+        >>> [round(float(x), 12) for x in a]
+        [0.3, 0.4, 0.5, 0.9, 1.0, 0.2]
+        """
+        dt = np.asarray(t, dtype=float) - np.asarray(epoch, dtype=float)
+        return free_flow(check_body(body), cls.from_andoyer(l0, g0, h, L0, G, H), dt)
+
+    def as_serret(self, body: RigidBody, t: ArrayLike = 0.0, *, epoch: ArrayLike | None = None):
+        r"""Serret's elements ``(g0, h, t0, G, H, T, sign)`` of the state taken at time ``t``.
+
+        ``(g0, h, -t0)`` are conjugate to ``(G, H, T)``, ``T`` the kinetic energy; ``t0`` is
+        the last passage at or before ``epoch`` (default ``t``) of the body momentum through the
+        reference point ``φ_ℓ = 0`` of its polhode, ``t - t0 ≡ φ_ℓ/ω_ℓ (mod P_ℓ)``, and ``g0``
+        is ``g`` at ``t0``. See :mod:`andoyer.charts.serret` for the definitions and the
+        states where the chart is undefined (``ValueError``).
+
+        Examples
+        --------
+        >>> from andoyer import FreeRotation, RigidBody, State
+        >>> body = RigidBody(1.0, 2.0, 3.0)
+        >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.9, 1.0, 0.2)
+        >>> later = FreeRotation(body).propagate(s, 7.0)
+        >>> a, b = s.as_serret(body), later.as_serret(body, t=7.0, epoch=0.0)
+        >>> bool(max(abs(x - y) for x, y in zip(a, b)) < 1e-12)
+        True
+        """
+        from andoyer.charts.andoyer import hub_to_andoyer
+        from andoyer.charts.serret import andoyer_to_serret
+
+        a = hub_to_andoyer(self._q, self._m, stacklevel=2)
+        return andoyer_to_serret(check_body(body), *a, t=t, epoch=epoch, stacklevel=3)
+
+    @classmethod
+    def from_serret(
+        cls,
+        body: RigidBody,
+        g0: ArrayLike,
+        h: ArrayLike,
+        t0: ArrayLike,
+        G: ArrayLike,
+        H: ArrayLike,
+        T: ArrayLike,
+        sign: ArrayLike = 1.0,
+        *,
+        t: ArrayLike = 0.0,
+    ) -> State:
+        """State at time ``t`` from Serret's elements; inverse of :meth:`as_serret`.
+
+        ``sign`` (``±1``) picks the orbit among the two with the same ``(G, T)``: the sign
+        of ``L`` in circulation, the lobe ``±b_e`` in libration.
+
+        Examples
+        --------
+        >>> from andoyer import RigidBody, State
+        >>> body = RigidBody(1.0, 2.0, 3.0)
+        >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.9, 1.0, 0.2)
+        >>> back = State.from_serret(body, *s.as_serret(body, t=2.0), t=2.0)
+        >>> bool(abs(back.m_body - s.m_body).max() < 1e-13)
+        True
+        """
+        from andoyer.charts.serret import serret_to_andoyer
+
+        return cls.from_andoyer(*serret_to_andoyer(check_body(body), g0, h, t0, G, H, T, sign, t))
+
+    def as_sam(self, body: RigidBody, mode: str = "SAM"):
+        """Lara's SAM (or LAM) action–angle chart ``(sam_l, sam_g, h, sam_L, sam_G, H, sign)``.
+
+        See :mod:`andoyer.charts.sam` (Lara eqs. 18–25, any axis labelling).
+
+        Examples
+        --------
+        >>> from andoyer import RigidBody, State
+        >>> body = RigidBody(1.0, 2.0, 3.0)
+        >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.99, 1.0, 0.2)
+        >>> back = State.from_sam(*s.as_sam(body), body=body)
+        >>> bool(abs(back.m_body - s.m_body).max() < 1e-13)
+        True
+        """
+        from andoyer.charts.sam import hub_to_sam
+
+        return hub_to_sam(self._q, self._m, check_body(body), mode, stacklevel=2)
+
+    @classmethod
+    def from_sam(
+        cls,
+        sam_l: ArrayLike,
+        sam_g: ArrayLike,
+        h: ArrayLike,
+        sam_L: ArrayLike,
+        sam_G: ArrayLike,
+        H: ArrayLike,
+        sign: ArrayLike = 1.0,
+        *,
+        body: RigidBody,
+        mode: str = "SAM",
+    ) -> State:
+        """State from Lara's SAM (or LAM) action–angle chart; inverse of :meth:`as_sam`."""
+        from andoyer.charts.sam import sam_to_hub
+
+        return cls(*sam_to_hub(sam_l, sam_g, h, sam_L, sam_G, H, sign, body=check_body(body), mode=mode))
+
+    # -------------------------------------------------------------- properties
 
     @property
     def quaternion(self) -> Array:

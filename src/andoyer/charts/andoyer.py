@@ -42,6 +42,7 @@ from andoyer._validation import (
 )
 from andoyer.charts import _kernels
 from andoyer.charts.euler import Euler, compiled_conversions, scalars, transverse_momentum
+from andoyer.charts.registry import Chart, register
 from andoyer.charts.singular import warn_if_singular
 
 __all__ = [
@@ -381,3 +382,30 @@ def euler_from_andoyer(
     phi = np.where(singular, np.arctan2(R[..., 0, 1], R[..., 0, 0]), np.arctan2(R[..., 2, 0], -R[..., 2, 1]))
     Theta = np.sqrt((G - L) * (G + L)) * np.sin(l - psi)
     return Euler(wrap_2pi(phi), theta, wrap_2pi(psi), H, Theta, L)
+
+
+register(
+    Chart(
+        "andoyer",
+        Andoyer._fields,
+        ("l", "g", "h"),
+        "Serret–Andoyer angles and momenta (Gurfil §3)",
+        lambda cls, v, _: cls.from_andoyer(*v),
+        lambda s, _: s.as_andoyer(),
+        source="andoyer.charts.andoyer",
+    )
+)
+# Gurfil §4.1's modified Andoyer set: the Andoyer variables at ``epoch`` of the free motion.
+register(
+    Chart(
+        "initial_andoyer",
+        ("l0", "g0", "h", "L0", "G", "H"),
+        ("l0", "g0", "h"),
+        "Andoyer variables at `epoch` of the free motion, the state taken at `t` (Gurfil §4.1)",
+        lambda cls, v, body, **o: cls.from_initial_andoyer(body, *v, **o),
+        lambda s, body, **o: s.as_initial_andoyer(body, **o),
+        needs_body=True,
+        options=("epoch", "t"),
+        source="andoyer.state",
+    )
+)

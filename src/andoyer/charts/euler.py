@@ -39,6 +39,7 @@ from andoyer._validation import (
     check_magnitude,
 )
 from andoyer.charts import _kernels
+from andoyer.charts.registry import Chart, register
 from andoyer.charts.singular import warn_if_singular
 
 __all__ = ["Euler", "euler_matrix", "euler_to_hub", "hub_to_euler", "transverse_momentum"]
@@ -253,3 +254,16 @@ def hub_to_euler(q: Array, m: Array, stacklevel: int = 2) -> Euler:
     Psi = m[..., 2].copy()
     Phi = np.where(singular, np.where(theta == 0, Psi, -Psi), m_ref[..., 2])
     return Euler(phi, theta, psi, Phi, Theta, Psi)
+
+
+register(
+    Chart(
+        "euler",
+        Euler._fields,
+        ("phi", "theta", "psi"),
+        "Euler 3-1-3 angles and their conjugate momenta (Gurfil §2)",
+        lambda cls, v, _: cls.from_euler(*v),
+        lambda s, _: s.as_euler(),
+        source="andoyer.charts.euler",
+    )
+)

@@ -51,6 +51,7 @@ from andoyer._fastmath import wrap_2pi
 from andoyer._validation import broadcast_finite, check_momenta
 from andoyer.body import RigidBody
 from andoyer.charts.andoyer import Andoyer
+from andoyer.charts.registry import Chart, register
 from andoyer.charts.sadov_frame import SadovFrame
 from andoyer.charts.sadov_orbit import angles, orbit, point
 from andoyer.charts.sadov_solve import solve
@@ -376,3 +377,17 @@ def sadov_frequencies(body: RigidBody, I_l: ArrayLike, I_g: ArrayLike) -> SadovF
         warn_if_singular(sep, f"{SEPARATRIX}: returned the limits omega_l = 0, omega_g = G/I_i", 2)
     omega_l, omega_g = _finite((omega_l, omega_g), "frequencies")
     return SadovFrequencies(np.reshape(omega_l, shape), np.reshape(omega_g, shape))
+
+
+register(
+    Chart(
+        "sadov",
+        Sadov._fields,
+        ("phi_l", "phi_g", "phi_h"),
+        "Sadov's action–angle variables of the free body (Gurfil §5)",
+        lambda cls, v, body: cls.from_sadov(body, *v),
+        lambda s, body: s.as_sadov(body),
+        needs_body=True,
+        source="andoyer.charts.sadov",
+    )
+)

@@ -49,6 +49,7 @@ from andoyer._fastmath import atan2_2pi, chunked, wrap_2pi
 from andoyer._validation import as_finite, as_vectors, broadcast, check_momenta
 from andoyer.body import RigidBody
 from andoyer.charts.andoyer import Andoyer, _hub_to_andoyer_kernel
+from andoyer.charts.registry import Chart, register
 from andoyer.charts.sam_axes import SAMAxes, andoyer_parameters, sam_axes
 from andoyer.charts.singular import warn_if_singular
 
@@ -383,3 +384,18 @@ def sam_energy(
     x = L / G
     s = np.sqrt((1 - beta) * (1 + beta))
     return G * G / (2 * I3) * (1 + alpha * x * (2 * s - x * (1 + beta * np.cos(2 * ell))))
+
+
+register(
+    Chart(
+        "sam",
+        SAM._fields,
+        ("sam_l", "sam_g", "h"),
+        "Lara's SAM (or LAM, `mode`) action–angle chart (Lara eqs. 18–25)",
+        lambda cls, v, body, **o: cls.from_sam(*v, body=body, **o),
+        lambda s, body, **o: s.as_sam(body, **o),
+        needs_body=True,
+        options=("mode",),
+        source="andoyer.charts.sam",
+    )
+)

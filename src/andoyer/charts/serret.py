@@ -71,6 +71,7 @@ from andoyer._fastmath import wrap_2pi
 from andoyer._validation import broadcast_finite, check_momenta
 from andoyer.body import RigidBody
 from andoyer.charts.andoyer import Andoyer
+from andoyer.charts.registry import Chart, register
 from andoyer.charts.sadov_frame import SadovFrame
 from andoyer.charts.sadov_orbit import Orbit, angles, orbit, point
 from andoyer.charts.singular import SingularChartWarning
@@ -332,3 +333,19 @@ def serret_to_andoyer(
         (wrap_2pi(l), wrap_2pi(g), wrap_2pi(np.ravel(h)), G * x, G, np.ravel(H)), "Andoyer variables"
     )
     return Andoyer(*(np.reshape(a, shape) for a in out))
+
+
+# On the command line Serret's t0 is measured from each row's own instant (the state at t = 0).
+register(
+    Chart(
+        "serret",
+        Serret._fields,
+        ("g0", "h"),
+        "Serret's elements, `(g0, h, -t0)` conjugate to `(G, H, T)`, of the state at `t`",
+        lambda cls, v, body, **o: cls.from_serret(body, *v, **o),
+        lambda s, body, **o: s.as_serret(body, **o),
+        needs_body=True,
+        options=("t", "epoch"),
+        source="andoyer.charts.serret",
+    )
+)

@@ -10,6 +10,7 @@ import numpy as np
 
 from andoyer import bodies
 from andoyer.body import RigidBody
+from andoyer.charts.registry import Chart, charts
 from andoyer.cli.output import CliError, read_csv_columns
 from andoyer.state import State
 
@@ -25,41 +26,23 @@ class ChartColumns:
     needs_body: bool = False
 
 
-CHARTS: dict[str, ChartColumns] = {
-    "state": ChartColumns(
-        ("qx", "qy", "qz", "qw", "m1", "m2", "m3"),
-        (),
-        lambda v, _: State.from_quaternion(np.stack(v[:4], -1), np.stack(v[4:], -1)),
-        lambda s, _: (*np.moveaxis(s.quaternion, -1, 0), *np.moveaxis(s.m_body, -1, 0)),
-    ),
-    "euler": ChartColumns(
-        ("phi", "theta", "psi", "Phi", "Theta", "Psi"),
-        ("phi", "theta", "psi"),
-        lambda v, _: State.from_euler(*v),
-        lambda s, _: tuple(s.as_euler()),
-    ),
-    "andoyer": ChartColumns(
-        ("l", "g", "h", "L", "G", "H"),
-        ("l", "g", "h"),
-        lambda v, _: State.from_andoyer(*v),
-        lambda s, _: tuple(s.as_andoyer()),
-    ),
-    "sadov": ChartColumns(
-        ("phi_l", "phi_g", "phi_h", "I_l", "I_g", "I_h"),
-        ("phi_l", "phi_g", "phi_h"),
-        lambda v, body: State.from_sadov(body, *v),
-        lambda s, body: tuple(s.as_sadov(body)),
-        needs_body=True,
-    ),
-    # Serret's t0 is measured from each row's own instant (the state is taken at t = 0).
-    "serret": ChartColumns(
-        ("g0", "h", "t0", "G", "H", "T", "sign"),
-        ("g0", "h"),
-        lambda v, body: State.from_serret(body, *v),
-        lambda s, body: tuple(s.as_serret(body)),
-        needs_body=True,
-    ),
-}
+# The charts the command line offers, in the order of its help; their signatures come from the
+# registry (andoyer.charts.registry), written once in each chart's module.
+CLI_CHARTS = ("state", "euler", "andoyer", "sadov", "serret")
+
+
+def _columns(chart: Chart) -> ChartColumns:
+    """The command line's view of a registered chart (its options left at their defaults)."""
+    return ChartColumns(
+        chart.columns,
+        chart.angles,
+        lambda v, body: chart.to_state(State, v, body),
+        lambda s, body: tuple(chart.from_state(s, body)),
+        needs_body=chart.needs_body,
+    )
+
+
+CHARTS: dict[str, ChartColumns] = {name: _columns(charts()[name]) for name in CLI_CHARTS}
 
 
 def add_body_arguments(parser: argparse.ArgumentParser) -> None:
