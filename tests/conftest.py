@@ -81,7 +81,7 @@ def documented_andoyer_samples(seed, index, n, G=(1.0, 1.0), cos_J=(-1.0, 1.0), 
     return State.from_andoyer(l, g, h, L, Gs, H)
 
 
-# --- command-line outputs (tests/test_cli_*.py) ---
+# --- command-line outputs (tests/cli/test_cli_*.py) ---
 
 
 def _make_device(path) -> None:

@@ -15,7 +15,7 @@ from andoyer.cli import build_parser, main, output
 
 STATE = ["0.1", "0.2", "0.3", "0.9", "1.0", "0.5"]
 CONVERT = ["convert", "--from", "andoyer", "--to", "euler", "--values", *STATE]
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def run(capsys, argv):

@@ -14,7 +14,7 @@ import pytest
 
 from andoyer.cli import main
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 #: Commands too slow for the default run (a local Dask cluster of worker processes).
 SLOW = ("ensemble",)

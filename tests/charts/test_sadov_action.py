@@ -4,17 +4,6 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-
-from andoyer import RigidBody
-from andoyer.charts.sadov import (
-    andoyer_to_sadov,
-    sadov_frequencies,
-    sadov_hamiltonian,
-    separatrix_action,
-)
-from andoyer.charts.sadov_frame import SadovFrame
-from andoyer.charts.sadov_solve import solve
-from andoyer.hamiltonians import andoyer_hamiltonian
 from test_sadov_support import (
     BODIES,
     CASES,
@@ -27,6 +16,17 @@ from test_sadov_support import (
     scaled,
     separatrix_distance,
 )
+
+from andoyer import RigidBody
+from andoyer.charts.sadov import (
+    andoyer_to_sadov,
+    sadov_frequencies,
+    sadov_hamiltonian,
+    separatrix_action,
+)
+from andoyer.charts.sadov_frame import SadovFrame
+from andoyer.charts.sadov_solve import solve
+from andoyer.hamiltonians import andoyer_hamiltonian
 
 EPS = np.finfo(float).eps
 

@@ -8,7 +8,7 @@ way to the error) fails the case. ``test_every_public_name_is_in_the_table_or_ex
 ``andoyer.__all__``, the ``__all__`` of the subpackages it lists and of ``andoyer.precession``,
 ``andoyer.cassini``, ``andoyer.nutation`` and ``andoyer.spin_axis``:
 a new public function must add its bad inputs here, or say in ``EXEMPT`` why it has none.
-The command line's half is ``tests/test_cli_bad_input.py``.
+The command line's half is ``tests/cli/test_cli_bad_input.py``.
 """
 
 from __future__ import annotations
@@ -409,12 +409,12 @@ EXEMPT = {
     "TabulatedOrbit": "wraps a user function",
     "UserPotential": "wraps a user function",
     "UserTorque": "wraps a user function",
-    # planetary/analytic tops built from a few scalars, checked by tests/test_heavy_tops.py
-    "kovalevskaya_top": "tests/test_heavy_tops.py",
-    "lagrange_top": "tests/test_heavy_tops.py",
-    "kovalevskaya_integral": "tests/test_heavy_tops.py",
-    "kovalevskaya_integral_e3": "tests/test_heavy_tops.py",
-    "andoyer_perturbed_equations": "tests/test_perturbations.py",
+    # planetary/analytic tops built from a few scalars, checked by tests/integrate/test_heavy_tops.py
+    "kovalevskaya_top": "tests/integrate/test_heavy_tops.py",
+    "lagrange_top": "tests/integrate/test_heavy_tops.py",
+    "kovalevskaya_integral": "tests/integrate/test_heavy_tops.py",
+    "kovalevskaya_integral_e3": "tests/integrate/test_heavy_tops.py",
+    "andoyer_perturbed_equations": "tests/perturbations/test_perturbations.py",
     # the Lie–Poisson layer: symbolic brackets and tables, checked by tests/liepoisson
     "liepoisson": "the whole subpackage: symbolic algebra, validated by tests/liepoisson",
 }

@@ -13,11 +13,6 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from scipy import special as sc
-
-from andoyer import FreeRotation, RigidBody, State, bodies
-from andoyer.charts import Serret, SingularChartWarning, andoyer_to_serret, serret_to_andoyer
-from andoyer.charts.sadov import andoyer_to_sadov, sadov_frequencies
-from conftest import rotation_distance
 from test_sadov_support import (
     BODIES,
     CASES,
@@ -27,6 +22,11 @@ from test_sadov_support import (
     sample,
     separatrix_distance,
 )
+
+from andoyer import FreeRotation, RigidBody, State, bodies
+from andoyer.charts import Serret, SingularChartWarning, andoyer_to_serret, serret_to_andoyer
+from andoyer.charts.sadov import andoyer_to_sadov, sadov_frequencies
+from conftest import rotation_distance
 
 EPS = np.finfo(float).eps
 J6 = np.block([[np.zeros((3, 3)), np.eye(3)], [-np.eye(3), np.zeros((3, 3))]])

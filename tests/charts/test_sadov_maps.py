@@ -8,6 +8,16 @@ import numpy as np
 import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
+from test_sadov_support import (
+    BODIES,
+    CASES,
+    SCALES,
+    circle,
+    inverse_moments,
+    sample,
+    scaled,
+    separatrix_distance,
+)
 
 from andoyer import RigidBody, State
 from andoyer.charts import Andoyer, SingularChartWarning
@@ -20,16 +30,6 @@ from andoyer.charts.sadov import (
     separatrix_action,
 )
 from conftest import random_states, rotation_distance
-from test_sadov_support import (
-    BODIES,
-    CASES,
-    SCALES,
-    circle,
-    inverse_moments,
-    sample,
-    scaled,
-    separatrix_distance,
-)
 
 J6 = np.block([[np.zeros((3, 3)), np.eye(3)], [-np.eye(3), np.zeros((3, 3))]])
 ROUND_TRIP = 1e-13

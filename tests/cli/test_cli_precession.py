@@ -106,7 +106,7 @@ def test_cli_precession_bad_arguments_no_traceback_in_a_process():
         capture_output=True,
         text=True,
         check=False,
-        env={**os.environ, "PYTHONPATH": str(Path(__file__).resolve().parents[1] / "src")},
+        env={**os.environ, "PYTHONPATH": str(Path(__file__).resolve().parents[2] / "src")},
     )
     assert proc.returncode == 2
     assert "Traceback" not in proc.stderr

@@ -11,9 +11,6 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
-
-from andoyer.charts.sadov import andoyer_to_sadov, sadov_frequencies
-from andoyer.equations import andoyer_equations
 from test_sadov_support import (
     BODIES,
     CASES,
@@ -25,6 +22,9 @@ from test_sadov_support import (
     scaled,
     separatrix_distance,
 )
+
+from andoyer.charts.sadov import andoyer_to_sadov, sadov_frequencies
+from andoyer.equations import andoyer_equations
 
 
 def integrate(body, y0, t_end, n_out=200, events=None, tol=1e-12):
