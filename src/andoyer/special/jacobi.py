@@ -5,7 +5,7 @@ Conventions (DLMF §22.2, parameter ``m = k²``): ``φ = am(u|m)`` inverts ``u =
 
 scipy's ``ellipj`` (Cephes' descending Landen / AGM) loses accuracy for large ``|u|`` and
 for ``m`` near 1, where it only sees the rounded ``m`` (measured in
-``tests/special/test_jacobi.py`` and ``docs/errata-free.md``).  Here:
+``tests/special/test_special_jacobi.py`` and ``docs/errata-free.md``).  Here:
 
 1. ``u`` is reduced exactly modulo ``2K`` with ``K`` in double-double,
    ``u = 2jK + r``, ``|r| ≤ K``, using ``sn(u) = (−1)^j sn(r)``, ``cn(u) = (−1)^j cn(r)``,

@@ -14,7 +14,7 @@ from andoyer import RigidBody, State
 from andoyer.charts.registry import Chart, charts, charts_markdown
 from andoyer.cli import chart_table
 
-DOCS = Path(__file__).resolve().parents[1] / "docs" / "charts.md"
+DOCS = Path(__file__).resolve().parents[2] / "docs" / "charts.md"
 BODY = RigidBody(1.0, 2.0, 3.0)
 NAMES = tuple(charts())
 METHOD_CHARTS = tuple(name for name, chart in charts().items() if chart.method)
