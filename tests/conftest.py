@@ -101,3 +101,22 @@ def _make_device(path) -> None:
 def make_device():
     """The function that makes a character device at a path (see :func:`_make_device`)."""
     return _make_device
+
+
+# --- the command line, in process ---
+
+
+@pytest.fixture
+def run_cli(capsys):
+    """Run ``andoyer ARGV`` in this process: ``run_cli(*argv) -> (exit code, stdout, stderr)``."""
+    from andoyer.cli import main
+
+    def run(*argv):
+        try:
+            code = main(list(argv))
+        except SystemExit as exc:  # argparse's own errors exit from parse_args
+            code = exc.code
+        out, err = capsys.readouterr()
+        return code, out, err
+
+    return run

@@ -13,6 +13,7 @@ quadrature; the Moon and Mercury against their published obliquities.
 
 from __future__ import annotations
 
+import functools
 import json
 import math
 import os
@@ -29,7 +30,6 @@ from scipy.spatial.transform import Rotation
 
 from andoyer import RigidBody, State, cassini, propagate
 from andoyer.cassini import ARCSEC, CassiniBody, ColomboTop, eccentricity_function
-from andoyer.cli import main
 from andoyer.integrate.secular import propagate_momentum
 from andoyer.perturbations import GravityGradient, KeplerOrbit, Model, PointMass, PrecessingFrame
 from andoyer.perturbations.secular import SecularGravityGradient
@@ -581,16 +581,9 @@ def test_get_unknown_body():
 
 
 @pytest.fixture
-def cli(capsys):
-    def run(*argv):
-        try:
-            code = main(["cassini", *argv])
-        except SystemExit as exc:
-            code = exc.code
-        out, err = capsys.readouterr()
-        return code, out, err
-
-    return run
+def cli(run_cli):
+    """``andoyer cassini ARGV`` in process: (exit code, stdout, stderr)."""
+    return functools.partial(run_cli, "cassini")
 
 
 @pytest.mark.parametrize(("body", "numbers"), [("moon", [2, 3]), ("mercury", [1, 2, 3, 4])])

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import json
 import os
 import subprocess
@@ -10,24 +11,13 @@ from pathlib import Path
 
 import pytest
 
-from andoyer.cli import main
-
 BANDS = {"earth": (50.0, 50.8), "mars": (7.4, 7.8)}
 
 
 @pytest.fixture
-def cli(capsys):
-    """Run ``andoyer precession ARGS`` in process: (exit code, stdout, stderr)."""
-
-    def run(*argv):
-        try:
-            code = main(["precession", *argv])
-        except SystemExit as exc:  # argparse errors exit through the parser
-            code = exc.code
-        out, err = capsys.readouterr()
-        return code, out, err
-
-    return run
+def cli(run_cli):
+    """``andoyer precession ARGV`` in process: (exit code, stdout, stderr)."""
+    return functools.partial(run_cli, "precession")
 
 
 @pytest.mark.parametrize("body", list(BANDS))

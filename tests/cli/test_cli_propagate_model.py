@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 import pytest
 
 from andoyer import RigidBody, State
-from andoyer.cli import main
 from andoyer.perturbations.solar_system import JULIAN_YEAR, OBLIQUITY
 from conftest import rotation_distance
 
@@ -15,18 +16,9 @@ HEAVY_TOP = ("--model", "heavy-top", "--weight", "0.5", "--center-of-mass", "0",
 
 
 @pytest.fixture
-def cli(capsys):
-    """Run ``andoyer propagate ARGS`` in process: (exit code, stdout, stderr)."""
-
-    def run(*argv):
-        try:
-            code = main(["propagate", *argv])
-        except SystemExit as exc:
-            code = exc.code
-        out, err = capsys.readouterr()
-        return code, out, err
-
-    return run
+def cli(run_cli):
+    """``andoyer propagate ARGV`` in process: (exit code, stdout, stderr)."""
+    return functools.partial(run_cli, "propagate")
 
 
 @pytest.fixture

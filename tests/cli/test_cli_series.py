@@ -8,7 +8,6 @@ from fractions import Fraction
 
 import pytest
 
-import andoyer.cli
 from andoyer.theories import sam_theory
 from andoyer.theories.sam_tables import tables_from_json
 
@@ -16,18 +15,9 @@ RATIONAL = re.compile(r"-?\d+/[1-9]\d*")
 
 
 @pytest.fixture
-def cli(capsys):
-    """Run ``andoyer`` and return its exit code, standard output and standard error."""
-
-    def run(*argv):
-        try:
-            code = andoyer.cli.main(list(argv))
-        except SystemExit as exc:  # argparse's own errors exit from parse_args
-            code = exc.code
-        out, err = capsys.readouterr()
-        return code, out, err
-
-    return run
+def cli(run_cli):
+    """``andoyer ARGV`` in process: (exit code, stdout, stderr)."""
+    return run_cli
 
 
 def test_cli_series_sam_json_schema(cli):

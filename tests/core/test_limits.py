@@ -29,7 +29,6 @@ from andoyer._limits import (
     show_progress,
     spin_rate,
 )
-from andoyer.cli import main
 from andoyer.free import FreeMotion
 from andoyer.perturbations import HeavyTop, Model, PrecessingFrame
 from andoyer.perturbations.solar_system import DAY, JULIAN_YEAR
@@ -43,18 +42,9 @@ TOP = Model(RigidBody(1.0, 1.2, 1.5), HeavyTop(0.5, [0.0, 0.1, 0.3]))
 
 
 @pytest.fixture
-def cli(capsys):
-    """Run ``andoyer ARGS`` in process: (exit code, stdout, stderr)."""
-
-    def run(*argv):
-        try:
-            code = main(list(argv))
-        except SystemExit as exc:
-            code = exc.code
-        out, err = capsys.readouterr()
-        return code, out, err
-
-    return run
+def cli(run_cli):
+    """``andoyer ARGV`` in process: (exit code, stdout, stderr)."""
+    return run_cli
 
 
 # -- the phase rule ----------------------------------------------------------------------------
