@@ -21,7 +21,7 @@ if os.environ.get("ANDOYER_NUMBA", "1") == "0":  # pragma: no cover - depends on
 #: Whether the kernels decorated with :func:`jit` are compiled.
 NUMBA = _numba is not None
 
-__all__ = ["NUMBA", "jit", "jitable"]
+__all__ = ["NUMBA", "every", "jit", "jitable", "select"]
 
 
 def jit(function=None, *, inline=False):
@@ -71,3 +71,81 @@ def jitable(function):
     from numba.extending import register_jitable
 
     return register_jitable(function)
+
+
+def select(condition, if_true, if_false):
+    """``if_true`` where ``condition`` holds, else ``if_false``: the one branch of a kernel written once.
+
+    A scalar kernel that must also run on whole arrays (the numpy path) chooses with this
+    function instead of ``if``: called from Python it is :func:`numpy.where` (element-wise
+    on arrays, a numpy scalar on scalars); inside a kernel compiled by :func:`jit` numba
+    replaces it by the conditional expression ``if_true if condition else if_false``.
+    Both operands are evaluated, so each must be finite-safe on its own (guard a division
+    by selecting a safe denominator first).
+
+    Parameters
+    ----------
+    condition : bool or ndarray of bool, shape (...)
+        Where to take ``if_true``.
+    if_true, if_false : float or ndarray, shape (...)
+        The two candidates, broadcast with ``condition``.
+
+    Returns
+    -------
+    float or ndarray, shape (...)
+        The chosen values.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> select(np.array([True, False]), 1.0, np.array([2.0, 3.0])).tolist()
+    [1.0, 3.0]
+    >>> float(select(0.0 > 1.0, 1.0, 2.0))
+    2.0
+    """
+    import numpy as np
+
+    return np.where(condition, if_true, if_false)
+
+
+def every(condition):
+    """Whether ``condition`` holds everywhere: the stopping test of a kernel's loop written once.
+
+    Called from Python it is :func:`numpy.all` (a loop over a whole array stops when every
+    element has converged); inside a kernel compiled by :func:`jit` it is the condition
+    itself.
+
+    Parameters
+    ----------
+    condition : bool or ndarray of bool, shape (...)
+        The per-element test.
+
+    Returns
+    -------
+    bool
+        True where every element holds.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> every(np.array([True, False])), every(True)
+    (False, True)
+    """
+    import numpy as np
+
+    return bool(np.all(condition))
+
+
+if _numba is not None:
+    from numba.extending import overload
+
+    @overload(select, inline="always")
+    def _select_compiled(condition, if_true, if_false):  # noqa: ARG001 - numba's overload signature
+        def conditional(condition, if_true, if_false):
+            return if_true if condition else if_false
+
+        return conditional
+
+    @overload(every, inline="always")
+    def _every_compiled(condition):  # noqa: ARG001 - numba's overload signature
+        return lambda condition: condition
