@@ -8,7 +8,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from andoyer.special.agm import agm_dd, ellipk_dd, ellippi_dd
+from andoyer.special.agm import agm_dd, ellipk_dd, ellippi_dd, ellippi_k_dd
 from andoyer.special.compensated import (
     PI_DD,
     dd_add,
@@ -119,3 +119,61 @@ def test_agm_of_zero_is_zero():
     hi, lo = agm_dd(1.0, 0.0, 0.0, 0.0)
     assert hi == 0
     assert lo == 0
+
+
+def _dd_kernel_loop():
+    from andoyer._jit import jit
+
+    @jit
+    def loop(ah, al, bh, bl, out):
+        for i in range(ah.shape[0]):
+            out[i, 0], out[i, 1] = dd_add(ah[i], al[i], bh[i], bl[i])
+            out[i, 2], out[i, 3] = dd_mul(ah[i], al[i], bh[i], bl[i])
+            out[i, 4], out[i, 5] = dd_div(ah[i], al[i], bh[i], bl[i])
+            out[i, 6], out[i, 7] = dd_sqrt(abs(ah[i]), abs(ah[i]) * 1e-17)
+            out[i, 8], out[i, 9] = two_prod(ah[i], bh[i])
+            n, mc = -abs(al[i]) * 1e16, abs(bh[i]) / 10.0
+            out[i, 10], out[i, 11], out[i, 12], out[i, 13] = ellippi_k_dd(n, 0.0, mc, 0.0)
+
+    return loop
+
+
+def test_dd_kernels_per_element_equal_array_evaluation_bit_for_bit():
+    """One text, two paths: per element (compiled when numba is) and over whole numpy arrays."""
+    rng = np.random.default_rng(11)
+    n = 500
+    ah = rng.uniform(-10.0, 10.0, n)
+    al = ah * rng.uniform(-1e-17, 1e-17, n)
+    bh = rng.uniform(0.1, 10.0, n)
+    bl = bh * rng.uniform(-1e-17, 1e-17, n)
+    out = np.empty((n, 14))
+    _dd_kernel_loop()(ah, al, bh, bl, out)
+    expected = [
+        *dd_add(ah, al, bh, bl),
+        *dd_mul(ah, al, bh, bl),
+        *dd_div(ah, al, bh, bl),
+        *dd_sqrt(np.abs(ah), np.abs(ah) * 1e-17),
+        *two_prod(ah, bh),
+        *ellippi_k_dd(-np.abs(al) * 1e16, 0.0, bh / 10.0, 0.0),
+    ]
+    np.testing.assert_array_equal(out, np.stack(expected, axis=-1))
+
+
+def test_dd_operations_defined_once():
+    """No module other than special.compensated / special.agm defines a double-double operation."""
+    import ast
+    import pathlib
+
+    import andoyer
+
+    names = {"two_sum", "fast_two_sum", "_fast_two_sum", "two_prod", "split", "dd_add", "dd_mul", "dd_div"}
+    names |= {"dd_sqrt", "agm_dd", "ellipk_dd", "ellippi_dd", "ellippi_k_dd", "product_error"}
+    root = pathlib.Path(andoyer.__file__).parent
+    owners = {}
+    for path in root.rglob("*.py"):
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, ast.FunctionDef) and node.name in names:
+                owners.setdefault(node.name, set()).add(path.relative_to(root).as_posix())
+    allowed = {"special/compensated.py", "special/agm.py"}
+    assert {name: paths for name, paths in owners.items() if not paths <= allowed} == {}
+    assert all(len(paths) == 1 for paths in owners.values()), owners

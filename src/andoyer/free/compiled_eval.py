@@ -18,7 +18,7 @@ import numpy as np
 
 from andoyer._jit import jit
 from andoyer.free.phase import _COS, _SIN
-from andoyer.free.scalar_dd import two_prod
+from andoyer.special.compensated import two_prod
 
 __all__ = ["evaluate", "fill"]
 

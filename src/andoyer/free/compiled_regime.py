@@ -3,7 +3,7 @@
 :func:`andoyer.free.regime.classify` and :func:`andoyer.free.regime.normalise` for
 validated inputs, per state in a numba kernel: the same exponents, the same scaled
 values and the same regimes (the sign of ``P₂ = G²/B − D`` from the same error-free
-products and double-double sums, :mod:`andoyer.free.scalar_dd`, so the decision is the
+products and double-double sums, :mod:`andoyer.special.compensated`, so the decision is the
 same bit for bit).  :class:`andoyer.free.FreeMotion` uses it when numba is installed.
 """
 
@@ -15,7 +15,7 @@ import numpy as np
 
 from andoyer._jit import jit
 from andoyer.free.regime import Regime
-from andoyer.free.scalar_dd import dd_add, dd_mul, two_prod, two_sum
+from andoyer.special.compensated import dd_add, dd_mul, two_prod, two_sum
 
 __all__ = ["classify_and_scale"]
 

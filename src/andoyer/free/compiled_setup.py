@@ -4,7 +4,7 @@
 a few hundred passes over the arrays, most of them double-double arithmetic (the working
 frame and invariants of :func:`andoyer.free.regime.polhode_frame`, ``K`` and ``Π`` by the
 AGM, the frequencies), 6–10 µs a body.  Here the same formulas in the same double-double
-arithmetic (:mod:`andoyer.free.scalar_dd`: error-free products by fused multiply-add,
+arithmetic (:mod:`andoyer.special.compensated`: error-free products by fused multiply-add,
 one-correction division) run per body in a numba kernel, about 1 µs a body: ``K`` is
 taken from the AGM sequence of ``Π`` (the same sequence), ``K'`` from the nome, the ``ψ``
 offset from the series at ``τ₀`` directly, and without an attitude the quantities only
@@ -25,18 +25,9 @@ from andoyer._jit import jit
 from andoyer.free.compiled_eval import _count
 from andoyer.free.kernels.elliptic import carlson_rf
 from andoyer.free.phase import Frequency
-from andoyer.free.scalar_dd import (
-    dd_add,
-    dd_div,
-    dd_mul,
-    dd_sqrt,
-    ellipk_dd,
-    ellippi_dd,
-    split,
-    two_prod,
-    two_sum,
-)
 from andoyer.free.triaxial import Triaxial
+from andoyer.special.agm import ellipk_dd, ellippi_k_dd
+from andoyer.special.compensated import dd_add, dd_div, dd_mul, dd_sqrt, split, two_prod, two_sum
 
 __all__ = ["as_triaxial", "triaxial_table"]
 
@@ -180,7 +171,7 @@ def _body(Ib, mb, lam, q0, out, i, full):
     mch, mcl = dd_div(*dd_mul(e13h, e13l, P2h, P2l), dnh, dnl)
     if full:  # Π(−κ²|m) for the secular rate of ψ, and K from the same AGM
         k2h, k2l = dd_div(e12h, e12l, e23h, e23l)
-        p3h, p3l, Kh, Kl = ellippi_dd(-k2h, -k2l, mch, mcl)
+        p3h, p3l, Kh, Kl = ellippi_k_dd(-k2h, -k2l, mch, mcl)
     else:  # the momentum needs K only
         p3h = p3l = 0.0
         Kh, Kl = ellipk_dd(mch, mcl)

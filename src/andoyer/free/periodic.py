@@ -41,7 +41,7 @@ from andoyer.free.compiled_eval import _sincos
 from andoyer.free.compiled_setup import as_triaxial
 from andoyer.free.kernels.piecewise import DEGREE, horner, locate
 from andoyer.free.phase import cycles, frequency, sincos_cycles
-from andoyer.free.scalar_dd import two_prod
+from andoyer.special.compensated import two_prod
 
 __all__ = ["DEGREE", "MAX_PIECES", "Periodic", "build", "evaluate", "fill", "fill_numpy"]
 
