@@ -9,14 +9,13 @@ import io
 import os
 import stat
 import sys
-import tempfile
 from collections.abc import Iterator, Sequence
 from pathlib import Path
 from typing import IO
 
 import numpy as np
 
-from andoyer._files import new_file_mode
+from andoyer._files import atomic_replace
 
 __all__ = [
     "CliError",
@@ -205,29 +204,17 @@ def atomic_output(path: str | os.PathLike[str] | None, binary: bool = False) -> 
         buffer.flush()
         return
     target = output_target(path)
+    how = {"mode": "wb"} if binary else {"mode": "w", "newline": ""}
     try:
-        mode = stat.S_IMODE(os.stat(target).st_mode)
-    except FileNotFoundError:
-        mode = new_file_mode()
-    try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".part", dir=target.parent)
-    except OSError as exc:
-        msg = f"expected a writable place for the output, got {os.fspath(path)!r} ({exc.strerror})"
-        raise CliError(msg) from exc
-    try:
-        with os.fdopen(fd, "wb") if binary else os.fdopen(fd, "w", newline="") as stream:
+        with atomic_replace(target) as part, open(part, **how) as stream:
             yield stream
             stream.flush()
             os.fsync(stream.fileno())
-        os.chmod(tmp, mode)
-        os.replace(tmp, target)
-    except BaseException as exc:
-        with contextlib.suppress(OSError):
-            os.unlink(tmp)
-        if isinstance(exc, OSError) and not isinstance(exc, BrokenPipeError):
-            msg = f"expected a writable place for the output, got {os.fspath(path)!r} ({exc.strerror})"
-            raise CliError(msg) from exc
-        raise
+    except OSError as exc:
+        if isinstance(exc, BrokenPipeError):
+            raise
+        msg = f"expected a writable place for the output, got {os.fspath(path)!r} ({exc.strerror})"
+        raise CliError(msg) from exc
 
 
 def read_csv_columns(path: str, columns: Sequence[str]) -> dict[str, np.ndarray]:

@@ -26,14 +26,13 @@ import json
 import os
 import shutil
 import stat
-import tempfile
 import uuid
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from andoyer._files import new_file_mode
+from andoyer._files import atomic_replace
 from andoyer.ensemble.layout import LEDGER, Arrays, EnsembleSpec, compute_chunk, variable_dims
 from andoyer.ensemble.ledger import (
     DIGEST_SIZE,
@@ -313,14 +312,7 @@ def finalize_netcdf(parts: Path, path: Path) -> None:
     data = data[sorted(data.data_vars)]
     data.attrs.pop(FINISHED, None)
     data.attrs[DIGESTS_ATTR] = digests
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".part", dir=path.parent)
-    os.close(fd)
-    try:
+    with atomic_replace(path) as part:
         # NetCDF3 with 64-bit offsets (scipy engine): variables beyond 2 GiB are allowed.
-        data.to_netcdf(tmp, engine="scipy", format="NETCDF3_64BIT")
-        os.chmod(tmp, new_file_mode())  # mkstemp made it 0600: give it the umask's mode
-        os.replace(tmp, path)
-    finally:
-        with contextlib.suppress(OSError):
-            os.unlink(tmp)
+        data.to_netcdf(part, engine="scipy", format="NETCDF3_64BIT")
     shutil.rmtree(parts)

@@ -63,7 +63,7 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from andoyer.orbits._files import atomic_write_bytes
+from andoyer._files import atomic_write_bytes
 from andoyer.orbits.elements import state_to_vectors
 from andoyer.orbits.planets import PLANETS, check_planet, planet_data
 from andoyer.orbits.protocol import check_times

@@ -33,8 +33,8 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from andoyer._files import atomic_write_bytes
 from andoyer._validation import as_vectors
-from andoyer.orbits._files import atomic_write_bytes
 from andoyer.orbits.elements import eccentricity_from_elements, normal_from_elements
 from andoyer.orbits.protocol import OrbitHistory, check_times
 
