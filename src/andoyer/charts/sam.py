@@ -404,7 +404,7 @@ def _as_sam(self, body: RigidBody, mode: str = "SAM"):
     body : RigidBody
         The body.
     mode : {"SAM", "LAM"}
-        The chart: about the smallest or the largest axis of inertia.
+        The chart about the body's axis of maximum inertia (SAM) or of minimum inertia (LAM).
 
     Returns
     -------
@@ -436,7 +436,34 @@ def _from_sam(
     body: RigidBody,
     mode: str = "SAM",
 ) -> State:
-    """State from Lara's SAM (or LAM) action–angle chart; inverse of :meth:`as_sam`."""
+    """State from Lara's SAM (or LAM) action–angle chart; inverse of :meth:`as_sam`.
+
+    Parameters
+    ----------
+    sam_l, sam_g, h : array_like, shape (...)
+        The angles in radians.
+    sam_L, sam_G, H : array_like, shape (...)
+        The actions.
+    sign : array_like, shape (...)
+        ``±1``, as :meth:`as_sam` records it.
+    body : RigidBody
+        The body.
+    mode : {"SAM", "LAM"}
+        The chart about the body's axis of maximum inertia (SAM) or of minimum inertia (LAM).
+
+    Returns
+    -------
+    State, shape (...)
+        The states (the broadcast shape of the coordinates).
+
+    Examples
+    --------
+    >>> from andoyer import RigidBody, State
+    >>> body = RigidBody(1.0, 2.0, 3.0)
+    >>> s = State.from_sam(0.3, 0.4, 0.5, 0.9, 1.0, 0.2, body=body, mode="LAM")
+    >>> [round(float(x), 12) for x in s.as_sam(body, mode="LAM")]
+    [0.3, 0.4, 0.5, 0.9, 1.0, 0.2, 1.0]
+    """
     return cls(*sam_to_hub(sam_l, sam_g, h, sam_L, sam_G, H, sign, body=check_body(body), mode=mode))
 
 register(
