@@ -10,12 +10,20 @@ from typing import Any, NamedTuple
 
 import numpy as np
 import pytest
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 
 from andoyer import RigidBody, State
 from andoyer.charts import registry
+from andoyer.charts.andoyer import Andoyer, hub_to_andoyer
+from andoyer.charts.euler import hub_to_euler
 from andoyer.charts.registry import Chart, charts, charts_markdown, install
+from andoyer.charts.sadov import andoyer_to_sadov
+from andoyer.charts.sam import hub_to_sam
+from andoyer.charts.serret import andoyer_to_serret
 from andoyer.cli import chart_table
+from andoyer.free.motion import FreeMotion
 from conftest import rotation_distance
 
 DOCS = Path(__file__).resolve().parents[2] / "docs" / "charts.md"
@@ -295,3 +303,112 @@ def test_registered_chart_yields_state_methods(scratch_registry):
 def test_scratch_registry_left_nothing():
     assert "rotvec" not in charts()
     assert not hasattr(State, "from_rotvec")
+
+
+# ------------------------------------------------- the generated methods: round trips and values
+
+@st.composite
+def regular_states(draw):
+    """One state of BODY away from every chart's singular set.
+
+    A random attitude and a momentum of magnitude G in [0.1, 10] whose direction keeps 2% in
+    ``2T/G²`` from BODY's separatrix (1/2) and stays 0.99 G off each body axis (Andoyer's
+    ``sin J = 0``, SAM's and LAM's poles), off the reference axis (``sin I = 0``) and with the
+    body axis 3 off the reference axis (Euler's ``sin θ = 0``).
+    """
+    rotvec = np.array(draw(st.tuples(*[st.floats(-3.0, 3.0)] * 3)))
+    theta = draw(st.floats(0.0, np.pi))
+    phi = draw(st.floats(0.0, 2 * np.pi))
+    G = draw(st.floats(0.1, 10.0))
+    u = np.array([np.sin(theta) * np.cos(phi), np.sin(theta) * np.sin(phi), np.cos(theta)])
+    attitude = Rotation.from_rotvec(rotvec)
+    assume(abs(float(u @ (u / BODY.moments)) - 0.5) > 0.01)
+    assume(np.abs(u).max() < 0.99)
+    assume(abs(attitude.apply(u)[2]) < 0.99)
+    assume(abs(attitude.as_matrix()[2, 2]) < 0.99)
+    return State.from_attitude(attitude, G * u)
+
+
+def _options(name, data):
+    """Options of chart ``name`` drawn away from their defaults."""
+    times = st.floats(-5.0, 5.0)
+    if name == "initial_andoyer":
+        return {"epoch": data.draw(times), "t": data.draw(times)}
+    if name == "serret":
+        return {"t": data.draw(times)}
+    if name == "sam":
+        return {"mode": data.draw(st.sampled_from(["SAM", "LAM"]))}
+    return {}
+
+
+def _call_options(name, options, data):
+    """The options split as each method takes them (as_serret also takes an epoch for t0)."""
+    build, read = dict(options), dict(options)
+    if name == "serret":
+        read["epoch"] = options["t"] - data.draw(st.floats(0.0, 5.0))
+    return build, read
+
+
+@pytest.mark.parametrize("name", METHOD_CHARTS)
+@settings(max_examples=20)
+@given(s=regular_states(), data=st.data())
+def test_state_chart_methods_round_trip(name, s, data):
+    chart = charts()[name]
+    build, read = _call_options(name, _options(name, data), data)
+    body = {"body": BODY} if chart.needs_body else {}
+    values = getattr(s, f"as_{name}")(**body, **read)
+    # The modified Andoyer set comes as Andoyer variables (fields l, g, ... for l0, g0, ...).
+    assert values._fields == (Andoyer._fields if name == "initial_andoyer" else chart.columns)
+    columns = dict(zip(chart.columns, values, strict=True))
+    back = getattr(State, f"from_{name}")(**columns, **body, **build)
+    scale = float(np.linalg.norm(s.m_body))
+    assert rotation_distance(back.quaternion, s.quaternion) < 1e-10
+    assert np.abs(back.m_body - s.m_body).max() < 1e-10 * scale
+
+
+def _direct_as(name, s, options):
+    """The chart's coordinates of ``s`` from the chart functions, called without State's methods."""
+    q, m = s.quaternion, s.m_body
+    if name == "euler":
+        return hub_to_euler(q, m, stacklevel=1)
+    if name == "andoyer":
+        return hub_to_andoyer(q, m, stacklevel=1)
+    if name == "initial_andoyer":
+        m1, q1 = FreeMotion(BODY.moments, m, q).propagate(options["epoch"] - options["t"])
+        return hub_to_andoyer(q1, m1, stacklevel=1)
+    if name == "sadov":
+        return andoyer_to_sadov(BODY, *hub_to_andoyer(q, m, stacklevel=1))
+    if name == "serret":
+        return andoyer_to_serret(BODY, *hub_to_andoyer(q, m, stacklevel=1), t=options["t"], stacklevel=1)
+    return hub_to_sam(q, m, BODY, options["mode"], stacklevel=1)
+
+
+@pytest.mark.parametrize("name", METHOD_CHARTS)
+@settings(max_examples=10)
+@given(s=regular_states(), data=st.data())
+def test_state_chart_methods_match_chart_functions(name, s, data):
+    chart = charts()[name]
+    options = _options(name, data)
+    body = {"body": BODY} if chart.needs_body else {}
+    got = getattr(s, f"as_{name}")(**body, **options)
+    want = _direct_as(name, s, options)
+    assert type(got) is type(want)
+    # Bit for bit, but for the modified Andoyer set: its method builds a State of the flowed
+    # quaternions, which normalises them again (an ulp or two).
+    atol = 1e-14 * max(1.0, float(np.linalg.norm(s.m_body))) if name == "initial_andoyer" else 0.0
+    for a, b in zip(got, want, strict=True):
+        np.testing.assert_allclose(a, b, rtol=0, atol=atol)
+
+
+def test_state_euler_andoyer_match_scipy_and_momenta():
+    """Independent values: scipy's ZXZ angles, and G = |m|, H = m_ref·s3, L = m3 (Gurfil §2–3)."""
+    s = _states()
+    e, a = s.as_euler(), s.as_andoyer()
+    angles = np.mod(s.rotation.as_euler("ZXZ"), 2 * np.pi)
+    np.testing.assert_allclose(np.mod(np.stack(e[:3], -1), 2 * np.pi), angles, rtol=0, atol=1e-12)
+    m, M = s.m_body, s.m_reference
+    np.testing.assert_allclose(e.Phi, M[:, 2], rtol=0, atol=1e-14)
+    np.testing.assert_allclose(e.Psi, m[:, 2], rtol=0, atol=1e-14)
+    np.testing.assert_allclose(a.G, np.linalg.norm(m, axis=-1), rtol=1e-15)
+    np.testing.assert_allclose(a.H, M[:, 2], rtol=0, atol=1e-14)
+    np.testing.assert_allclose(a.L, m[:, 2], rtol=0, atol=1e-15)
