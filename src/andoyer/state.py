@@ -41,7 +41,9 @@ class State:
     leading axes.
 
     Build states with the ``from_*`` class methods and read charts with the
-    ``as_*`` methods.
+    ``as_*`` methods. Those of the charts (``from_euler``/``as_euler``, ``andoyer``,
+    ``initial_andoyer``, ``sadov``, ``serret``, ``sam``) are written in the chart
+    modules and installed here from :mod:`andoyer.charts.registry`.
 
     Parameters
     ----------
