@@ -14,7 +14,11 @@ from andoyer.body import RigidBody
 
 # The chart modules register their charts on import, and State's chart methods are theirs
 # (installed at the end of this module): imported by name so that the import graph shows them.
-from andoyer.charts import andoyer, euler, sadov, sam, serret  # noqa: F401
+from andoyer.charts import andoyer as _andoyer  # noqa: F401
+from andoyer.charts import euler as _euler  # noqa: F401
+from andoyer.charts import sadov as _sadov  # noqa: F401
+from andoyer.charts import sam as _sam  # noqa: F401
+from andoyer.charts import serret as _serret  # noqa: F401
 from andoyer.charts.registry import charts, install
 from andoyer.state_charts import check_body
 
