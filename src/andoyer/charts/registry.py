@@ -210,6 +210,10 @@ CHARTS: dict[str, Chart] = {}
 def register(chart: Chart) -> Chart:
     """Add ``chart`` to :data:`CHARTS` (a second chart of the same name is refused).
 
+    :class:`andoyer.State` takes the methods of the charts registered when :mod:`andoyer.state`
+    loads (the chart modules register on import); a chart registered later gets them on a state
+    class through :func:`install`.
+
     Parameters
     ----------
     chart : Chart
