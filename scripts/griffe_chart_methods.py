@@ -18,13 +18,22 @@ import griffe
 class ChartMethods(griffe.Extension):
     """Add the installed chart methods to the class ``andoyer.state.State``."""
 
-    def on_class_members(self, *, cls: griffe.Class, **kwargs: Any) -> None:  # noqa: ARG002 (griffe passes more)
+    def on_class_members(
+        self,
+        *,
+        cls: griffe.Class,
+        agent: griffe.Visitor | griffe.Inspector,
+        **kwargs: Any,  # noqa: ARG002 (griffe passes more)
+    ) -> None:
         """Copy each ``from_*``/``as_*`` member that the static reading missed from the inspected class."""
         if cls.path != "andoyer.state.State":
             return
         from andoyer.charts.registry import charts
 
-        inspected = griffe.inspect("andoyer.state")["State"]
+        # The docstrings parsed as the static ones are (numpy style, from mkdocs.yml).
+        parser, options = agent.docstring_parser, agent.docstring_options
+        module = griffe.inspect("andoyer.state", docstring_parser=parser, docstring_options=options)
+        inspected = module["State"]
         # Listed where state.py's own constructors end, chart by chart in the registry's order: by
         # line number (``members_order: source``) and by place (the page shows ``andoyer.State``, an
         # alias whose members keep the class's order).
