@@ -11,9 +11,16 @@ from scipy.spatial.transform import Rotation
 from andoyer import _quaternion as quat
 from andoyer._validation import as_vectors, check_magnitude, describe
 from andoyer.body import RigidBody
-from andoyer.charts.andoyer import Andoyer, andoyer_to_hub, hub_to_andoyer
-from andoyer.charts.euler import Euler, euler_to_hub, hub_to_euler
-from andoyer.state_charts import check_body, free_flow
+
+# The chart modules register their charts on import, and State's chart methods are theirs
+# (installed at the end of this module): imported by name so that the import graph shows them.
+from andoyer.charts import andoyer as _andoyer  # noqa: F401
+from andoyer.charts import euler as _euler  # noqa: F401
+from andoyer.charts import sadov as _sadov  # noqa: F401
+from andoyer.charts import sam as _sam  # noqa: F401
+from andoyer.charts import serret as _serret  # noqa: F401
+from andoyer.charts.registry import charts, install
+from andoyer.state_charts import check_body
 
 __all__ = ["State"]
 
@@ -38,7 +45,9 @@ class State:
     leading axes.
 
     Build states with the ``from_*`` class methods and read charts with the
-    ``as_*`` methods.
+    ``as_*`` methods. Those of the charts (``from_euler``/``as_euler``, ``andoyer``,
+    ``initial_andoyer``, ``sadov``, ``serret``, ``sam``) are written in the chart
+    modules and installed here from :mod:`andoyer.charts.registry`.
 
     Parameters
     ----------
@@ -152,282 +161,8 @@ class State:
         omega = as_vectors(omega_body, "omega_body")
         return cls(_check_rotation(rotation), omega * body.moments)
 
-    @classmethod
-    def from_euler(
-        cls,
-        phi: ArrayLike,
-        theta: ArrayLike,
-        psi: ArrayLike,
-        Phi: ArrayLike,
-        Theta: ArrayLike,
-        Psi: ArrayLike,
-    ) -> State:
-        r"""State from Euler 3-1-3 angles and their conjugate momenta (Gurfil §2).
-
-        The attitude is ``Rotation.from_euler("ZXZ", [φ, θ, ψ])``; the momenta
-        give ``m_body`` through Gurfil eqs. 25–27,
-        ``m = (Θ cos ψ + X sin ψ, -Θ sin ψ + X cos ψ, Ψ)``, ``X = (Φ - Ψ cos θ)/sin θ``.
-
-        Parameters
-        ----------
-        phi, theta, psi : array_like, shape (...)
-            Euler angles in radians, ``0 <= θ <= π``.
-        Phi, Theta, Psi : array_like, shape (...)
-            Conjugate momenta. All six broadcast together.
-
-        Examples
-        --------
-        >>> s = State.from_euler(0.1, 0.5, 0.2, 1.0, 0.3, 0.8)
-        >>> [round(float(x), 12) for x in s.as_euler()]
-        [0.1, 0.5, 0.2, 1.0, 0.3, 0.8]
-        """
-        return cls._of_unit(*euler_to_hub(phi, theta, psi, Phi, Theta, Psi, stacklevel=2, unit=True))
-
-    @classmethod
-    def from_andoyer(
-        cls,
-        l: ArrayLike,
-        g: ArrayLike,
-        h: ArrayLike,
-        L: ArrayLike,
-        G: ArrayLike,
-        H: ArrayLike,
-    ) -> State:
-        r"""State from Andoyer variables (Gurfil §3.2).
-
-        The attitude is ``Rz(h) Rx(I) Rz(g) Rx(J) Rz(l)`` with ``cos I = H/G``,
-        ``cos J = L/G``, and ``m_body = (√(G²-L²) sin l, √(G²-L²) cos l, L)``.
-
-        Parameters
-        ----------
-        l, g, h : array_like, shape (...)
-            Andoyer angles in radians.
-        L, G, H : array_like, shape (...)
-            Momenta with ``G > 0``, ``|L| <= G``, ``|H| <= G``. All six broadcast.
-
-        Examples
-        --------
-        >>> s = State.from_andoyer(0.0, 0.0, 0.0, [0.5, 1.0], 1.0, 1.0)
-        >>> s.shape
-        (2,)
-        """
-        return cls._of_unit(*andoyer_to_hub(l, g, h, L, G, H, unit=True))
-
-    # -------------------------------------------------------------- converters
-    def as_euler(self) -> Euler:
-        """Euler 3-1-3 angles and conjugate momenta ``(phi, theta, psi, Phi, Theta, Psi)``.
-
-        At ``sin θ = 0`` the convention is ``ψ = 0`` with a
-        :class:`~andoyer.charts.SingularChartWarning`.
-
-        Examples
-        --------
-        >>> s = State.from_euler(1.0, 2.0, 3.0, 0.1, 0.2, 0.3)
-        >>> round(float(s.as_euler().Theta), 12)
-        0.2
-        """
-        return hub_to_euler(self._q, self._m, stacklevel=2)
-
-    def as_andoyer(self) -> Andoyer:
-        """Andoyer variables ``(l, g, h, L, G, H)``; angles in ``[0, 2π)``.
-
-        At ``sin J = 0`` (``l = 0``) and ``sin I = 0`` (``h = 0``) a
-        :class:`~andoyer.charts.SingularChartWarning` is issued. A state with
-        zero angular momentum has no Andoyer chart and raises ``ValueError``.
-
-        Examples
-        --------
-        >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.6, 1.0, -0.2)
-        >>> round(float(s.as_andoyer().g), 12)
-        0.4
-        """
-        return hub_to_andoyer(self._q, self._m, stacklevel=2)
-
-    # ------------------------------------------ the charts that need the body
-
-    @classmethod
-    def from_sadov(
-        cls,
-        body: RigidBody,
-        phi_l: ArrayLike,
-        phi_g: ArrayLike,
-        phi_h: ArrayLike,
-        I_l: ArrayLike,
-        I_g: ArrayLike,
-        I_h: ArrayLike,
-    ) -> State:
-        """State from Sadov's action–angle variables (Gurfil §5); see :mod:`andoyer.charts.sadov`.
-
-        Examples
-        --------
-        >>> from andoyer import RigidBody, State
-        >>> body = RigidBody(1.0, 2.0, 3.0)
-        >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.9, 1.0, 0.2)
-        >>> back = State.from_sadov(body, *s.as_sadov(body))
-        >>> bool(abs(back.m_body - s.m_body).max() < 1e-13)
-        True
-        """
-        from andoyer.charts.sadov import sadov_to_andoyer
-
-        return cls.from_andoyer(*sadov_to_andoyer(check_body(body), phi_l, phi_g, phi_h, I_l, I_g, I_h))
-
-    def as_sadov(self, body: RigidBody):
-        """Sadov's action–angle variables ``(phi_l, phi_g, phi_h, I_l, I_g, I_h)`` of the free body.
-
-        Examples
-        --------
-        >>> from andoyer import RigidBody, State
-        >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.9, 1.0, 0.2)
-        >>> round(float(s.as_sadov(RigidBody(1.0, 2.0, 3.0)).I_g), 12)
-        1.0
-        """
-        from andoyer.charts.sadov import andoyer_to_sadov
-
-        return andoyer_to_sadov(check_body(body), *self.as_andoyer())
-
-    def as_initial_andoyer(self, body: RigidBody, epoch: ArrayLike, t: ArrayLike = 0.0) -> Andoyer:
-        """The modified Andoyer set (Gurfil §4.1): Andoyer variables at ``epoch`` of the free motion.
-
-        The state is taken at time ``t``; the free flow carries it to ``epoch``.
-        ``(l0, g0, h, L0, G, H)`` are constants of the free motion.
-
-        Examples
-        --------
-        >>> from andoyer import FreeRotation, RigidBody, State
-        >>> body = RigidBody(1.0, 2.0, 3.0)
-        >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.9, 1.0, 0.2)
-        >>> later = FreeRotation(body).propagate(s, 2.5)
-        >>> a, b = s.as_initial_andoyer(body, 0.0), later.as_initial_andoyer(body, 0.0, t=2.5)
-        >>> bool(max(abs(x - y) for x, y in zip(a, b)) < 1e-12)
-        True
-        """
-        dt = np.asarray(epoch, dtype=float) - np.asarray(t, dtype=float)
-        return free_flow(check_body(body), self, dt).as_andoyer()
-
-    @classmethod
-    def from_initial_andoyer(
-        cls,
-        body: RigidBody,
-        l0: ArrayLike,
-        g0: ArrayLike,
-        h: ArrayLike,
-        L0: ArrayLike,
-        G: ArrayLike,
-        H: ArrayLike,
-        epoch: ArrayLike,
-        t: ArrayLike = 0.0,
-    ) -> State:
-        """State at time ``t`` of the free motion whose Andoyer variables at ``epoch`` are given.
-
-        The inverse of :meth:`as_initial_andoyer` (Gurfil §4.1's modified Andoyer set
-        ``(l0, g0, h, L0, G, H)``): the free flow carries ``from_andoyer(l0, …, H)`` from
-        ``epoch`` to ``t``. All arguments broadcast.
-
-        Examples
-        --------
-        >>> from andoyer import RigidBody, State
-        >>> body = RigidBody(1.0, 2.0, 3.0)
-        >>> s = State.from_initial_andoyer(body, 0.3, 0.4, 0.5, 0.9, 1.0, 0.2, epoch=1.0, t=2.5)
-        >>> a = s.as_initial_andoyer(body, 1.0, t=2.5)
-        >>> [round(float(x), 12) for x in a]
-        [0.3, 0.4, 0.5, 0.9, 1.0, 0.2]
-        """
-        dt = np.asarray(t, dtype=float) - np.asarray(epoch, dtype=float)
-        return free_flow(check_body(body), cls.from_andoyer(l0, g0, h, L0, G, H), dt)
-
-    def as_serret(self, body: RigidBody, t: ArrayLike = 0.0, *, epoch: ArrayLike | None = None):
-        r"""Serret's elements ``(g0, h, t0, G, H, T, sign)`` of the state taken at time ``t``.
-
-        ``(g0, h, -t0)`` are conjugate to ``(G, H, T)``, ``T`` the kinetic energy; ``t0`` is
-        the last passage at or before ``epoch`` (default ``t``) of the body momentum through the
-        reference point ``φ_ℓ = 0`` of its polhode, ``t - t0 ≡ φ_ℓ/ω_ℓ (mod P_ℓ)``, and ``g0``
-        is ``g`` at ``t0``. See :mod:`andoyer.charts.serret` for the definitions and the
-        states where the chart is undefined (``ValueError``).
-
-        Examples
-        --------
-        >>> from andoyer import FreeRotation, RigidBody, State
-        >>> body = RigidBody(1.0, 2.0, 3.0)
-        >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.9, 1.0, 0.2)
-        >>> later = FreeRotation(body).propagate(s, 7.0)
-        >>> a, b = s.as_serret(body), later.as_serret(body, t=7.0, epoch=0.0)
-        >>> bool(max(abs(x - y) for x, y in zip(a, b)) < 1e-12)
-        True
-        """
-        from andoyer.charts.andoyer import hub_to_andoyer
-        from andoyer.charts.serret import andoyer_to_serret
-
-        a = hub_to_andoyer(self._q, self._m, stacklevel=2)
-        return andoyer_to_serret(check_body(body), *a, t=t, epoch=epoch, stacklevel=3)
-
-    @classmethod
-    def from_serret(
-        cls,
-        body: RigidBody,
-        g0: ArrayLike,
-        h: ArrayLike,
-        t0: ArrayLike,
-        G: ArrayLike,
-        H: ArrayLike,
-        T: ArrayLike,
-        sign: ArrayLike = 1.0,
-        *,
-        t: ArrayLike = 0.0,
-    ) -> State:
-        """State at time ``t`` from Serret's elements; inverse of :meth:`as_serret`.
-
-        ``sign`` (``±1``) picks the orbit among the two with the same ``(G, T)``: the sign
-        of ``L`` in circulation, the lobe ``±b_e`` in libration.
-
-        Examples
-        --------
-        >>> from andoyer import RigidBody, State
-        >>> body = RigidBody(1.0, 2.0, 3.0)
-        >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.9, 1.0, 0.2)
-        >>> back = State.from_serret(body, *s.as_serret(body, t=2.0), t=2.0)
-        >>> bool(abs(back.m_body - s.m_body).max() < 1e-13)
-        True
-        """
-        from andoyer.charts.serret import serret_to_andoyer
-
-        return cls.from_andoyer(*serret_to_andoyer(check_body(body), g0, h, t0, G, H, T, sign, t))
-
-    def as_sam(self, body: RigidBody, mode: str = "SAM"):
-        """Lara's SAM (or LAM) action–angle chart ``(sam_l, sam_g, h, sam_L, sam_G, H, sign)``.
-
-        See :mod:`andoyer.charts.sam` (Lara eqs. 18–25, any axis labelling).
-
-        Examples
-        --------
-        >>> from andoyer import RigidBody, State
-        >>> body = RigidBody(1.0, 2.0, 3.0)
-        >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.99, 1.0, 0.2)
-        >>> back = State.from_sam(*s.as_sam(body), body=body)
-        >>> bool(abs(back.m_body - s.m_body).max() < 1e-13)
-        True
-        """
-        from andoyer.charts.sam import hub_to_sam
-
-        return hub_to_sam(self._q, self._m, check_body(body), mode, stacklevel=2)
-
-    @classmethod
-    def from_sam(
-        cls,
-        sam_l: ArrayLike,
-        sam_g: ArrayLike,
-        h: ArrayLike,
-        sam_L: ArrayLike,
-        sam_G: ArrayLike,
-        H: ArrayLike,
-        sign: ArrayLike = 1.0,
-        *,
-        body: RigidBody,
-        mode: str = "SAM",
-    ) -> State:
-        """State from Lara's SAM (or LAM) action–angle chart; inverse of :meth:`as_sam`."""
-        from andoyer.charts.sam import sam_to_hub
-
-        return cls(*sam_to_hub(sam_l, sam_g, h, sam_L, sam_G, H, sign, body=check_body(body), mode=mode))
+    # The chart methods, from_<chart> (class methods) and as_<chart>, are written once in each
+    # chart's module and installed below from the registry (andoyer.charts.registry.install).
 
     # -------------------------------------------------------------- properties
 
@@ -544,3 +279,8 @@ class State:
     @staticmethod
     def _describe(value: Any) -> str:
         return describe(value)
+
+
+# State.from_<chart> and State.as_<chart> for every registered chart: the chart modules' functions,
+# their signatures and docstrings as written there (andoyer.charts.registry).
+install(State, charts())

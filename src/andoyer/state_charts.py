@@ -3,8 +3,9 @@
 Sadov's action–angle variables, the modified Andoyer set, Serret's elements and Lara's
 SAM/LAM variables all need the body's moments (:func:`check_body`), and the time-dependent
 ones the free flow (:func:`free_flow`, which loads :mod:`andoyer.free.motion` on first use so
-that a state costs no numba start-up).  Their ``from_*``/``as_*`` converters are methods of
-:class:`~andoyer.State`, registered in :mod:`andoyer.charts.registry`.
+that a state costs no numba start-up).  Their ``from_*``/``as_*`` converters are written in
+the chart modules, registered in :mod:`andoyer.charts.registry`, and installed on
+:class:`~andoyer.State` as its methods.
 """
 
 from __future__ import annotations

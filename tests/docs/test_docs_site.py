@@ -120,7 +120,18 @@ def test_docs_site_builds_strict(tmp_path):
         "api/liepoisson/index.html",
     ):
         assert (site / page).is_file(), page
-    assert 'id="andoyer.State"' in (site / "api/core/index.html").read_text(encoding="utf-8")
+    core = (site / "api/core/index.html").read_text(encoding="utf-8")
+    assert 'id="andoyer.State"' in core
+    # The chart methods installed on State from the registry (scripts/griffe_chart_methods.py).
+    from andoyer.charts.registry import charts
+
+    for name in (n for n, chart in charts().items() if chart.method):
+        assert f'id="andoyer.State.from_{name}"' in core, name
+        assert f'id="andoyer.State.as_{name}"' in core, name
+    # ... with their docstrings parsed as numpy docstrings, as the static ones are.
+    section = core.split('id="andoyer.State.from_euler"', 1)[1].split('id="andoyer.State.as_euler"', 1)[0]
+    for title in ("Parameters:", "Returns:", "Examples:"):
+        assert f'doc-section-title">{title}<' in section, title
     assert "Chart conversions" in (site / "benchmarks/index.html").read_text(encoding="utf-8")
 
 

@@ -23,7 +23,7 @@ Near those points the momenta ``L`` or ``H`` determine ``J`` or ``I`` only to
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -44,6 +44,11 @@ from andoyer.charts import _kernels
 from andoyer.charts.euler import Euler, compiled_conversions, scalars, transverse_momentum
 from andoyer.charts.registry import Chart, register
 from andoyer.charts.singular import warn_if_singular
+from andoyer.state_charts import check_body, free_flow
+
+if TYPE_CHECKING:
+    from andoyer.body import RigidBody
+    from andoyer.state import State
 
 __all__ = [
     "Andoyer",
@@ -384,14 +389,155 @@ def euler_from_andoyer(
     return Euler(wrap_2pi(phi), theta, wrap_2pi(psi), H, Theta, L)
 
 
+# The chart's methods of State (installed by andoyer.charts.registry.install): their signatures
+# are the chart's, written once here. ``cls`` and ``self`` are the State class and a state.
+
+
+def _from_andoyer(
+    cls: type[State],
+    l: ArrayLike,
+    g: ArrayLike,
+    h: ArrayLike,
+    L: ArrayLike,
+    G: ArrayLike,
+    H: ArrayLike,
+) -> State:
+    r"""State from Andoyer variables (Gurfil §3.2).
+
+    The attitude is ``Rz(h) Rx(I) Rz(g) Rx(J) Rz(l)`` with ``cos I = H/G``,
+    ``cos J = L/G``, and ``m_body = (√(G²-L²) sin l, √(G²-L²) cos l, L)``.
+
+    Parameters
+    ----------
+    l, g, h : array_like, shape (...)
+        Andoyer angles in radians.
+    L, G, H : array_like, shape (...)
+        Momenta with ``G > 0``, ``|L| <= G``, ``|H| <= G``. All six broadcast.
+
+    Returns
+    -------
+    State, shape (...)
+        The states (the broadcast shape of the six).
+
+    Examples
+    --------
+    >>> from andoyer import State
+    >>> s = State.from_andoyer(0.0, 0.0, 0.0, [0.5, 1.0], 1.0, 1.0)
+    >>> s.shape
+    (2,)
+    """
+    return cls._of_unit(*andoyer_to_hub(l, g, h, L, G, H, unit=True))
+
+
+def _as_andoyer(self) -> Andoyer:
+    """Andoyer variables ``(l, g, h, L, G, H)``; angles in ``[0, 2π)``.
+
+    At ``sin J = 0`` (``l = 0``) and ``sin I = 0`` (``h = 0``) a
+    :class:`~andoyer.charts.SingularChartWarning` is issued. A state with
+    zero angular momentum has no Andoyer chart and raises ``ValueError``.
+
+    Returns
+    -------
+    Andoyer of arrays, each of shape (...)
+        The six coordinates, of the state's shape (numpy floats for a single state).
+
+    Examples
+    --------
+    >>> from andoyer import State
+    >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.6, 1.0, -0.2)
+    >>> round(float(s.as_andoyer().g), 12)
+    0.4
+    """
+    return hub_to_andoyer(self._q, self._m, stacklevel=2)
+
+
+def _as_initial_andoyer(self, body: RigidBody, epoch: ArrayLike, t: ArrayLike = 0.0) -> Andoyer:
+    """The modified Andoyer set (Gurfil §4.1): Andoyer variables at ``epoch`` of the free motion.
+
+    The state is taken at time ``t``; the free flow carries it to ``epoch``.
+    ``(l0, g0, h, L0, G, H)`` are constants of the free motion.
+
+    Parameters
+    ----------
+    body : RigidBody
+        The body.
+    epoch, t : array_like, shape (...)
+        The epoch of the set and the time of the state; broadcast with the state's shape.
+
+    Returns
+    -------
+    Andoyer of arrays, each of shape (...)
+        ``(l0, g0, h, L0, G, H)``, the fields named ``(l, g, h, L, G, H)``.
+
+    Examples
+    --------
+    >>> from andoyer import FreeRotation, RigidBody, State
+    >>> body = RigidBody(1.0, 2.0, 3.0)
+    >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.9, 1.0, 0.2)
+    >>> later = FreeRotation(body).propagate(s, 2.5)
+    >>> a, b = s.as_initial_andoyer(body, 0.0), later.as_initial_andoyer(body, 0.0, t=2.5)
+    >>> bool(max(abs(x - y) for x, y in zip(a, b)) < 1e-12)
+    True
+    """
+    dt = np.asarray(epoch, dtype=float) - np.asarray(t, dtype=float)
+    return free_flow(check_body(body), self, dt).as_andoyer()
+
+
+def _from_initial_andoyer(
+    cls: type[State],
+    body: RigidBody,
+    l0: ArrayLike,
+    g0: ArrayLike,
+    h: ArrayLike,
+    L0: ArrayLike,
+    G: ArrayLike,
+    H: ArrayLike,
+    epoch: ArrayLike,
+    t: ArrayLike = 0.0,
+) -> State:
+    """State at time ``t`` of the free motion whose Andoyer variables at ``epoch`` are given.
+
+    The inverse of :meth:`as_initial_andoyer` (Gurfil §4.1's modified Andoyer set
+    ``(l0, g0, h, L0, G, H)``): the free flow carries ``from_andoyer(l0, …, H)`` from
+    ``epoch`` to ``t``. All arguments broadcast.
+
+    Parameters
+    ----------
+    body : RigidBody
+        The body.
+    l0, g0, h : array_like, shape (...)
+        The Andoyer angles at ``epoch``, in radians.
+    L0, G, H : array_like, shape (...)
+        The momenta at ``epoch``.
+    epoch, t : array_like, shape (...)
+        The epoch of the set and the time of the state.
+
+    Returns
+    -------
+    State, shape (...)
+        The states at ``t`` (the broadcast shape of the arguments).
+
+    Examples
+    --------
+    >>> from andoyer import RigidBody, State
+    >>> body = RigidBody(1.0, 2.0, 3.0)
+    >>> s = State.from_initial_andoyer(body, 0.3, 0.4, 0.5, 0.9, 1.0, 0.2, epoch=1.0, t=2.5)
+    >>> a = s.as_initial_andoyer(body, 1.0, t=2.5)
+    >>> [round(float(x), 12) for x in a]
+    [0.3, 0.4, 0.5, 0.9, 1.0, 0.2]
+    """
+    dt = np.asarray(t, dtype=float) - np.asarray(epoch, dtype=float)
+    return free_flow(check_body(body), cls.from_andoyer(l0, g0, h, L0, G, H), dt)
+
+
 register(
     Chart(
         "andoyer",
         Andoyer._fields,
         ("l", "g", "h"),
         "Serret–Andoyer angles and momenta (Gurfil §3)",
-        lambda cls, v, _: cls.from_andoyer(*v),
-        lambda s, _: s.as_andoyer(),
+        _from_andoyer,
+        _as_andoyer,
         source="andoyer.charts.andoyer",
     )
 )
@@ -402,10 +548,8 @@ register(
         ("l0", "g0", "h", "L0", "G", "H"),
         ("l0", "g0", "h"),
         "Andoyer variables at `epoch` of the free motion, the state taken at `t` (Gurfil §4.1)",
-        lambda cls, v, body, **o: cls.from_initial_andoyer(body, *v, **o),
-        lambda s, body, **o: s.as_initial_andoyer(body, **o),
-        needs_body=True,
-        options=("epoch", "t"),
-        source="andoyer.state",
+        _from_initial_andoyer,
+        _as_initial_andoyer,
+        source="andoyer.charts.andoyer",
     )
 )

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import math
 from types import ModuleType
-from typing import Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -41,6 +41,9 @@ from andoyer._validation import (
 from andoyer.charts import _kernels
 from andoyer.charts.registry import Chart, register
 from andoyer.charts.singular import warn_if_singular
+
+if TYPE_CHECKING:
+    from andoyer.state import State
 
 __all__ = ["Euler", "euler_matrix", "euler_to_hub", "hub_to_euler", "transverse_momentum"]
 
@@ -256,14 +259,76 @@ def hub_to_euler(q: Array, m: Array, stacklevel: int = 2) -> Euler:
     return Euler(phi, theta, psi, Phi, Theta, Psi)
 
 
+# The chart's methods of State (installed by andoyer.charts.registry.install): their signatures
+# are the chart's, written once here. ``cls`` and ``self`` are the State class and a state.
+
+
+def _from_euler(
+    cls: type[State],
+    phi: ArrayLike,
+    theta: ArrayLike,
+    psi: ArrayLike,
+    Phi: ArrayLike,
+    Theta: ArrayLike,
+    Psi: ArrayLike,
+) -> State:
+    r"""State from Euler 3-1-3 angles and their conjugate momenta (Gurfil §2).
+
+    The attitude is ``Rotation.from_euler("ZXZ", [φ, θ, ψ])``; the momenta
+    give ``m_body`` through Gurfil eqs. 25–27,
+    ``m = (Θ cos ψ + X sin ψ, -Θ sin ψ + X cos ψ, Ψ)``, ``X = (Φ - Ψ cos θ)/sin θ``.
+
+    Parameters
+    ----------
+    phi, theta, psi : array_like, shape (...)
+        Euler angles in radians, ``0 <= θ <= π``.
+    Phi, Theta, Psi : array_like, shape (...)
+        Conjugate momenta. All six broadcast together.
+
+    Returns
+    -------
+    State, shape (...)
+        The states (the broadcast shape of the six).
+
+    Examples
+    --------
+    >>> from andoyer import State
+    >>> s = State.from_euler(0.1, 0.5, 0.2, 1.0, 0.3, 0.8)
+    >>> [round(float(x), 12) for x in s.as_euler()]
+    [0.1, 0.5, 0.2, 1.0, 0.3, 0.8]
+    """
+    return cls._of_unit(*euler_to_hub(phi, theta, psi, Phi, Theta, Psi, stacklevel=2, unit=True))
+
+
+def _as_euler(self) -> Euler:
+    """Euler 3-1-3 angles and conjugate momenta ``(phi, theta, psi, Phi, Theta, Psi)``.
+
+    At ``sin θ = 0`` the convention is ``ψ = 0`` with a
+    :class:`~andoyer.charts.SingularChartWarning`.
+
+    Returns
+    -------
+    Euler of arrays, each of shape (...)
+        The six coordinates, of the state's shape (numpy floats for a single state).
+
+    Examples
+    --------
+    >>> from andoyer import State
+    >>> s = State.from_euler(1.0, 2.0, 3.0, 0.1, 0.2, 0.3)
+    >>> round(float(s.as_euler().Theta), 12)
+    0.2
+    """
+    return hub_to_euler(self._q, self._m, stacklevel=2)
+
+
 register(
     Chart(
         "euler",
         Euler._fields,
         ("phi", "theta", "psi"),
         "Euler 3-1-3 angles and their conjugate momenta (Gurfil §2)",
-        lambda cls, v, _: cls.from_euler(*v),
-        lambda s, _: s.as_euler(),
+        _from_euler,
+        _as_euler,
         source="andoyer.charts.euler",
     )
 )

@@ -3,14 +3,17 @@
 As astropy registers its frame transforms on a graph, each chart module registers one
 :class:`Chart` here, a star around the hub (the attitude quaternion ``q`` and the body
 angular momentum ``m`` of :class:`andoyer.State`): the chart's coordinate names, which of
-them are angles, whether it needs the body's moments, its keyword options and the two
-converters between its coordinates and a state.  The command line's chart table
-(:mod:`andoyer.cli.chart_table`), the documentation's table (:func:`charts_markdown`, in
-``docs/charts.md``) and the test that the ``State.from_<name>``/``as_<name>`` methods keep
-the registry's parameters are generated from, or checked against, :data:`CHARTS`.
+them are angles, and the two functions that :func:`install` makes the chart's methods
+``State.from_<name>`` (a class method) and ``State.as_<name>``. Those functions' signatures
+are the chart's signature: whether it needs the body's moments and its keyword options are
+read from them, and the columns are checked against them when the chart registers. The
+``State`` methods, the command line's chart table (:mod:`andoyer.cli.chart_table`) and the
+documentation's table (:func:`charts_markdown`, in ``docs/charts.md``) are generated from
+:data:`CHARTS`.
 
-The converters receive the state class (or a state) rather than importing it, so this
-layer stays below :mod:`andoyer.state`:
+The functions receive the state class (or a state) rather than importing it, so this
+layer stays below :mod:`andoyer.state`; :meth:`Chart.to_state` and :meth:`Chart.from_state`
+call them with the columns as a sequence:
 
 ``to_state(cls, values, body, **options) -> cls`` and
 ``from_state(state, body, **options) -> coordinates``.
@@ -25,18 +28,22 @@ Examples
 >>> s = chart.to_state(State, (0.3, 0.4, 0.5, 0.9, 1.0, 0.2), None)
 >>> [round(float(x), 12) for x in chart.from_state(s, None)]
 [0.3, 0.4, 0.5, 0.9, 1.0, 0.2]
+>>> State.from_andoyer.__doc__ == chart.from_method.__doc__
+True
 """
 
 from __future__ import annotations
 
 import importlib
+import inspect
+import types
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, NamedTuple
 
 import numpy as np
 
-__all__ = ["CHARTS", "Chart", "Hub", "charts", "charts_markdown", "register"]
+__all__ = ["CHARTS", "Chart", "Hub", "charts", "charts_markdown", "install", "register"]
 
 # The chart modules that register their charts on import.
 _MODULES = ("euler", "andoyer", "sadov", "serret", "sam")
@@ -56,6 +63,15 @@ class Hub(NamedTuple):
     m3: Any
 
 
+def _parameters(function: Callable[..., Any], first: str, where: str) -> list[inspect.Parameter]:
+    """The parameters of ``function`` after its first, which must be called ``first``."""
+    params = list(inspect.signature(function).parameters.values())
+    if not params or params[0].name != first:
+        msg = f"expected {where} to take {first!r} first, got {[p.name for p in params]}"
+        raise ValueError(msg)
+    return params[1:]
+
+
 @dataclass(frozen=True)
 class Chart:
     """One chart of the rotation state, registered once.
@@ -65,40 +81,127 @@ class Chart:
     name : str
         The chart's name: ``State.from_<name>`` and ``State.as_<name>`` where ``method`` is set.
     columns : tuple of str
-        The coordinate names, in order (a NamedTuple's ``_fields``).
+        The coordinate names, in order (a NamedTuple's ``_fields``); ``from_method`` takes them
+        in this order, before its options.
     angles : tuple of str
         The columns that are angles (radians).
     summary : str
         One line for the tables.
-    to_state : callable
-        ``to_state(cls, values, body, **options)``: the state of class ``cls`` at the coordinates.
-    from_state : callable
-        ``from_state(state, body, **options)``: the coordinates of ``state``.
-    needs_body : bool
-        Whether the converters need the body's :class:`~andoyer.RigidBody`.
-    options : tuple of str
-        Keyword options of the ``State`` methods (``t``, ``epoch``, ``mode``).
+    from_method : callable
+        The function of the class method ``State.from_<name>``:
+        ``from_method(cls, [body,] *columns, **options) -> cls`` (the body, where the chart needs
+        it, may come first or as a keyword). Its signature, docstring and code are the method's.
+    as_method : callable
+        The function of the method ``State.as_<name>``: ``as_method(self, [body,] **options)``,
+        the coordinates of the state ``self``.
     method : bool
-        Whether ``State`` has ``from_<name>``/``as_<name>`` methods with these columns.
+        Whether :func:`install` gives ``State`` the two methods (the hub chart has none).
     source : str
         Where the chart's formulas and conventions are stated.
+    needs_body : bool
+        Whether the methods take the body's :class:`~andoyer.RigidBody` (a parameter ``body``);
+        read from their signatures.
+    options : tuple of str
+        The keyword options of the methods (``t``, ``epoch``, ``mode``): their parameters other
+        than the columns and ``body``, in order of appearance; read from their signatures.
     """
 
     name: str
     columns: tuple[str, ...]
     angles: tuple[str, ...]
     summary: str
-    to_state: Callable[..., Any]
-    from_state: Callable[..., Any]
-    needs_body: bool = False
-    options: tuple[str, ...] = ()
+    from_method: Callable[..., Any]
+    as_method: Callable[..., Any]
     method: bool = True
     source: str = ""
+    needs_body: bool = field(init=False)
+    options: tuple[str, ...] = field(init=False)
 
     def __post_init__(self) -> None:
         if not set(self.angles) <= set(self.columns):
             msg = f"expected angles among the columns {self.columns}, got {self.angles}"
             raise ValueError(msg)
+        build = _parameters(self.from_method, "cls", f"from_{self.name}")
+        read = _parameters(self.as_method, "self", f"as_{self.name}")
+        names = [p.name for p in build if p.name in self.columns]
+        positional = [p.name for p in build if p.kind is p.POSITIONAL_OR_KEYWORD and p.name != "body"]
+        if names != list(self.columns) or positional[: len(names)] != names:
+            msg = (
+                f"expected from_{self.name} to take the columns {self.columns} positionally and in "
+                f"order, got {[p.name for p in build]}"
+            )
+            raise ValueError(msg)
+        in_build = any(p.name == "body" for p in build)
+        if in_build != any(p.name == "body" for p in read):
+            msg = f"expected from_{self.name} and as_{self.name} both to take the body or neither"
+            raise ValueError(msg)
+        options = dict.fromkeys(p.name for p in (*build, *read) if p.name not in {*self.columns, "body"})
+        object.__setattr__(self, "needs_body", in_build)
+        object.__setattr__(self, "options", tuple(options))
+
+    def to_state(self, cls: type, values: Sequence[Any], body: Any, **options: Any) -> Any:
+        """The states of class ``cls`` at the coordinates ``values`` (one array a column).
+
+        Parameters
+        ----------
+        cls : type
+            The state class (:class:`andoyer.State`).
+        values : sequence of array_like, each of shape (...)
+            The columns, in the order of :attr:`columns`.
+        body : RigidBody or None
+            The body, where :attr:`needs_body`; ignored otherwise.
+        **options
+            The chart's :attr:`options`.
+
+        Returns
+        -------
+        cls
+            ``cls.from_<name>`` of the columns, the body and the options.
+
+        Examples
+        --------
+        >>> from andoyer import State
+        >>> from andoyer.charts.registry import charts
+        >>> charts()["euler"].to_state(State, (0.1, 0.5, 0.2, 1.0, 0.3, 0.8), None).shape
+        ()
+        """
+        columns = list(values)
+        if len(columns) != len(self.columns):
+            msg = f"expected {len(self.columns)} columns {self.columns}, got {len(columns)}"
+            raise ValueError(msg)
+        arguments = dict(zip(self.columns, columns, strict=True))
+        if self.needs_body:
+            arguments["body"] = body
+        return self.from_method(cls, **arguments, **options)
+
+    def from_state(self, state: Any, body: Any, **options: Any) -> Any:
+        """The coordinates of ``state`` (``state.as_<name>`` with the body and the options).
+
+        Parameters
+        ----------
+        state : State, shape (...)
+            The states.
+        body : RigidBody or None
+            The body, where :attr:`needs_body`; ignored otherwise.
+        **options
+            The chart's :attr:`options`.
+
+        Returns
+        -------
+        NamedTuple of arrays, each of shape (...)
+            The columns, in the order of :attr:`columns`.
+
+        Examples
+        --------
+        >>> from andoyer import State
+        >>> from andoyer.charts.registry import charts
+        >>> s = State.from_euler(0.1, 0.5, 0.2, 1.0, 0.3, 0.8)
+        >>> round(float(charts()["euler"].from_state(s, None).Theta), 12)
+        0.3
+        """
+        if self.needs_body:
+            return self.as_method(state, body=body, **options)
+        return self.as_method(state, **options)
 
 
 CHARTS: dict[str, Chart] = {}
@@ -106,6 +209,10 @@ CHARTS: dict[str, Chart] = {}
 
 def register(chart: Chart) -> Chart:
     """Add ``chart`` to :data:`CHARTS` (a second chart of the same name is refused).
+
+    :class:`andoyer.State` takes the methods of the charts registered when :mod:`andoyer.state`
+    loads (the chart modules register on import); a chart registered later gets them on a state
+    class through :func:`install`.
 
     Parameters
     ----------
@@ -152,6 +259,68 @@ def charts() -> Mapping[str, Chart]:
     return dict(sorted(CHARTS.items(), key=lambda item: rank.get(item[0], len(rank))))
 
 
+def _method(owner: type, name: str, function: Callable[..., Any]) -> types.FunctionType:
+    """``function`` as the method ``owner.<name>``: the same code, defaults and docstring, owner's names.
+
+    A copy, not a wrapper, so a call costs what the function costs (the single-state fast
+    paths) and a warning's ``stacklevel`` counts the same frames; the chart module keeps its
+    function under its own name.
+    """
+    if not isinstance(function, types.FunctionType):
+        msg = f"expected a Python function for {owner.__qualname__}.{name}, got {type(function).__name__}"
+        raise TypeError(msg)
+    method = types.FunctionType(
+        function.__code__, function.__globals__, name, function.__defaults__, function.__closure__
+    )
+    method.__kwdefaults__ = dict(function.__kwdefaults__) if function.__kwdefaults__ else None
+    method.__annotations__ = dict(function.__annotations__)
+    method.__doc__ = function.__doc__
+    method.__module__ = owner.__module__
+    method.__qualname__ = f"{owner.__qualname__}.{name}"
+    return method
+
+
+def install(cls: type, registered: Mapping[str, Chart]) -> None:
+    """Give ``cls`` the class method ``from_<name>`` and the method ``as_<name>`` of each chart.
+
+    Each method is a copy of the chart's ``from_method``/``as_method`` (its code, signature and
+    docstring) named as ``cls``'s own, so ``help``, :func:`inspect.signature` and the API pages
+    show it as written in the chart's module. A chart whose ``method`` is false is skipped; a
+    name ``cls`` defines already is refused.
+
+    Parameters
+    ----------
+    cls : type
+        The state class (:class:`andoyer.State`, which calls this once on its creation).
+    registered : Mapping of str to Chart
+        The charts (:func:`charts`).
+
+    Examples
+    --------
+    >>> from andoyer import State
+    >>> from andoyer.charts.registry import charts, install
+    >>> class Sub(State):
+    ...     __slots__ = ()
+    >>> install(Sub, {"euler": charts()["euler"]})
+    >>> Sub.from_euler.__qualname__, type(Sub.from_euler(0.1, 0.5, 0.2, 1.0, 0.3, 0.8)).__name__
+    ('Sub.from_euler', 'Sub')
+    >>> install(Sub, {"euler": charts()["euler"]})
+    Traceback (most recent call last):
+    ...
+    ValueError: expected no attribute from_euler on Sub before install, got one
+    """
+    for chart in registered.values():
+        if not chart.method:
+            continue
+        names = (f"from_{chart.name}", f"as_{chart.name}")
+        for name in names:
+            if name in vars(cls):
+                msg = f"expected no attribute {name} on {cls.__qualname__} before install, got one"
+                raise ValueError(msg)
+        setattr(cls, names[0], classmethod(_method(cls, names[0], chart.from_method)))
+        setattr(cls, names[1], _method(cls, names[1], chart.as_method))
+
+
 def charts_markdown() -> str:
     """The Markdown table of the registered charts (the table of ``docs/charts.md``).
 
@@ -180,12 +349,12 @@ def charts_markdown() -> str:
     return "\n".join(lines) + "\n"
 
 
-def _hub_to_state(cls: Any, v: Sequence[Any], _: Any) -> Any:
-    return cls.from_quaternion(np.stack(v[:4], -1), np.stack(v[4:], -1))
+def _hub_from(cls: Any, qx: Any, qy: Any, qz: Any, qw: Any, m1: Any, m2: Any, m3: Any) -> Any:
+    return cls.from_quaternion(np.stack([qx, qy, qz, qw], -1), np.stack([m1, m2, m3], -1))
 
 
-def _state_to_hub(s: Any, _: Any) -> Hub:
-    return Hub(*np.moveaxis(s.quaternion, -1, 0), *np.moveaxis(s.m_body, -1, 0))
+def _hub_as(self: Any) -> Hub:
+    return Hub(*np.moveaxis(self.quaternion, -1, 0), *np.moveaxis(self.m_body, -1, 0))
 
 
 register(
@@ -194,8 +363,8 @@ register(
         Hub._fields,
         (),
         "the hub: attitude quaternion (scalar last) and body angular momentum",
-        _hub_to_state,
-        _state_to_hub,
+        _hub_from,
+        _hub_as,
         method=False,
         source="andoyer.state",
     )

@@ -42,7 +42,7 @@ derived in ``docs/errata-sadov.md``.
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -56,6 +56,10 @@ from andoyer.charts.sadov_frame import SadovFrame
 from andoyer.charts.sadov_orbit import angles, orbit, point
 from andoyer.charts.sadov_solve import solve
 from andoyer.charts.singular import warn_if_singular
+from andoyer.state_charts import check_body
+
+if TYPE_CHECKING:
+    from andoyer.state import State
 
 __all__ = [
     "Sadov",
@@ -379,15 +383,78 @@ def sadov_frequencies(body: RigidBody, I_l: ArrayLike, I_g: ArrayLike) -> SadovF
     return SadovFrequencies(np.reshape(omega_l, shape), np.reshape(omega_g, shape))
 
 
+# The chart's methods of State (installed by andoyer.charts.registry.install): their signatures
+# are the chart's, written once here. ``cls`` and ``self`` are the State class and a state.
+
+
+def _from_sadov(
+    cls: type[State],
+    body: RigidBody,
+    phi_l: ArrayLike,
+    phi_g: ArrayLike,
+    phi_h: ArrayLike,
+    I_l: ArrayLike,
+    I_g: ArrayLike,
+    I_h: ArrayLike,
+) -> State:
+    """State from Sadov's action–angle variables (Gurfil §5); see :mod:`andoyer.charts.sadov`.
+
+    Parameters
+    ----------
+    body : RigidBody
+        The body.
+    phi_l, phi_g, phi_h : array_like, shape (...)
+        Sadov's angles in radians.
+    I_l, I_g, I_h : array_like, shape (...)
+        Sadov's actions. All six broadcast.
+
+    Returns
+    -------
+    State, shape (...)
+        The states (the broadcast shape of the six).
+
+    Examples
+    --------
+    >>> from andoyer import RigidBody, State
+    >>> body = RigidBody(1.0, 2.0, 3.0)
+    >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.9, 1.0, 0.2)
+    >>> back = State.from_sadov(body, *s.as_sadov(body))
+    >>> bool(abs(back.m_body - s.m_body).max() < 1e-13)
+    True
+    """
+    return cls.from_andoyer(*sadov_to_andoyer(check_body(body), phi_l, phi_g, phi_h, I_l, I_g, I_h))
+
+
+def _as_sadov(self, body: RigidBody):
+    """Sadov's action–angle variables ``(phi_l, phi_g, phi_h, I_l, I_g, I_h)`` of the free body.
+
+    Parameters
+    ----------
+    body : RigidBody
+        The body.
+
+    Returns
+    -------
+    Sadov of arrays, each of shape (...)
+        The six coordinates, of the state's shape.
+
+    Examples
+    --------
+    >>> from andoyer import RigidBody, State
+    >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.9, 1.0, 0.2)
+    >>> round(float(s.as_sadov(RigidBody(1.0, 2.0, 3.0)).I_g), 12)
+    1.0
+    """
+    return andoyer_to_sadov(check_body(body), *self.as_andoyer())
+
 register(
     Chart(
         "sadov",
         Sadov._fields,
         ("phi_l", "phi_g", "phi_h"),
         "Sadov's action–angle variables of the free body (Gurfil §5)",
-        lambda cls, v, body: cls.from_sadov(body, *v),
-        lambda s, body: s.as_sadov(body),
-        needs_body=True,
+        _from_sadov,
+        _as_sadov,
         source="andoyer.charts.sadov",
     )
 )

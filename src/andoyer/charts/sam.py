@@ -39,7 +39,7 @@ announced by a :class:`SingularChartWarning`.  Near it ``ℓ`` is ill-conditione
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -52,6 +52,10 @@ from andoyer.charts.andoyer import Andoyer, _hub_to_andoyer_kernel
 from andoyer.charts.registry import Chart, register
 from andoyer.charts.sam_axes import SAMAxes, andoyer_parameters, sam_axes
 from andoyer.charts.singular import warn_if_singular
+from andoyer.state_charts import check_body
+
+if TYPE_CHECKING:
+    from andoyer.state import State
 
 __all__ = [
     "SAM",
@@ -386,16 +390,90 @@ def sam_energy(
     return G * G / (2 * I3) * (1 + alpha * x * (2 * s - x * (1 + beta * np.cos(2 * ell))))
 
 
+# The chart's methods of State (installed by andoyer.charts.registry.install): their signatures
+# are the chart's, written once here. ``cls`` and ``self`` are the State class and a state.
+
+
+def _as_sam(self, body: RigidBody, mode: str = "SAM"):
+    """Lara's SAM (or LAM) action–angle chart ``(sam_l, sam_g, h, sam_L, sam_G, H, sign)``.
+
+    See :mod:`andoyer.charts.sam` (Lara eqs. 18–25, any axis labelling).
+
+    Parameters
+    ----------
+    body : RigidBody
+        The body.
+    mode : {"SAM", "LAM"}
+        The chart about the body's axis of maximum inertia (SAM) or of minimum inertia (LAM).
+
+    Returns
+    -------
+    SAM of arrays, each of shape (...)
+        The seven coordinates, of the state's shape.
+
+    Examples
+    --------
+    >>> from andoyer import RigidBody, State
+    >>> body = RigidBody(1.0, 2.0, 3.0)
+    >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.99, 1.0, 0.2)
+    >>> back = State.from_sam(*s.as_sam(body), body=body)
+    >>> bool(abs(back.m_body - s.m_body).max() < 1e-13)
+    True
+    """
+    return hub_to_sam(self._q, self._m, check_body(body), mode, stacklevel=2)
+
+
+def _from_sam(
+    cls: type[State],
+    sam_l: ArrayLike,
+    sam_g: ArrayLike,
+    h: ArrayLike,
+    sam_L: ArrayLike,
+    sam_G: ArrayLike,
+    H: ArrayLike,
+    sign: ArrayLike = 1.0,
+    *,
+    body: RigidBody,
+    mode: str = "SAM",
+) -> State:
+    """State from Lara's SAM (or LAM) action–angle chart; inverse of :meth:`as_sam`.
+
+    Parameters
+    ----------
+    sam_l, sam_g, h : array_like, shape (...)
+        The angles in radians.
+    sam_L, sam_G, H : array_like, shape (...)
+        The actions.
+    sign : array_like, shape (...)
+        ``±1``, as :meth:`as_sam` records it.
+    body : RigidBody
+        The body.
+    mode : {"SAM", "LAM"}
+        The chart about the body's axis of maximum inertia (SAM) or of minimum inertia (LAM).
+
+    Returns
+    -------
+    State, shape (...)
+        The states (the broadcast shape of the coordinates).
+
+    Examples
+    --------
+    >>> from andoyer import RigidBody, State
+    >>> body = RigidBody(1.0, 2.0, 3.0)
+    >>> s = State.from_sam(0.3, 0.4, 0.5, 0.9, 1.0, 0.2, body=body, mode="LAM")
+    >>> [round(float(x), 12) for x in s.as_sam(body, mode="LAM")]
+    [0.3, 0.4, 0.5, 0.9, 1.0, 0.2, 1.0]
+    """
+    return cls(*sam_to_hub(sam_l, sam_g, h, sam_L, sam_G, H, sign, body=check_body(body), mode=mode))
+
 register(
     Chart(
         "sam",
         SAM._fields,
         ("sam_l", "sam_g", "h"),
         "Lara's SAM (or LAM, `mode`) action–angle chart (Lara eqs. 18–25)",
-        lambda cls, v, body, **o: cls.from_sam(*v, body=body, **o),
-        lambda s, body, **o: s.as_sam(body, **o),
-        needs_body=True,
-        options=("mode",),
+        _from_sam,
+        _as_sam,
         source="andoyer.charts.sam",
     )
 )

@@ -62,7 +62,7 @@ Near the separatrix the chart is ill-conditioned (``P_ℓ`` grows like ``log(1/|
 from __future__ import annotations
 
 import warnings
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -70,11 +70,15 @@ from numpy.typing import ArrayLike, NDArray
 from andoyer._fastmath import wrap_2pi
 from andoyer._validation import broadcast_finite, check_momenta
 from andoyer.body import RigidBody
-from andoyer.charts.andoyer import Andoyer
+from andoyer.charts.andoyer import Andoyer, hub_to_andoyer
 from andoyer.charts.registry import Chart, register
 from andoyer.charts.sadov_frame import SadovFrame
 from andoyer.charts.sadov_orbit import Orbit, angles, orbit, point
 from andoyer.charts.singular import SingularChartWarning
+from andoyer.state_charts import check_body
+
+if TYPE_CHECKING:
+    from andoyer.state import State
 
 __all__ = ["Serret", "andoyer_to_serret", "serret_to_andoyer"]
 
@@ -336,16 +340,104 @@ def serret_to_andoyer(
 
 
 # On the command line Serret's t0 is measured from each row's own instant (the state at t = 0).
+# The chart's methods of State (installed by andoyer.charts.registry.install): their signatures
+# are the chart's, written once here. ``cls`` and ``self`` are the State class and a state.
+
+
+def _as_serret(self, body: RigidBody, t: ArrayLike = 0.0, *, epoch: ArrayLike | None = None):
+    r"""Serret's elements ``(g0, h, t0, G, H, T, sign)`` of the state taken at time ``t``.
+
+    ``(g0, h, -t0)`` are conjugate to ``(G, H, T)``, ``T`` the kinetic energy; ``t0`` is
+    the last passage at or before ``epoch`` (default ``t``) of the body momentum through the
+    reference point ``φ_ℓ = 0`` of its polhode, ``t - t0 ≡ φ_ℓ/ω_ℓ (mod P_ℓ)``, and ``g0``
+    is ``g`` at ``t0``. See :mod:`andoyer.charts.serret` for the definitions and the
+    states where the chart is undefined (``ValueError``).
+
+    Parameters
+    ----------
+    body : RigidBody
+        The body.
+    t : array_like, shape (...)
+        The time of the state; broadcast with the state's shape.
+    epoch : array_like, shape (...), optional
+        The time at or before which ``t0`` is taken (default ``t``).
+
+    Returns
+    -------
+    Serret of arrays, each of shape (...)
+        The seven elements, of the broadcast shape.
+
+    Examples
+    --------
+    >>> from andoyer import FreeRotation, RigidBody, State
+    >>> body = RigidBody(1.0, 2.0, 3.0)
+    >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.9, 1.0, 0.2)
+    >>> later = FreeRotation(body).propagate(s, 7.0)
+    >>> a, b = s.as_serret(body), later.as_serret(body, t=7.0, epoch=0.0)
+    >>> bool(max(abs(x - y) for x, y in zip(a, b)) < 1e-12)
+    True
+    """
+    a = hub_to_andoyer(self._q, self._m, stacklevel=2)
+    return andoyer_to_serret(check_body(body), *a, t=t, epoch=epoch, stacklevel=3)
+
+
+def _from_serret(
+    cls: type[State],
+    body: RigidBody,
+    g0: ArrayLike,
+    h: ArrayLike,
+    t0: ArrayLike,
+    G: ArrayLike,
+    H: ArrayLike,
+    T: ArrayLike,
+    sign: ArrayLike = 1.0,
+    *,
+    t: ArrayLike = 0.0,
+) -> State:
+    """State at time ``t`` from Serret's elements; inverse of :meth:`as_serret`.
+
+    ``sign`` (``±1``) picks the orbit among the two with the same ``(G, T)``: the sign
+    of ``L`` in circulation, the lobe ``±b_e`` in libration.
+
+    Parameters
+    ----------
+    body : RigidBody
+        The body.
+    g0, h : array_like, shape (...)
+        The angles in radians.
+    t0 : array_like, shape (...)
+        The time of passage through the polhode's reference point.
+    G, H, T : array_like, shape (...)
+        The momentum, its projection on the reference axis and the kinetic energy.
+    sign : array_like, shape (...)
+        ``±1``.
+    t : array_like, shape (...)
+        The time of the state. All arguments broadcast.
+
+    Returns
+    -------
+    State, shape (...)
+        The states at ``t``.
+
+    Examples
+    --------
+    >>> from andoyer import RigidBody, State
+    >>> body = RigidBody(1.0, 2.0, 3.0)
+    >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.9, 1.0, 0.2)
+    >>> back = State.from_serret(body, *s.as_serret(body, t=2.0), t=2.0)
+    >>> bool(abs(back.m_body - s.m_body).max() < 1e-13)
+    True
+    """
+    return cls.from_andoyer(*serret_to_andoyer(check_body(body), g0, h, t0, G, H, T, sign, t))
+
 register(
     Chart(
         "serret",
         Serret._fields,
         ("g0", "h"),
         "Serret's elements, `(g0, h, -t0)` conjugate to `(G, H, T)`, of the state at `t`",
-        lambda cls, v, body, **o: cls.from_serret(body, *v, **o),
-        lambda s, body, **o: s.as_serret(body, **o),
-        needs_body=True,
-        options=("t", "epoch"),
+        _from_serret,
+        _as_serret,
         source="andoyer.charts.serret",
     )
 )
