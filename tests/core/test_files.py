@@ -33,9 +33,14 @@ def test_atomic_replace_keeps_mode_of_replaced_file(tmp_path, umask_027):
 def test_atomic_replace_failure_leaves_previous_file_and_no_debris(tmp_path):
     target = tmp_path / "keep.txt"
     target.write_text("previous")
-    with pytest.raises(RuntimeError, match="boom"), atomic_replace(target) as part:
-        part.write_text("half")
-        raise RuntimeError("boom")
+
+    def write_half_and_fail():
+        with atomic_replace(target) as part:
+            part.write_text("half")
+            raise RuntimeError("boom")
+
+    with pytest.raises(RuntimeError, match="boom"):
+        write_half_and_fail()
     assert target.read_text() == "previous"
     assert [p.name for p in tmp_path.iterdir()] == ["keep.txt"]
 
