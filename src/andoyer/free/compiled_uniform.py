@@ -99,9 +99,10 @@ def _setup(m0, axis, I_s, I_t, q0, out, period, rate):
             continue
         x, y, z, w = q0[i, 0], q0[i, 1], q0[i, 2], q0[i, 3]
         # m_ref = rot(q₀) m₀, the rotation matrix of the unit quaternion q₀
-        r0 = (w * w + x * x - y * y - z * z) * m[0] + 2.0 * (x * y - z * w) * m[1] + 2.0 * (x * z + y * w) * m[2]
-        r1 = 2.0 * (x * y + z * w) * m[0] + (w * w - x * x + y * y - z * z) * m[1] + 2.0 * (y * z - x * w) * m[2]
-        r2 = 2.0 * (x * z - y * w) * m[0] + 2.0 * (y * z + x * w) * m[1] + (w * w - x * x - y * y + z * z) * m[2]
+        xx, yy, zz, ww = x * x, y * y, z * z, w * w
+        r0 = (ww + xx - yy - zz) * m[0] + 2.0 * (x * y - z * w) * m[1] + 2.0 * (x * z + y * w) * m[2]
+        r1 = 2.0 * (x * y + z * w) * m[0] + (ww - xx + yy - zz) * m[1] + 2.0 * (y * z - x * w) * m[2]
+        r2 = 2.0 * (x * z - y * w) * m[0] + 2.0 * (y * z + x * w) * m[1] + (ww - xx - yy + zz) * m[2]
         if gh > 0:
             r0, r1, r2 = r0 / gh, r1 / gh, r2 / gh
         else:

@@ -38,6 +38,8 @@ same source runs interpreted on arrays of states (one Python loop over the steps
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numpy.typing import NDArray
 
@@ -159,6 +161,83 @@ def _advance(mx, my, mz, g, t, h, n, flows, weights, first, last, c0, k0, coef, 
     return mx, my, mz
 
 
+#: Below this angle (rad) the compiled kernel takes ``sin φ`` and ``1 − cos φ`` from their Taylor
+#: series to ``φ⁷`` and ``φ⁸``: the first neglected terms are below 1e-22 of the sums.
+_SMALL_ANGLE = 0.0078125
+
+
+@jit(inline=True)
+def _turn_compiled(x, y, z, kx, ky, kz, angle):
+    """:func:`turn_about` by ``angle`` (rate × time), for scalars: series at small angles.
+
+    ``s = sin φ`` and ``v = 2 sin²(φ/2) = 1 − cos φ`` by Horner in ``φ²`` (an ulp from
+    libm's). A rotation is a chain of dependent operations; the series is a shorter chain
+    than two calls of ``sin`` (the secular steps turn ``M`` by ~1e-3 rad).
+    """
+    d = x * kx + y * ky + z * kz
+    phi = angle * d
+    if abs(phi) <= _SMALL_ANGLE:
+        u = phi * phi
+        s = phi + phi * u * (-1.0 / 6 + u * (1.0 / 120 - u / 5040))
+        v = u * (0.5 + u * (-1.0 / 24 + u * (1.0 / 720 - u / 40320)))
+    else:
+        s = math.sin(phi)
+        v = 2.0 * math.sin(0.5 * phi) ** 2
+    cx = ky * z - kz * y
+    cy = kz * x - kx * z
+    cz = kx * y - ky * x
+    return x + s * cx + v * (d * kx - x), y + s * cy + v * (d * ky - y), z + s * cz + v * (d * kz - z)
+
+
+@jit
+def _advance_compiled(mx, my, mz, g, t, h, n, flows, weights, first, last, c0, k0, coef, si, ci, node0, rate):
+    """:func:`_advance` for one state, compiled: the same flows, cheaper sines.
+
+    The rotations by :func:`_turn_compiled`; the nodes of the drifting normals by the
+    addition theorem from their values at the start of each step (one ``sin, cos`` per
+    perturber and step), the advance within a step (the same for every step) tabulated
+    once. Agrees with :func:`_advance` to round-off (the tests compare them).
+    """
+    size = flows.shape[0]
+    inner = si.shape[0]
+    # time since the step's start at each flow, and the node's advance there (sin, cos)
+    offs = np.empty((size, 2))
+    tau = 0.0
+    for j in range(size):
+        f = flows[j]
+        if f == 0:
+            tau += weights[j] * h
+        else:
+            a = rate[f - 1] * tau
+            offs[j, 0], offs[j, 1] = math.sin(a), math.cos(a)
+    base = np.empty((inner, 2))
+    w = first * h
+    t = t + w  # the outer flow carries time; its rotation does not depend on it
+    mx, my, mz = _turn_compiled(mx, my, mz, k0[0], k0[1], k0[2], c0 * w)
+    scale = g / math.sqrt(mx * mx + my * my + mz * mz)
+    mx, my, mz = mx * scale, my * scale, mz * scale
+    for step in range(n):
+        for p in range(inner):
+            node = node0[p] + rate[p] * t
+            base[p, 0], base[p, 1] = math.sin(node), math.cos(node)
+        for j in range(size):
+            f = flows[j]
+            w = weights[j] * h
+            if f == 0:
+                if j == size - 1 and step == n - 1:
+                    w = last * h
+                t = t + w
+                mx, my, mz = _turn_compiled(mx, my, mz, k0[0], k0[1], k0[2], c0 * w)
+            else:
+                p = f - 1
+                sn = base[p, 0] * offs[j, 1] + base[p, 1] * offs[j, 0]
+                cn = base[p, 1] * offs[j, 1] - base[p, 0] * offs[j, 0]
+                mx, my, mz = _turn_compiled(mx, my, mz, si[p] * sn, -si[p] * cn, ci[p], coef[p] * w)
+        scale = g / math.sqrt(mx * mx + my * my + mz * mz)
+        mx, my, mz = mx * scale, my * scale, mz * scale
+    return mx, my, mz
+
+
 @jit
 def _run_compiled(m0, g, c0, coef, k0, si, ci, node0, rate, h, index, offset, flows, weights, a, b, out):
     for i in range(m0.shape[0]):
@@ -167,14 +246,14 @@ def _run_compiled(m0, g, c0, coef, k0, si, ci, node0, rate, h, index, offset, fl
         done = 0
         for j in range(index.shape[0]):
             if index[j] > done:
-                mx, my, mz = _advance(
+                mx, my, mz = _advance_compiled(
                     mx, my, mz, g[i], done * h, h, index[j] - done, flows, weights, a, b,
                     c0[i], k0, row, si, ci, node0, rate,
                 )  # fmt: skip
                 done = index[j]
             bx, by, bz = mx, my, mz
             if offset[j] != 0.0:
-                bx, by, bz = _advance(
+                bx, by, bz = _advance_compiled(
                     mx, my, mz, g[i], done * h, offset[j], 1, flows, weights, a, b,
                     c0[i], k0, row, si, ci, node0, rate,
                 )  # fmt: skip
