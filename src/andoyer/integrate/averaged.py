@@ -34,12 +34,12 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.integrate import solve_ivp
-from scipy.spatial.transform import Rotation
 
+from andoyer import _quaternion as quat
 from andoyer._limits import PhasePrecisionWarning, check_size
 from andoyer._validation import as_finite
-from andoyer.free import FreeRotation
-from andoyer.integrate.output import gather_states, output_times
+from andoyer.free.motion import FreeMotion
+from andoyer.integrate.output import gather_table, output_times
 from andoyer.integrate.secular import propagate_momentum
 from andoyer.perturbations.model import Model
 from andoyer.state import State
@@ -192,14 +192,12 @@ def integrate_secular(
             msg = f"expected the secular integration to succeed, got: {sol.message}"
             raise ValueError(msg)
         means.update({float(x): y.reshape(n, 3) for x, y in zip(sol.t, sol.y.T, strict=True)})
+    # the exact free motion of the initial states at every distinct time (U, N, ·); the state
+    # and the times were validated above, so FreeMotion is given its arrays directly
     with warnings.catch_warnings():  # the phase of the fast angles was checked above, with the output times
         warnings.simplefilter("ignore", PhasePrecisionWarning)
-        free = FreeRotation(model.body).propagate(State.from_quaternion(q0, m0), (unique - t0)[:, None])
+        m_free, q_free = FreeMotion(model.body.moments, m0, q0).propagate((unique - t0)[:, None])
     h0, I0 = _node_and_inclination(M0)
-    values: dict[float, tuple[Array, Array]] = {}
-    for k, time in enumerate(unique):
-        h, inclination = _node_and_inclination(means[float(time)])
-        turn = Rotation.from_euler("ZXZ", np.stack([h, inclination - I0, -h0], -1))
-        q = (turn * Rotation.from_quat(free.quaternion[k])).as_quat()
-        values[float(time)] = (q, free.m_body[k])
-    return gather_states(state, times, unique, shape, values)
+    h, inclination = _node_and_inclination(np.stack([means[float(x)] for x in unique]))
+    turn = quat.from_zxz(h, inclination - I0, -h0)  # Rz(h̄) Rx(Ī − I₀) Rz(−h₀), (U, N, 4)
+    return gather_table(state, times, unique, shape, quat.multiply(turn, q_free), m_free, conserved=True)
