@@ -24,10 +24,12 @@ from typing import NamedTuple
 import numpy as np
 
 from andoyer._jit import jit
+from andoyer.free.regime import Regime
 from andoyer.free.scalar_dd import dd_add, dd_div, dd_mul, dd_sqrt, two_prod, two_sum
 
 __all__ = ["COLUMNS", "UniformTable", "evaluate", "fill", "polhode_limit", "uniform_table"]
 
+_AXISYMMETRIC = int(Regime.AXISYMMETRIC)
 _TWO_PI_HI, _TWO_PI_LO = 2.0 * 3.141592653589793, 2.0 * 1.2246467991473532e-16
 
 #: Columns of the table: ``spin`` (hi, lo), ``body`` (hi, lo), ``m_par``, ``m_perp``,
@@ -62,11 +64,32 @@ def _qmul(ax, ay, az, aw, bx, by, bz, bw):
 
 
 @jit
-def _setup(m0, axis, I_s, I_t, q0, out, period, rate):
+def _axes(I, m, axisymmetric):
+    """:func:`andoyer.free.uniform.uniform_axes` of one state: the axis ``ŝ``, ``I_s`` and ``I_t``."""
+    o0, o1, o2 = 0, 1, 2  # a stable sort of the moments
+    if I[o1] < I[o0]:
+        o0, o1 = o1, o0
+    if I[o2] < I[o1]:
+        o1, o2 = o2, o1
+        if I[o1] < I[o0]:
+            o0, o1 = o1, o0
+    if axisymmetric:
+        if I[o0] == I[o1]:
+            return o2, I[o2], I[o0]
+        return o0, I[o0], I[o2]
+    k = 0  # the largest momentum component, the first of equals
+    for j in range(1, 3):
+        if abs(m[j]) > abs(m[k]):
+            k = j
+    return k, I[k], I[k]
+
+
+@jit
+def _setup(moments, m0, regime, q0, out, period, rate):
     attitude = q0.shape[0] > 0
     for i in range(m0.shape[0]):
         m = m0[i]
-        k = axis[i]
+        k, I_s, I_t = _axes(moments[i], m, regime[i] == _AXISYMMETRIC)
         ms = m[k]
         a0, a1 = two_prod(m[0], m[0])
         b0, b1 = two_prod(m[1], m[1])
@@ -74,12 +97,12 @@ def _setup(m0, axis, I_s, I_t, q0, out, period, rate):
         gh, gl = dd_add(a0, a1, b0, b1)
         gh, gl = dd_add(gh, gl, c0, c1)
         gh, gl = dd_sqrt(gh, gl)
-        dh, dl = dd_mul(I_t[i], 0.0, _TWO_PI_HI, _TWO_PI_LO)
+        dh, dl = dd_mul(I_t, 0.0, _TWO_PI_HI, _TWO_PI_LO)
         sh, sl = dd_div(gh, gl, dh, dl)  # Ω/2π = G/(2π I_t)
         # λ = m_s (I_t − I_s)/(I_s I_t), the difference exact, then / 2π
-        xh, xl = two_sum(I_t[i], -I_s[i])
+        xh, xl = two_sum(I_t, -I_s)
         xh, xl = dd_mul(xh, xl, ms, 0.0)
-        ph, pl = two_prod(I_s[i], I_t[i])
+        ph, pl = two_prod(I_s, I_t)
         lh, ll = dd_div(xh, xl, ph, pl)
         lh, ll = dd_div(lh, ll, _TWO_PI_HI, _TWO_PI_LO)
         row = out[i]
@@ -118,19 +141,20 @@ def _setup(m0, axis, I_s, I_t, q0, out, period, rate):
             row[25 + j] = q4[j]
 
 
-def uniform_table(m0, axis, I_s, I_t, q0=None):
+def uniform_table(moments, m0, regime, q0=None):
     """Constants of regular precession about a body axis (or steady spin), compiled.
 
-    The arguments and the quantities are those of :func:`andoyer.free.uniform.uniform`.
+    The axis and moments of :func:`andoyer.free.uniform.uniform_axes` and the constants of
+    :func:`andoyer.free.uniform.uniform`, in one loop.
 
     Parameters
     ----------
-    m0 : ndarray, shape (N, 3)
-        Body angular momenta.
-    axis : ndarray of int, shape (N,)
-        The body axis ``ŝ`` (:func:`andoyer.free.uniform.uniform_axes`).
-    I_s, I_t : ndarray, shape (N,)
-        Axial and transverse moments.
+    moments, m0 : ndarray, shape (N, 3)
+        Moments and body angular momenta.
+    regime : ndarray of int, shape (N,)
+        :class:`andoyer.free.regime.Regime` codes: axisymmetric states turn about the axis of
+        the distinct moment; the others (steady spins, spheres, rest) about the largest
+        momentum component, with ``λ = 0``.
     q0 : ndarray, shape (N, 4), optional
         Initial attitudes (unit quaternions, scalar last).
 
@@ -140,7 +164,7 @@ def uniform_table(m0, axis, I_s, I_t, q0=None):
 
     Examples
     --------
-    >>> u = uniform_table(np.array([[0.5, 0.0, 1.0]]), np.array([2]), np.array([3.0]), np.array([2.0]))
+    >>> u = uniform_table(np.array([[2.0, 2.0, 3.0]]), np.array([[0.5, 0.0, 1.0]]), np.array([3]))
     >>> round(float(u.period[0]), 12), round(float(u.precession_rate[0]), 12)
     (37.699111843078, 0.559016994375)
     """
@@ -149,10 +173,9 @@ def uniform_table(m0, axis, I_s, I_t, q0=None):
     period, rate = np.empty(n), np.empty(n)
     q = np.zeros((0, 4)) if q0 is None else np.ascontiguousarray(q0, dtype=np.float64)
     _setup(
+        np.ascontiguousarray(moments, dtype=np.float64),
         np.ascontiguousarray(m0, dtype=np.float64),
-        np.ascontiguousarray(axis, dtype=np.int64),
-        np.ascontiguousarray(I_s, dtype=np.float64),
-        np.ascontiguousarray(I_t, dtype=np.float64),
+        np.ascontiguousarray(regime, dtype=np.int64),
         q,
         out,
         period,
@@ -225,10 +248,10 @@ def fill(c, pos, rows, t, scale, outs):
 
     Examples
     --------
-    >>> u = uniform_table(np.array([[0.5, 0.0, 1.0]]), np.array([2]), np.array([3.0]), np.array([2.0]))
+    >>> u = uniform_table(np.array([[2.0, 2.0, 3.0]]), np.array([[0.5, 0.0, 1.0]]), np.array([3]))
     >>> m = np.empty((1, 1, 3))
     >>> one = np.array([0])
-    >>> fill(u, one, one, np.array([[u.period[0] / 4]]), (np.zeros(1), one), (m, None))
+    >>> fill(u, one, one, np.array([[u.period[0] / 4]]), (one, one + 1), (m, None))  # momentum × 2
     >>> m.round(12).tolist()
     [[[0.0, 1.0, 2.0]]]
     """
@@ -270,7 +293,7 @@ def evaluate(c, t, attitude=True):
 
     Examples
     --------
-    >>> u = uniform_table(np.array([[0.5, 0.0, 1.0]]), np.array([2]), np.array([3.0]), np.array([2.0]))
+    >>> u = uniform_table(np.array([[2.0, 2.0, 3.0]]), np.array([[0.5, 0.0, 1.0]]), np.array([3]))
     >>> m, _ = evaluate(u, np.array([[u.period[0] / 4]]), attitude=False)
     >>> [round(float(v[0, 0]), 12) for v in m]
     [0.0, 0.5, 1.0]

@@ -182,10 +182,12 @@ class FreeMotion:
             groups.append((_sep.evaluate, idx, const))
         if np.any(uni):
             idx = np.nonzero(uni)[0]
-            axis, I_s, I_t = _uni.uniform_axes(moments[idx], m0[idx], regime[idx])
-            # compiled, the set-up and evaluation of one body take µs instead of ~0.5 ms
-            setup, kernel = (_cuni.uniform_table, _cuni.evaluate) if NUMBA else (_uni.uniform, _uni.evaluate)
-            const = setup(m0[idx], axis, I_s, I_t, None if q0 is None else q0[idx])
+            qi = None if q0 is None else q0[idx]
+            if NUMBA:  # compiled, the set-up and evaluation of one body take µs instead of ~0.5 ms
+                const, kernel = _cuni.uniform_table(moments[idx], m0[idx], regime[idx], qi), _cuni.evaluate
+            else:
+                axis, I_s, I_t = _uni.uniform_axes(moments[idx], m0[idx], regime[idx])
+                const, kernel = _uni.uniform(m0[idx], axis, I_s, I_t, qi), _uni.evaluate
             period[idx] = const.period
             rate[idx] = const.precession_rate
             lim = spin[idx] & (regime[idx] != Regime.SEPARATRIX)
