@@ -40,7 +40,7 @@ from andoyer._limits import PhasePrecisionWarning, check_size
 from andoyer._validation import as_finite
 from andoyer.free.motion import FreeMotion
 from andoyer.integrate.output import gather_table, output_times
-from andoyer.integrate.secular import propagate_momentum
+from andoyer.integrate.secular import propagate_checked
 from andoyer.perturbations.model import Model
 from andoyer.state import State
 
@@ -166,7 +166,6 @@ def integrate_secular(
             rate = rate + average.momentum_rate(time, M, L)
         return rate.ravel()
 
-    scale = max(float(np.max(np.linalg.norm(M0, axis=-1), initial=0.0)), np.finfo(float).tiny)
     means: dict[float, Array] = {t0: M0}
     # One averaged term whose flow is exact rotations (the gravity gradient on Kepler orbits):
     # the compiled composition, forwards; anything else (frames, several terms, backwards): DOP853.
@@ -176,9 +175,10 @@ def integrate_secular(
         if targets.size == 0:
             continue
         if rotations is not None and direction > 0:
-            M = propagate_momentum(rotations, M0, L, targets, rtol=rtol, t0=t0)
+            M = propagate_checked(rotations, M0, L, targets, rtol=rtol, t0=t0)  # inputs checked above
             means.update({float(x): M[k] for k, x in enumerate(targets)})
             continue
+        scale = max(float(np.max(np.linalg.norm(M0, axis=-1), initial=0.0)), np.finfo(float).tiny)
         sol = solve_ivp(
             rhs,
             (t0, float(targets[-1] if direction > 0 else targets[0])),
