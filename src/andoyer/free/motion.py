@@ -14,7 +14,8 @@ Each state is routed to one kernel:
 With numba installed (:data:`andoyer._jit.NUMBA`) states are classified, and the
 triaxial ones prepared and evaluated, in compiled loops (:mod:`~andoyer.free.compiled_regime`,
 :mod:`~andoyer.free.compiled_setup`, :mod:`~andoyer.free.compiled_eval`: the same formulas
-and accuracy, ~1.5 µs a body to set up and evaluate once, against ~10 µs).
+and accuracy, ~1.5 µs a body to set up and evaluate once, against ~10 µs), and so are the
+uniform motions (:mod:`~andoyer.free.compiled_uniform`).
 
 With many epochs per state (:attr:`FreeMotion.periodic_epochs`), the triaxial states are
 evaluated through a piecewise-polynomial representation of one period built once per state
@@ -191,16 +192,16 @@ class FreeMotion:
             period[idx] = const.period
             rate[idx] = const.precession_rate
             lim = spin[idx] & (regime[idx] != Regime.SEPARATRIX)
-            if np.any(lim) and NUMBA:  # steady spin about the polhode axis: the limit of nearby polhodes
+            if np.any(lim):  # steady spin about the polhode axis: the limit of nearby polhodes
                 j = idx[lim]
-                period[j], rate[j] = _cuni.polhode_limit(moments[j], m0[j], regime[j] == Regime.LAM)
-            elif np.any(lim):
-                j = idx[lim]
-                frame = polhode_frame(moments[j], m0[j], regime[j] == Regime.LAM)
-                e13, e23, G, w3 = frame.e13[0], frame.e23[0], frame.G[0], frame.w3[0]
-                om = G * np.sqrt(e13 * e23)
-                period[j] = 2.0 * np.pi / om
-                rate[j] = G * w3 + frame.s * om
+                if NUMBA:
+                    period[j], rate[j] = _cuni.polhode_limit(moments[j], m0[j], regime[j] == Regime.LAM)
+                else:
+                    frame = polhode_frame(moments[j], m0[j], regime[j] == Regime.LAM)
+                    e13, e23, G, w3 = frame.e13[0], frame.e23[0], frame.G[0], frame.w3[0]
+                    om = G * np.sqrt(e13 * e23)
+                    period[j] = 2.0 * np.pi / om
+                    rate[j] = G * w3 + frame.s * om
             groups.append((kernel, idx, const))
         self._groups = [Group(k, idx, c, tshift[idx], b[idx]) for k, idx, c in groups]
         self._scaled_periods = (period, rate, tshift)
