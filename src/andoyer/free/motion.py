@@ -28,6 +28,7 @@ attitude quaternions scalar last, rotating body vectors into the reference frame
 
 from __future__ import annotations
 
+import math
 from typing import NamedTuple
 
 import numpy as np
@@ -136,10 +137,9 @@ class FreeMotion:
                 raise ValueError("expected finite, non-zero quaternions q0, got zero or non-finite")
             q0 = q0 / norm
             shape = np.broadcast_shapes(shape, q0.shape[:-1])
-            q0 = np.broadcast_to(q0, (*shape, 4)).reshape(-1, 4)
+            q0 = _flat(q0, shape)
         self.shape = shape
-        moments = np.broadcast_to(moments, (*shape, 3)).reshape(-1, 3)
-        m0 = np.broadcast_to(m0, (*shape, 3)).reshape(-1, 3)
+        moments, m0 = _flat(moments, shape), _flat(m0, shape)
         n = moments.shape[0]
         self._spin = (moments, m0)  # their spin rate bounds every phase rate (andoyer._limits)
         self._spin_bound = None
@@ -162,7 +162,7 @@ class FreeMotion:
         spin = triax & (zeros >= 2)
         sep = (regime == Regime.SEPARATRIX) & ~spin
         tri = triax & ~sep & ~spin
-        if np.any(tri):
+        if tri.any():
             idx = np.nonzero(tri)[0]
             idx, flat, tri_groups, const, self._pending = _triaxial_groups(
                 moments[idx], m0[idx], regime[idx] == Regime.LAM, None if q0 is None else q0[idx], idx
@@ -174,14 +174,14 @@ class FreeMotion:
             groups += tri_groups
         uni = ~triax | spin
 
-        if np.any(sep):
+        if sep.any():
             idx = np.nonzero(sep)[0]
             frame = polhode_frame(moments[idx], m0[idx], np.zeros(idx.size, dtype=bool))
             const = _sep.separatrix(frame, None if q0 is None else q0[idx])
             period[idx] = np.inf
             rate[idx] = 2.0 * np.pi * const.spin.hi
             groups.append((_sep.evaluate, idx, const))
-        if np.any(uni):
+        if uni.any():
             idx = np.nonzero(uni)[0]
             qi = None if q0 is None else q0[idx]
             if NUMBA:  # compiled, the set-up and evaluation of one body take µs instead of ~0.5 ms
@@ -192,7 +192,7 @@ class FreeMotion:
             period[idx] = const.period
             rate[idx] = const.precession_rate
             lim = spin[idx] & (regime[idx] != Regime.SEPARATRIX)
-            if np.any(lim):  # steady spin about the polhode axis: the limit of nearby polhodes
+            if lim.any():  # steady spin about the polhode axis: the limit of nearby polhodes
                 j = idx[lim]
                 if NUMBA:
                     period[j], rate[j] = _cuni.polhode_limit(moments[j], m0[j], regime[j] == Regime.LAM)
@@ -308,8 +308,8 @@ class FreeMotion:
         if self._spin_bound is None:
             self._spin_bound = spin_bound(*self._spin)
         check_spin_phase(*self._spin, t, "the free motion", self._spin_bound)
-        n = max(1, int(np.prod(self.shape)))
-        per_state = np.prod(np.broadcast_shapes(self.shape, t.shape)) / n
+        n = max(1, math.prod(self.shape))
+        per_state = math.prod(np.broadcast_shapes(self.shape, t.shape)) / n
         groups = self._groups
         if per_state >= self.periodic_epochs:
             groups = self._periodic_groups(attitude)
@@ -328,6 +328,12 @@ class FreeMotion:
                     groups.append(group)
             self._periodic[attitude] = groups
         return self._periodic[attitude]
+
+
+def _flat(a, shape):
+    """``a`` (..., k) broadcast to ``shape + (k,)`` and flattened to (N, k) (no broadcast if not needed)."""
+    k = a.shape[-1]
+    return a.reshape(-1, k) if a.shape[:-1] == shape else np.broadcast_to(a, (*shape, k)).reshape(-1, k)
 
 
 def _triaxial_groups(moments, m0, lam, q0, idx):
