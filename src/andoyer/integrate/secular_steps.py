@@ -34,6 +34,10 @@ step each and do not shorten the grid's step.
 
 The loop is compiled by :func:`andoyer.free.lean.jit` when numba is installed; the
 same source runs interpreted on arrays of states (one Python loop over the steps).
+Compiled, a state's loop (:func:`_advance_compiled`) takes ``sin φ`` and ``1 − cos φ`` of
+the small rotation angles from short series and the drifting normals by the addition
+theorem from their value at the start of each step: the same flows, agreeing with the
+interpreted loop to round-off, at half the cost.
 """
 
 from __future__ import annotations
