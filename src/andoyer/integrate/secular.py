@@ -111,11 +111,27 @@ def propagate_checked(
 ) -> Array:
     """:func:`propagate_momentum` by rotations, for arrays validated by the caller.
 
-    ``M0`` (..., 3) and ``L`` (...) finite float arrays of one shape, ``times`` (K,) finite,
-    increasing and none before ``t0``: the checks of :func:`propagate_momentum`, which
-    :func:`andoyer.integrate.averaged.integrate_secular` has made on its state and times
-    already (each costs microseconds, against a kernel of a few hundred for 1000 years).
-    ``order``, ``rtol`` and ``max_step`` are still checked here.
+    The checks of :func:`propagate_momentum` on ``M0``, ``L`` and ``times`` are left to the
+    caller (:func:`andoyer.integrate.averaged.integrate_secular` has made them on its state
+    and times already: each costs microseconds, against a kernel of a few hundred for 1000
+    years); ``order``, ``rtol`` and ``max_step`` are still checked here.
+
+    Parameters
+    ----------
+    model : SecularGravityGradient
+        The averaged model.
+    M0 : numpy.ndarray, shape (..., 3)
+        Finite reference-frame angular momenta at ``t0``.
+    L : numpy.ndarray, shape (...)
+        Finite ``L = M·b3``, the shape of ``M0``'s states.
+    times : numpy.ndarray, shape (K,)
+        Finite output times, increasing, none before ``t0``.
+    rtol, order, max_step, t0
+        As in :func:`propagate_momentum`.
+
+    Returns
+    -------
+    numpy.ndarray, shape (K, ..., 3)
 
     Examples
     --------
