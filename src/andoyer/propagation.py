@@ -33,7 +33,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike
 
-from andoyer.integrate.averaged import integrate_secular, secular_parts
+from andoyer.integrate.averaged import integrate_secular
 from andoyer.integrate.reference import integrate_reference
 from andoyer.integrate.splitting import integrate_splitting
 from andoyer.perturbations.model import Model
@@ -139,5 +139,4 @@ def propagate(model: Model, state: State, t: ArrayLike, method: str = "reference
             msg = f"expected a step no longer than the span of the times ({span:.6g}), got step={step!r}"
             raise ValueError(msg)
         return integrate_splitting(model, state, t, **options)
-    secular_parts(model)
-    return integrate_secular(model, state, t, **options)
+    return integrate_secular(model, state, t, **options)  # it checks the model's terms first

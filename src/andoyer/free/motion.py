@@ -14,7 +14,8 @@ Each state is routed to one kernel:
 With numba installed (:data:`andoyer._jit.NUMBA`) states are classified, and the
 triaxial ones prepared and evaluated, in compiled loops (:mod:`~andoyer.free.compiled_regime`,
 :mod:`~andoyer.free.compiled_setup`, :mod:`~andoyer.free.compiled_eval`: the same formulas
-and accuracy, ~1.5 µs a body to set up and evaluate once, against ~10 µs).
+and accuracy, ~1.5 µs a body to set up and evaluate once, against ~10 µs), and so are the
+uniform motions (:mod:`~andoyer.free.compiled_uniform`).
 
 With many epochs per state (:attr:`FreeMotion.periodic_epochs`), the triaxial states are
 evaluated through a piecewise-polynomial representation of one period built once per state
@@ -27,6 +28,7 @@ attitude quaternions scalar last, rotating body vectors into the reference frame
 
 from __future__ import annotations
 
+import math
 from typing import NamedTuple
 
 import numpy as np
@@ -34,6 +36,7 @@ import numpy as np
 from andoyer._jit import NUMBA
 from andoyer._limits import check_spin_phase, spin_bound
 from andoyer.free import compiled_eval as _ceval
+from andoyer.free import compiled_uniform as _cuni
 from andoyer.free import constants as _const
 from andoyer.free import periodic as _periodic
 from andoyer.free import separatrix as _sep
@@ -134,10 +137,9 @@ class FreeMotion:
                 raise ValueError("expected finite, non-zero quaternions q0, got zero or non-finite")
             q0 = q0 / norm
             shape = np.broadcast_shapes(shape, q0.shape[:-1])
-            q0 = np.broadcast_to(q0, (*shape, 4)).reshape(-1, 4)
+            q0 = _flat(q0, shape)
         self.shape = shape
-        moments = np.broadcast_to(moments, (*shape, 3)).reshape(-1, 3)
-        m0 = np.broadcast_to(m0, (*shape, 3)).reshape(-1, 3)
+        moments, m0 = _flat(moments, shape), _flat(m0, shape)
         n = moments.shape[0]
         self._spin = (moments, m0)  # their spin rate bounds every phase rate (andoyer._limits)
         self._spin_bound = None
@@ -160,7 +162,7 @@ class FreeMotion:
         spin = triax & (zeros >= 2)
         sep = (regime == Regime.SEPARATRIX) & ~spin
         tri = triax & ~sep & ~spin
-        if np.any(tri):
+        if tri.any():
             idx = np.nonzero(tri)[0]
             idx, flat, tri_groups, const, self._pending = _triaxial_groups(
                 moments[idx], m0[idx], regime[idx] == Regime.LAM, None if q0 is None else q0[idx], idx
@@ -172,28 +174,35 @@ class FreeMotion:
             groups += tri_groups
         uni = ~triax | spin
 
-        if np.any(sep):
+        if sep.any():
             idx = np.nonzero(sep)[0]
             frame = polhode_frame(moments[idx], m0[idx], np.zeros(idx.size, dtype=bool))
             const = _sep.separatrix(frame, None if q0 is None else q0[idx])
             period[idx] = np.inf
             rate[idx] = 2.0 * np.pi * const.spin.hi
             groups.append((_sep.evaluate, idx, const))
-        if np.any(uni):
+        if uni.any():
             idx = np.nonzero(uni)[0]
-            axis, I_s, I_t = _uni.uniform_axes(moments[idx], m0[idx], regime[idx])
-            const = _uni.uniform(m0[idx], axis, I_s, I_t, None if q0 is None else q0[idx])
+            qi = None if q0 is None else q0[idx]
+            if NUMBA:  # compiled, the set-up and evaluation of one body take µs instead of ~0.5 ms
+                const, kernel = _cuni.uniform_table(moments[idx], m0[idx], regime[idx], qi), _cuni.evaluate
+            else:
+                axis, I_s, I_t = _uni.uniform_axes(moments[idx], m0[idx], regime[idx])
+                const, kernel = _uni.uniform(m0[idx], axis, I_s, I_t, qi), _uni.evaluate
             period[idx] = const.period
             rate[idx] = const.precession_rate
             lim = spin[idx] & (regime[idx] != Regime.SEPARATRIX)
-            if np.any(lim):  # steady spin about the polhode axis: the limit of nearby polhodes
+            if lim.any():  # steady spin about the polhode axis: the limit of nearby polhodes
                 j = idx[lim]
-                frame = polhode_frame(moments[j], m0[j], regime[j] == Regime.LAM)
-                e13, e23, G, w3 = frame.e13[0], frame.e23[0], frame.G[0], frame.w3[0]
-                om = G * np.sqrt(e13 * e23)
-                period[j] = 2.0 * np.pi / om
-                rate[j] = G * w3 + frame.s * om
-            groups.append((_uni.evaluate, idx, const))
+                if NUMBA:
+                    period[j], rate[j] = _cuni.polhode_limit(moments[j], m0[j], regime[j] == Regime.LAM)
+                else:
+                    frame = polhode_frame(moments[j], m0[j], regime[j] == Regime.LAM)
+                    e13, e23, G, w3 = frame.e13[0], frame.e23[0], frame.G[0], frame.w3[0]
+                    om = G * np.sqrt(e13 * e23)
+                    period[j] = 2.0 * np.pi / om
+                    rate[j] = G * w3 + frame.s * om
+            groups.append((kernel, idx, const))
         self._groups = [Group(k, idx, c, tshift[idx], b[idx]) for k, idx, c in groups]
         self._scaled_periods = (period, rate, tshift)
         self._periods = None
@@ -299,8 +308,8 @@ class FreeMotion:
         if self._spin_bound is None:
             self._spin_bound = spin_bound(*self._spin)
         check_spin_phase(*self._spin, t, "the free motion", self._spin_bound)
-        n = max(1, int(np.prod(self.shape)))
-        per_state = np.prod(np.broadcast_shapes(self.shape, t.shape)) / n
+        n = max(1, math.prod(self.shape))
+        per_state = math.prod(np.broadcast_shapes(self.shape, t.shape)) / n
         groups = self._groups
         if per_state >= self.periodic_epochs:
             groups = self._periodic_groups(attitude)
@@ -319,6 +328,12 @@ class FreeMotion:
                     groups.append(group)
             self._periodic[attitude] = groups
         return self._periodic[attitude]
+
+
+def _flat(a, shape):
+    """``a`` (..., k) broadcast to ``shape + (k,)`` and flattened to (N, k) (no broadcast if not needed)."""
+    k = a.shape[-1]
+    return a.reshape(-1, k) if a.shape[:-1] == shape else np.broadcast_to(a, (*shape, k)).reshape(-1, k)
 
 
 def _triaxial_groups(moments, m0, lam, q0, idx):

@@ -105,6 +105,8 @@ def check_inputs(moments, m0):
     if np.any(moments <= 0):
         bad = moments[moments <= 0].ravel()[:3]
         raise ValueError(f"expected positive moments of inertia, got {bad}")
+    if moments.shape == m0.shape:  # nothing to broadcast (one body per state, or one state)
+        return moments, m0
     shape = np.broadcast_shapes(moments.shape, m0.shape)
     return np.broadcast_to(moments, shape), np.broadcast_to(m0, shape)
 

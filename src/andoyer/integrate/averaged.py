@@ -34,13 +34,14 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.integrate import solve_ivp
-from scipy.spatial.transform import Rotation
 
+from andoyer import _quaternion as quat
+from andoyer._jit import NUMBA, jit
 from andoyer._limits import PhasePrecisionWarning, check_size
 from andoyer._validation import as_finite
-from andoyer.free import FreeRotation
-from andoyer.integrate.output import gather_states, output_times
-from andoyer.integrate.secular import propagate_momentum
+from andoyer.free.motion import FreeMotion
+from andoyer.integrate.output import gather_table, output_times
+from andoyer.integrate.secular import propagate_checked
 from andoyer.perturbations.model import Model
 from andoyer.state import State
 
@@ -106,6 +107,42 @@ def _node_and_inclination(M: Array) -> tuple[Array, Array]:
     return h, inclination
 
 
+def _turned(M0: Array, M: Array, q_free: Array) -> Array:
+    """``Rz(h̄) Rx(Ī − I₀) Rz(−h₀) ⊗ q_free``: the free attitudes turned with ``M₀ → M̄``, (U, N, 4).
+
+    ``M0`` (N, 3), ``M`` and ``q_free`` (U, N, ·). One compiled loop when numba is installed (a
+    mean state of one body is otherwise a few dozen numpy calls on single numbers), else numpy.
+    """
+    if not NUMBA:
+        h0, I0 = _node_and_inclination(M0)
+        h, inclination = _node_and_inclination(M)
+        return quat.multiply(quat.from_zxz(h, inclination - I0, -h0), q_free)
+    out = np.empty(q_free.shape)
+    _turned_compiled(M0, M, q_free, out)
+    return out
+
+
+@jit
+def _turned_compiled(M0, M, q_free, out):
+    for i in range(M0.shape[0]):
+        h0 = np.arctan2(M0[i, 0], -M0[i, 1])
+        I0 = np.arctan2(np.hypot(M0[i, 0], M0[i, 1]), M0[i, 2])
+        for k in range(M.shape[0]):
+            x, y, z = M[k, i, 0], M[k, i, 1], M[k, i, 2]
+            h = np.arctan2(x, -y)
+            # quaternion of Rz(a) Rx(b) Rz(c), as andoyer._quaternion.from_zxz
+            a, b, c = h, np.arctan2(np.hypot(x, y), z) - I0, -h0
+            half_sum, half_diff = 0.5 * (a + c), 0.5 * (a - c)
+            cb, sb = np.cos(0.5 * b), np.sin(0.5 * b)
+            px, py = sb * np.cos(half_diff), sb * np.sin(half_diff)
+            pz, pw = cb * np.sin(half_sum), cb * np.cos(half_sum)
+            qx, qy, qz, qw = q_free[k, i, 0], q_free[k, i, 1], q_free[k, i, 2], q_free[k, i, 3]
+            out[k, i, 0] = pw * qx + px * qw + py * qz - pz * qy
+            out[k, i, 1] = pw * qy - px * qz + py * qw + pz * qx
+            out[k, i, 2] = pw * qz + px * qy - py * qx + pz * qw
+            out[k, i, 3] = pw * qw - px * qx - py * qy - pz * qz
+
+
 def integrate_secular(
     model: Model, state: State, t: ArrayLike, t0: float = 0.0, rtol: float = 1e-12
 ) -> State:
@@ -166,7 +203,6 @@ def integrate_secular(
             rate = rate + average.momentum_rate(time, M, L)
         return rate.ravel()
 
-    scale = max(float(np.max(np.linalg.norm(M0, axis=-1), initial=0.0)), np.finfo(float).tiny)
     means: dict[float, Array] = {t0: M0}
     # One averaged term whose flow is exact rotations (the gravity gradient on Kepler orbits):
     # the compiled composition, forwards; anything else (frames, several terms, backwards): DOP853.
@@ -176,9 +212,10 @@ def integrate_secular(
         if targets.size == 0:
             continue
         if rotations is not None and direction > 0:
-            M = propagate_momentum(rotations, M0, L, targets, rtol=rtol, t0=t0)
+            M = propagate_checked(rotations, M0, L, targets, rtol=rtol, t0=t0)  # inputs checked above
             means.update({float(x): M[k] for k, x in enumerate(targets)})
             continue
+        scale = max(float(np.max(np.linalg.norm(M0, axis=-1), initial=0.0)), np.finfo(float).tiny)
         sol = solve_ivp(
             rhs,
             (t0, float(targets[-1] if direction > 0 else targets[0])),
@@ -192,14 +229,10 @@ def integrate_secular(
             msg = f"expected the secular integration to succeed, got: {sol.message}"
             raise ValueError(msg)
         means.update({float(x): y.reshape(n, 3) for x, y in zip(sol.t, sol.y.T, strict=True)})
+    # the exact free motion of the initial states at every distinct time (U, N, ·); the state
+    # and the times were validated above, so FreeMotion is given its arrays directly
     with warnings.catch_warnings():  # the phase of the fast angles was checked above, with the output times
         warnings.simplefilter("ignore", PhasePrecisionWarning)
-        free = FreeRotation(model.body).propagate(State.from_quaternion(q0, m0), (unique - t0)[:, None])
-    h0, I0 = _node_and_inclination(M0)
-    values: dict[float, tuple[Array, Array]] = {}
-    for k, time in enumerate(unique):
-        h, inclination = _node_and_inclination(means[float(time)])
-        turn = Rotation.from_euler("ZXZ", np.stack([h, inclination - I0, -h0], -1))
-        q = (turn * Rotation.from_quat(free.quaternion[k])).as_quat()
-        values[float(time)] = (q, free.m_body[k])
-    return gather_states(state, times, unique, shape, values)
+        m_free, q_free = FreeMotion(model.body.moments, m0, q0).propagate((unique - t0)[:, None])
+    q = _turned(M0, np.stack([means[float(x)] for x in unique]), q_free)
+    return gather_table(state, times, unique, shape, q, m_free, conserved=True)

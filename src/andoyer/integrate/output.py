@@ -58,11 +58,30 @@ def gather_states(
 
     ``values[t] = (q, m)`` holds every state (flattened, (N, 4) and (N, 3)) at time ``t``.
     """
+    q_table = np.stack([values[float(x)][0] for x in unique])  # (U, N, 4)
+    m_table = np.stack([values[float(x)][1] for x in unique])
+    return gather_table(state, times, unique, shape, q_table, m_table)
+
+
+def gather_table(
+    state: State,
+    times: Array,
+    unique: Array,
+    shape: tuple[int, ...],
+    q_table: Array,
+    m_table: Array,
+    conserved: bool = False,
+) -> State:
+    """:func:`gather_states` from the tables ``q_table`` (U, N, 4) and ``m_table`` (U, N, 3).
+
+    Row ``k`` holds every state (flattened) at time ``unique[k]``; the quaternions are
+    normalised here. ``conserved``: the momenta have the magnitudes of ``state``'s (already
+    validated), so the returned state is built without checking them again.
+    """
     n = max(state.size, 1)
     state_index = np.broadcast_to(np.arange(n).reshape(state.shape or ()), shape)
     which = np.searchsorted(unique, np.broadcast_to(times, shape))
-    q_table = np.stack([values[float(x)][0] for x in unique])  # (U, N, 4)
-    m_table = np.stack([values[float(x)][1] for x in unique])
     q = q_table[which, state_index]
     m = m_table[which, state_index]
-    return State.from_quaternion(q / np.linalg.norm(q, axis=-1, keepdims=True), m)
+    q = q / np.linalg.norm(q, axis=-1, keepdims=True)
+    return State._of_unit(q, m) if conserved else State.from_quaternion(q, m)

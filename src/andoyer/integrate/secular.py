@@ -22,7 +22,7 @@ from andoyer._validation import as_finite, as_vectors
 from andoyer.integrate.secular_steps import COMPOSITIONS, propagate_controlled
 from andoyer.perturbations.secular import SecularGravityGradient as SecularModel
 
-__all__ = ["propagate_momentum"]
+__all__ = ["propagate_checked", "propagate_momentum"]
 
 Array = NDArray[np.float64]
 
@@ -96,6 +96,53 @@ def propagate_momentum(
     if method != "rotations":
         msg = f"expected method 'rotations' or 'dop853', got {method!r}"
         raise ValueError(msg)
+    return propagate_checked(model, M0, L, times, rtol, order, max_step, t0)
+
+
+def propagate_checked(
+    model: SecularModel,
+    M0: Array,
+    L: Array,
+    times: Array,
+    rtol: float = 1e-12,
+    order: int = 8,
+    max_step: float | None = None,
+    t0: float = 0.0,
+) -> Array:
+    """:func:`propagate_momentum` by rotations, for arrays validated by the caller.
+
+    The checks of :func:`propagate_momentum` on ``M0``, ``L`` and ``times`` are left to the
+    caller (:func:`andoyer.integrate.averaged.integrate_secular` has made them on its state
+    and times already: each costs microseconds, against a kernel of a few hundred for 1000
+    years); ``order``, ``rtol`` and ``max_step`` are still checked here.
+
+    Parameters
+    ----------
+    model : SecularGravityGradient
+        The averaged model.
+    M0 : numpy.ndarray, shape (..., 3)
+        Finite reference-frame angular momenta at ``t0``.
+    L : numpy.ndarray, shape (...)
+        Finite ``L = M·b3``, the shape of ``M0``'s states.
+    times : numpy.ndarray, shape (K,)
+        Finite output times, increasing, none before ``t0``.
+    rtol, order, max_step, t0
+        As in :func:`propagate_momentum`.
+
+    Returns
+    -------
+    numpy.ndarray, shape (K, ..., 3)
+
+    Examples
+    --------
+    >>> from andoyer import RigidBody
+    >>> from andoyer.perturbations import CircularOrbit, PointMass
+    >>> model = SecularModel(RigidBody(1.0, 1.0, 1.2), PointMass(1.0, CircularOrbit(1.0, 1.0)))
+    >>> M0 = np.array([0.0, 0.6, 0.8])
+    >>> bool(np.array_equal(propagate_checked(model, M0, np.array(0.8), np.array([2.0])),
+    ...                     propagate_momentum(model, M0, 0.8, [2.0])))
+    True
+    """
     if order not in COMPOSITIONS:
         msg = f"expected order in {sorted(COMPOSITIONS)}, got {order!r}"
         raise ValueError(msg)

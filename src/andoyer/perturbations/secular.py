@@ -111,6 +111,8 @@ class SecularGravityGradient:
         orbit = p.orbit
         node = orbit.node + orbit.node_rate * (t - orbit.epoch)
         si, ci = np.sin(orbit.inclination), np.cos(orbit.inclination)
+        if np.ndim(node) == 0:  # one time (the set-up of every secular run): no stacking of arrays
+            return np.array([si * np.sin(node), -si * np.cos(node), ci + 0 * node])
         return np.stack([si * np.sin(node), -si * np.cos(node), ci + 0 * node], -1)
 
     def potential(self, t: ArrayLike, M: ArrayLike, L: ArrayLike) -> Array:
