@@ -4,7 +4,7 @@
 constants and the motion of axisymmetric bodies, spheres, steady spins and bodies at rest
 with numpy double-double arithmetic on arrays: about a hundred array passes, which for a
 single body cost ~0.3 ms to set up and ~0.1 ms to evaluate. Here the same formulas in the
-same double-double arithmetic (:mod:`andoyer.free.scalar_dd`: error-free products by fused
+same double-double arithmetic (:mod:`andoyer.special.compensated`: error-free products by fused
 multiply-add, one-correction division) run per body in a compiled loop, a few µs in all;
 the constants agree with the numpy ones to an ulp of their low parts, the motion to a few
 ulps (``tests/free/test_free_compiled_uniform.py``). :class:`andoyer.free.FreeMotion`
@@ -25,7 +25,7 @@ import numpy as np
 
 from andoyer._jit import jit
 from andoyer.free.regime import Regime
-from andoyer.free.scalar_dd import dd_add, dd_div, dd_mul, dd_sqrt, two_prod, two_sum
+from andoyer.special.compensated import dd_add, dd_div, dd_mul, dd_sqrt, two_prod, two_sum
 
 __all__ = ["COLUMNS", "UniformTable", "evaluate", "fill", "polhode_limit", "uniform_table"]
 
