@@ -93,11 +93,31 @@ class State:
         self._m = np.broadcast_to(m, (*shape, 3)).copy()
 
     @classmethod
-    def _of_unit(cls, q: Array, m: Array) -> State:
-        """State from unit quaternions (..., 4) and momenta (..., 3) of one leading shape, as built.
+    def from_unit_quaternion(cls, q: Array, m: Array) -> State:
+        """State from arrays already normalised, without a copy (for converters and integrators).
 
-        The chart converters normalise the quaternions as ``__init__`` does, so only the
-        momenta's finiteness is left to check (``__init__`` names what overflowed).
+        Unlike :meth:`from_quaternion`, the quaternions are taken as they are (the caller has
+        normalised them, as the chart converters and the integrators' outputs do) and the
+        arrays are neither broadcast nor copied; only the momenta's finiteness is checked
+        (a non-finite one goes through the checking constructor, which names it).
+
+        Parameters
+        ----------
+        q : ndarray, shape (..., 4)
+            Unit quaternions, scalar last (body → reference).
+        m : ndarray, shape (..., 3)
+            Body angular momenta, of the same leading shape.
+
+        Returns
+        -------
+        State
+            The state of shape ``q.shape[:-1]``.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> State.from_unit_quaternion(np.array([[0.0, 0.0, 0.0, 1.0]]), np.array([[0.0, 0.0, 2.0]])).shape
+        (1,)
         """
         if not np.isfinite(m).all():
             return cls(q, m)
@@ -251,7 +271,7 @@ class State:
         del q
         # The quaternions are unit already: normalising them again could move their last bit.
         items = (*np.index_exp[index], slice(None))
-        return State._of_unit(np.array(self._q[items]), np.array(self._m[items]))
+        return State.from_unit_quaternion(np.array(self._q[items]), np.array(self._m[items]))
 
     def reshape(self, *shape: int) -> State:
         """The same states with a new leading shape.

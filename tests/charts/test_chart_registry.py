@@ -57,7 +57,7 @@ SIGNATURES = {
     "as_sam": "(self, body, mode='SAM')",
 }
 # The constructors State defines itself (not charts of the registry).
-OWN_CONSTRUCTORS = {"from_quaternion", "from_attitude", "from_angular_velocity"}
+OWN_CONSTRUCTORS = {"from_quaternion", "from_unit_quaternion", "from_attitude", "from_angular_velocity"}
 
 
 def _bare(signature: inspect.Signature) -> str:

@@ -426,7 +426,7 @@ def _from_andoyer(
     >>> s.shape
     (2,)
     """
-    return cls._of_unit(*andoyer_to_hub(l, g, h, L, G, H, unit=True))
+    return cls.from_unit_quaternion(*andoyer_to_hub(l, g, h, L, G, H, unit=True))
 
 
 def _as_andoyer(self) -> Andoyer:

@@ -297,7 +297,7 @@ def _from_euler(
     >>> [round(float(x), 12) for x in s.as_euler()]
     [0.1, 0.5, 0.2, 1.0, 0.3, 0.8]
     """
-    return cls._of_unit(*euler_to_hub(phi, theta, psi, Phi, Theta, Psi, stacklevel=2, unit=True))
+    return cls.from_unit_quaternion(*euler_to_hub(phi, theta, psi, Phi, Theta, Psi, stacklevel=2, unit=True))
 
 
 def _as_euler(self) -> Euler:

@@ -84,4 +84,4 @@ def gather_table(
     q = q_table[which, state_index]
     m = m_table[which, state_index]
     q = q / np.linalg.norm(q, axis=-1, keepdims=True)
-    return State._of_unit(q, m) if conserved else State.from_quaternion(q, m)
+    return State.from_unit_quaternion(q, m) if conserved else State.from_quaternion(q, m)
