@@ -9,12 +9,17 @@ the frequencies that are multiplied by long times (a phase of 100 periods keeps
 period.  The error-free transformations are Knuth's two-sum and Dekker's two-product
 (numpy has no fused multiply-add).
 
-All functions are vectorised with numpy broadcasting and return float64 arrays.
+All functions are vectorised with numpy broadcasting and return float64 arrays; the
+error-free transformations, sums and products are also callable from kernels compiled by
+:func:`andoyer._jit.jit` (on float64 scalars, :func:`andoyer._jit.jitable`), so a kernel written
+once (:func:`andoyer.regime.regime_code`) runs both on arrays and compiled.
 """
 
 from __future__ import annotations
 
 import numpy as np
+
+from andoyer._jit import jitable
 
 __all__ = [
     "PI_DD",
@@ -33,6 +38,7 @@ PI_DD = (3.141592653589793, 1.2246467991473532e-16)
 _SPLITTER = 134217729.0  # 2**27 + 1
 
 
+@jitable
 def two_sum(a, b):
     """Error-free sum: ``a + b = s + e`` exactly (Knuth).
 
@@ -59,12 +65,14 @@ def two_sum(a, b):
     return s, e
 
 
+@jitable
 def _fast_two_sum(a, b):
     # Valid when |a| >= |b| (or a == 0): the renormalisation step.
     s = a + b
     return s, b - (s - a)
 
 
+@jitable
 def split(a):
     """Dekker split of ``a`` into two 26-bit halves, ``a = hi + lo`` exactly.
 
@@ -90,6 +98,7 @@ def split(a):
     return hi, a - hi
 
 
+@jitable
 def two_prod(a, b):
     """Error-free product: ``a·b = p + e`` exactly (Dekker).
 
@@ -118,6 +127,7 @@ def two_prod(a, b):
     return p, e
 
 
+@jitable
 def dd_add(ah, al, bh, bl):
     """Double-double sum ``(ah + al) + (bh + bl)``, accurate to about 2⁻¹⁰⁴ relative.
 
@@ -144,6 +154,7 @@ def dd_add(ah, al, bh, bl):
     return _fast_two_sum(s, e)
 
 
+@jitable
 def dd_mul(ah, al, bh, bl):
     """Double-double product ``(ah + al)(bh + bl)``.
 
