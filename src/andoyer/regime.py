@@ -8,22 +8,24 @@ axis of minimum inertia (LAM, ``G²/B < D ≤ G²/A``), or lies on the separatri
 
 .. math:: P_2 = G^2/B - D = m_C^2 \Big(\frac1B - \frac1C\Big) - m_A^2 \Big(\frac1A - \frac1B\Big)
 
-decides; times ``A B C > 0`` it is ``m_C² (C − B) A − m_A² (B − A) C``, a difference of
-nearly equal numbers near the separatrix, so it is formed in double-double arithmetic
-(:mod:`andoyer.special.compensated`) from error-free products of the inputs: the
-differences of moments and the squares of the components are exact, and the two terms
-carry about 106 bits, so the sign is that of the exact rational value for the
-floating-point inputs as given (exactly zero on the separatrix whenever the products fit
-in 106 bits, e.g. for inputs of a few significant bits; otherwise wrong only if the two
-terms agree to about 100 bits without being equal).  Two equal moments make a body
-axisymmetric, three a sphere, and a zero momentum is rest, whatever the rest.
+decides; times ``A B C > 0`` it is ``t₁ − t₂`` with ``t₁ = m_C² (C − B) A`` and
+``t₂ = m_A² (B − A) C``, a difference of nearly equal numbers near the separatrix, so it is
+formed in double-double arithmetic (:mod:`andoyer.special.compensated`) from error-free
+products of the inputs: the differences of moments and the squares of the components are
+exact, each factor is first scaled into ``[1/2, 1)`` by its own power of two (so nothing
+overflows or underflows, whatever the units and however small one component is beside
+the others), and the two terms carry about 106 bits.  The sign is therefore that of the
+exact rational value for the floating-point inputs as given: exactly zero on the
+separatrix whenever the products fit in 106 bits (inputs of up to about 26 significant
+bits, such as every example and test here), and otherwise wrong only if the two terms
+agree to about 100 bits without being equal.  Two equal moments make a body axisymmetric,
+three a sphere, and a zero momentum is rest, whatever the rest.
 
 :func:`regime_code` is that decision for one state, written once with
 :func:`andoyer._jit.select` instead of ``if``: compiled by numba it runs per state in a loop
 (:func:`andoyer.free.compiled_regime.classify_and_scale`), and called from Python it runs
 on whole arrays (:func:`classify`, :meth:`andoyer.RigidBody.regime`), with the same result
-bit for bit.  The states are first scaled by powers of two (:func:`scale_exponents`,
-exact), so that the squares and products neither overflow nor underflow whatever the units.
+bit for bit.
 """
 
 from __future__ import annotations
@@ -43,7 +45,6 @@ __all__ = [
     "regime_code",
     "regime_codes",
     "regime_names",
-    "scale_exponents",
 ]
 
 
@@ -117,35 +118,24 @@ def check_inputs(moments: ArrayLike, m0: ArrayLike) -> tuple[NDArray[np.float64]
 
 
 @jitable
-def scale_exponents(i1, i2, i3, m1, m2, m3):
-    """Exponents ``a, b`` that scale a state into ``[1/2, 1)``: ``max Iᵢ = 2^a f``, ``max |mᵢ| = 2^b g``.
+def _unit(x):
+    """``x = f·2^e`` with ``1/2 ≤ |f| < 1`` (``f = e = 0`` for ``x = 0``): ``(f, e)``, exact."""
+    e = exponent(x)
+    return np.ldexp(x, -e), e
 
-    ``f, g ∈ [1/2, 1)``; a zero momentum gives ``b = 1`` (the exponent of 1).  The motion
-    is covariant under ``I = 2^a I'``, ``m = 2^b m'`` (:func:`andoyer.free.regime.normalise`),
-    and the regime does not change.  A kernel written once: floats (compiled or not) or
-    arrays broadcast together.
 
-    Parameters
-    ----------
-    i1, i2, i3 : float or ndarray, shape (...)
-        Principal moments (positive, finite).
-    m1, m2, m3 : float or ndarray, shape (...)
-        Body angular momentum (finite).
+@jitable
+def _term(m, dh, dl, c):
+    """``m² (d_h + d_l) c = (t_h + t_l)·2^e`` with the double-double ``t`` in ``[1/16, 1)`` or 0.
 
-    Returns
-    -------
-    a, b : int or ndarray of int, shape (...)
-        The exponents.
-
-    Examples
-    --------
-    >>> a, b = scale_exponents(3.0, 4.0, 6.0, 0.0, 48.0, 0.0)
-    >>> int(a), int(b)
-    (3, 6)
+    Each factor is scaled into ``[1/2, 1)`` by its own power of two, so that the squares and
+    products neither overflow nor underflow whatever the magnitudes of the state.
     """
-    big_i = np.maximum(np.maximum(i1, i2), i3)
-    big_m = np.maximum(np.maximum(np.abs(m1), np.abs(m2)), np.abs(m3))
-    return exponent(big_i), exponent(select(big_m > 0, big_m, 1.0))
+    mf, em = _unit(m)
+    cf, ec = _unit(c)
+    ed = exponent(dh)
+    th, tl = dd_mul(*two_prod(mf, mf), *dd_mul(np.ldexp(dh, -ed), np.ldexp(dl, -ed), cf, 0.0))
+    return th, tl, 2 * em + ed + ec
 
 
 @jitable
@@ -157,8 +147,8 @@ def regime_code(i1, i2, i3, m1, m2, m3):
     docstring): positive SAM, negative LAM, zero the separatrix.  Written once for floats
     and arrays: :func:`andoyer._jit.select` chooses, so numba compiles it per state and
     numpy evaluates it on whole arrays; the moments are sorted by ``min``/``max``
-    (the median ``max(min(a, b), min(max(a, b), c))``), and the state is first scaled by
-    the exact powers of two of :func:`scale_exponents`.
+    (the median ``max(min(a, b), min(max(a, b), c))``).  Any finite state is classified
+    exactly (module docstring), whatever its magnitudes.
 
     Parameters
     ----------
@@ -180,19 +170,20 @@ def regime_code(i1, i2, i3, m1, m2, m3):
     >>> regime_code(1.0, 2.0, 3.0, np.array([0.1, 1.0]), 0.2, np.array([1.0, 0.1])).tolist()
     [0, 1]
     """
-    a, b = scale_exponents(i1, i2, i3, m1, m2, m3)
-    i1, i2, i3 = np.ldexp(i1, -a), np.ldexp(i2, -a), np.ldexp(i3, -a)
-    m1, m2, m3 = np.ldexp(m1, -b), np.ldexp(m2, -b), np.ldexp(m3, -b)
     A = np.minimum(np.minimum(i1, i2), i3)
     C = np.maximum(np.maximum(i1, i2), i3)
     B = np.maximum(np.minimum(i1, i2), np.minimum(np.maximum(i1, i2), i3))
     # The components along A and C: unique where the body is triaxial, the only case they decide.
     ma = select(i1 == A, m1, select(i2 == A, m2, m3))
     mc = select(i1 == C, m1, select(i2 == C, m2, m3))
-    # P₂ A B C = m_C² (C − B) A − m_A² (B − A) C
-    t1 = dd_mul(*two_prod(mc, mc), *dd_mul(*two_sum(C, -B), A, 0.0))
-    t2 = dd_mul(*two_prod(ma, ma), *dd_mul(*two_sum(B, -A), C, 0.0))
-    p2 = dd_add(t1[0], t1[1], -t2[0], -t2[1])[0]
+    # P₂ A B C = t₁ − t₂, t₁ = m_C² (C − B) A, t₂ = m_A² (B − A) C (differences exact, two_sum)
+    t1h, t1l, e1 = _term(mc, *two_sum(C, -B), A)
+    t2h, t2l, e2 = _term(ma, *two_sum(B, -A), C)
+    # t₁ − t₂ at the larger exponent: a term 64 binades below the other (≥ 1/16) cannot change the sign.
+    k = e1 - e2
+    s1 = np.minimum(np.maximum(-k, 0), 64)
+    s2 = np.minimum(np.maximum(k, 0), 64)
+    p2 = dd_add(np.ldexp(t1h, -s1), np.ldexp(t1l, -s1), -np.ldexp(t2h, -s2), -np.ldexp(t2l, -s2))[0]
     code = select(p2 > 0, _SAM, select(p2 < 0, _LAM, _SEPARATRIX))
     code = select((B == A) | (B == C), _AXISYMMETRIC, code)
     code = select(A == C, _SPHERE, code)

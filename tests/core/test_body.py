@@ -88,7 +88,7 @@ def test_body_rotation_mode_triaxial(m, mode):
 
 
 def test_body_rotation_mode_axisymmetric_is_steady_and_vectorised():
-    with pytest.warns(DeprecationWarning):
+    with pytest.warns(DeprecationWarning, match="rotation_mode is deprecated"):
         modes = RigidBody(1.0, 1.0, 1.5).rotation_mode(np.ones((4, 2, 3)))
     assert modes.shape == (4, 2)
     assert set(modes.ravel().tolist()) == {"steady"}
@@ -110,9 +110,10 @@ def test_body_rotation_mode_is_a_view_of_regime(moments, m, regime, mode):
     # (3, 4, 6), |m1| = |m3|: m_C^2 (C - B) A = m_A^2 (B - A) C = 6 exactly
     body = RigidBody(*moments)
     assert body.regime(m) == regime
-    with pytest.warns(DeprecationWarning):
+    with pytest.warns(DeprecationWarning, match="rotation_mode is deprecated"):
         got = body.rotation_mode(m)
-    assert got.shape == () and str(got) == mode
+    assert got.shape == ()
+    assert str(got) == mode
 
 
 def test_body_regime_broadcasts_leading_shape():
@@ -121,8 +122,10 @@ def test_body_regime_broadcasts_leading_shape():
     m[..., 2] = 1.0
     m[0, 1] = (1.0, 0.0, 0.0)
     got = body.regime(m)
-    assert got.shape == (4, 2) and got.dtype == np.int8
-    assert got[0, 1] == Regime.LAM and np.count_nonzero(got == Regime.SAM) == 7
+    assert got.shape == (4, 2)
+    assert got.dtype == np.int8
+    assert got[0, 1] == Regime.LAM
+    assert np.count_nonzero(got == Regime.SAM) == 7
     with pytest.raises(ValueError, match=r"m_body with shape \(\.\.\., 3\)"):
         body.regime([1.0, 2.0])
     with pytest.raises(ValueError, match="m_body"):
@@ -133,11 +136,12 @@ def test_body_rotation_mode_enum_is_deprecated_where_used():
     with pytest.warns(DeprecationWarning, match="RotationMode is deprecated") as caught:
         mode = andoyer.RotationMode
     assert caught[0].filename == __file__
-    with pytest.warns(DeprecationWarning) as caught:
+    with pytest.warns(DeprecationWarning, match="RotationMode is deprecated") as caught:
         from andoyer.body import RotationMode
     assert caught[0].filename == __file__
-    assert mode is RotationMode and RotationMode.STEADY.value == "steady"
-    with pytest.warns(DeprecationWarning) as caught:
+    assert mode is RotationMode
+    assert RotationMode.STEADY.value == "steady"
+    with pytest.warns(DeprecationWarning, match="rotation_mode is deprecated") as caught:
         RigidBody(1.0, 2.0, 3.0).rotation_mode([0.0, 0.0, 1.0])
     assert caught[0].filename == __file__
     assert "RotationMode" not in andoyer.__all__

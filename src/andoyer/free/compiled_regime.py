@@ -2,7 +2,7 @@
 
 :func:`andoyer.free.regime.classify` and :func:`andoyer.free.regime.normalise` for
 validated inputs, per state in a numba kernel: the same exponents and the same scaled
-values (:func:`andoyer.regime.scale_exponents`) and the same regimes, from the same kernel
+values (:func:`andoyer.free.regime.scale_exponents`) and the same regimes, from the same kernel
 (:func:`andoyer.regime.regime_code`, compiled here, run on arrays there), so the decision is
 the same bit for bit.  :class:`andoyer.free.FreeMotion` uses it when numba is installed.
 """
@@ -12,7 +12,8 @@ from __future__ import annotations
 import numpy as np
 
 from andoyer._jit import jit
-from andoyer.regime import regime_code, scale_exponents
+from andoyer.free.regime import scale_exponents
+from andoyer.regime import regime_code
 
 __all__ = ["classify_and_scale"]
 
@@ -45,7 +46,9 @@ def classify_and_scale(moments, m0):
     Returns
     -------
     regime : ndarray of int8, shape (N,)
-        :class:`andoyer.free.regime.Regime` codes.
+        :class:`andoyer.regime.Regime` codes of the scaled states, the states the solution
+        works on: those of the inputs (:func:`andoyer.regime.classify`) unless the scaling
+        rounded a component below ``2⁻¹⁰²²`` times the largest (a subnormal).
     moments, m0 : ndarray, shape (N, 3)
         The states scaled by powers of two.
     a, b : ndarray of int, shape (N,)

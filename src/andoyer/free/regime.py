@@ -25,8 +25,9 @@ from typing import NamedTuple
 
 import numpy as np
 
+from andoyer._jit import exponent, jitable, select
 from andoyer.free.quaternion import matrix_quat, qmul, shortest_arc
-from andoyer.regime import Regime, check_inputs, classify, regime_codes, scale_exponents
+from andoyer.regime import Regime, check_inputs, classify, regime_codes
 from andoyer.special.compensated import dd_add, dd_div, dd_mul, dd_sqrt, two_prod, two_sum
 
 __all__ = [
@@ -38,8 +39,41 @@ __all__ = [
     "classify_scaled",
     "normalise",
     "polhode_frame",
+    "scale_exponents",
     "working_axes",
 ]
+
+
+@jitable
+def scale_exponents(i1, i2, i3, m1, m2, m3):
+    """Exponents ``a, b`` that scale a state into ``[1/2, 1)``: ``max Iᵢ = 2^a f``, ``max |mᵢ| = 2^b g``.
+
+    ``f, g ∈ [1/2, 1)``; a zero momentum gives ``b = 1`` (the exponent of 1).  The motion
+    is covariant under ``I = 2^a I'``, ``m = 2^b m'`` (:func:`normalise`),
+    and the regime does not change.  A kernel written once: floats (compiled or not) or
+    arrays broadcast together.
+
+    Parameters
+    ----------
+    i1, i2, i3 : float or ndarray, shape (...)
+        Principal moments (positive, finite).
+    m1, m2, m3 : float or ndarray, shape (...)
+        Body angular momentum (finite).
+
+    Returns
+    -------
+    a, b : int or ndarray of int, shape (...)
+        The exponents.
+
+    Examples
+    --------
+    >>> a, b = scale_exponents(3.0, 4.0, 6.0, 0.0, 48.0, 0.0)
+    >>> int(a), int(b)
+    (3, 6)
+    """
+    big_i = np.maximum(np.maximum(i1, i2), i3)
+    big_m = np.maximum(np.maximum(np.abs(m1), np.abs(m2)), np.abs(m3))
+    return exponent(big_i), exponent(select(big_m > 0, big_m, 1.0))
 
 
 def normalise(moments, m0):
