@@ -21,7 +21,7 @@ if os.environ.get("ANDOYER_NUMBA", "1") == "0":  # pragma: no cover - depends on
 #: Whether the kernels decorated with :func:`jit` are compiled.
 NUMBA = _numba is not None
 
-__all__ = ["NUMBA", "every", "exponent", "jit", "jitable", "select"]
+__all__ = ["NUMBA", "as_float64", "every", "exponent", "fused_multiply_add", "jit", "jitable", "select"]
 
 
 def jit(function=None, *, inline=False):
@@ -136,6 +136,66 @@ def every(condition):
     return bool(np.all(condition))
 
 
+def as_float64(x):
+    """``x`` as float64: :func:`numpy.asarray` from Python, the value itself inside a compiled kernel.
+
+    The array functions that kernels written once call (:mod:`andoyer.special.compensated`)
+    accept any array_like from Python; compiled on float64 scalars they must not allocate an
+    array per call (numba's ``numpy.asarray`` does, ten times slower).
+
+    Parameters
+    ----------
+    x : array_like, shape (...)
+        Numbers.
+
+    Returns
+    -------
+    ndarray or float
+        ``numpy.asarray(x, dtype=numpy.float64)``; compiled, ``x``.
+
+    Examples
+    --------
+    >>> as_float64([1, 2]).dtype
+    dtype('float64')
+    """
+    import numpy as np
+
+    return np.asarray(x, dtype=np.float64)
+
+
+def fused_multiply_add(a, b, c):  # noqa: ARG001 - the compiled overload uses them
+    """``a b + c`` rounded once, in kernels compiled by :func:`jit` only (LLVM's ``llvm.fma``).
+
+    numpy has no fused multiply-add, so from Python this refuses rather than round twice;
+    array code forms error-free products by Dekker's splitting instead
+    (:func:`andoyer.special.compensated.two_prod`).
+
+    Parameters
+    ----------
+    a, b, c : float
+        Float64 operands.
+
+    Returns
+    -------
+    float
+        ``fl(a b + c)``.
+
+    Raises
+    ------
+    TypeError
+        When called from Python.
+
+    Examples
+    --------
+    >>> fused_multiply_add(0.1, 0.1, -0.01)
+    Traceback (most recent call last):
+    ...
+    TypeError: expected a call from a compiled kernel, got one from Python (numpy has no fused multiply-add)
+    """
+    msg = "expected a call from a compiled kernel, got one from Python (numpy has no fused multiply-add)"
+    raise TypeError(msg)
+
+
 def exponent(x):
     """The binary exponent ``e`` of ``x = f·2^e``, ``1/2 ≤ |f| < 1`` (0 for ``x = 0``): frexp's second value.
 
@@ -168,7 +228,24 @@ def exponent(x):
 if _numba is not None:
     import math
 
-    from numba.extending import overload
+    from llvmlite import ir
+    from numba.core import cgutils, types
+    from numba.extending import intrinsic, overload
+
+    @intrinsic
+    def _fma(typingctx, a, b, c):  # noqa: ARG001 - numba's intrinsic signature
+        signature = types.float64(types.float64, types.float64, types.float64)
+
+        def codegen(context, builder, sig, args):  # noqa: ARG001 - numba's codegen signature
+            d = ir.DoubleType()
+            fn = cgutils.get_or_insert_function(builder.module, ir.FunctionType(d, [d, d, d]), "llvm.fma.f64")
+            return builder.call(fn, args)
+
+        return signature, codegen
+
+    @overload(fused_multiply_add, inline="always")
+    def _fused_multiply_add_compiled(a, b, c):  # noqa: ARG001 - numba's overload signature
+        return lambda a, b, c: _fma(a, b, c)  # noqa: PLW0108 - numba wants a Python implementation
 
     @overload(select)
     def _select_compiled(condition, if_true, if_false):  # noqa: ARG001 - numba's overload signature
@@ -180,6 +257,10 @@ if _numba is not None:
     @overload(every, inline="always")
     def _every_compiled(condition):  # noqa: ARG001 - numba's overload signature
         return lambda condition: condition
+
+    @overload(as_float64, inline="always")
+    def _as_float64_compiled(x):  # noqa: ARG001 - numba's overload signature
+        return lambda x: x
 
     @overload(exponent, inline="always")
     def _exponent_compiled(x):  # noqa: ARG001 - numba's overload signature

@@ -12,17 +12,19 @@ decides; times ``A B C > 0`` it is ``t₁ − t₂`` with ``t₁ = m_C² (C − 
 ``t₂ = m_A² (B − A) C``, a difference of nearly equal numbers near the separatrix, so it is
 formed in double-double arithmetic (:mod:`andoyer.special.compensated`) from error-free
 products of the inputs: the differences of moments and the squares of the components are
-exact, each factor is first scaled into ``[1/2, 1)`` by its own power of two (so nothing
-overflows or underflows, whatever the units and however small one component is beside
-the others), and the two terms carry about 106 bits.  The sign is therefore that of the
-exact rational value for the floating-point inputs as given: exactly zero on the
-separatrix whenever the products fit in 106 bits (inputs of up to about 26 significant
-bits, such as every example and test here), and otherwise wrong only if the two terms
-agree to about 100 bits without being equal.  Two equal moments make a body axisymmetric,
-three a sphere, and a zero momentum is rest, whatever the rest.
+exact, each factor is scaled into ``[1/2, 1)`` by its own power of two where one lies
+outside ``[2⁻¹⁵⁰, 2¹⁵⁰]`` (so nothing overflows or underflows, whatever the units and
+however small one component is beside the others), and the two terms carry about 106
+bits.  The sign is therefore that of the exact rational value for the floating-point
+inputs as given: exactly zero on the separatrix whenever the products fit in 106 bits
+(inputs of up to about 26 significant bits, such as every example and test here), and
+otherwise wrong only if the two terms agree to about 100 bits without being equal.  Two
+equal moments make a body axisymmetric, three a sphere, and a zero momentum is rest,
+whatever the rest.
 
 :func:`regime_code` is that decision for one state, written once with
-:func:`andoyer._jit.select` instead of ``if``: compiled by numba it runs per state in a loop
+:func:`andoyer._jit.select` instead of ``if`` (and :func:`andoyer._jit.every` for its one
+branch, the rescaling of extreme magnitudes): compiled by numba it runs per state in a loop
 (:func:`andoyer.free.compiled_regime.classify_and_scale`), and called from Python it runs
 on whole arrays (:func:`classify`, :meth:`andoyer.RigidBody.regime`), with the same result
 bit for bit.
@@ -35,7 +37,7 @@ from enum import IntEnum
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from andoyer._jit import exponent, jitable, select
+from andoyer._jit import every, exponent, jitable, select
 from andoyer.special.compensated import dd_add, dd_mul, two_prod, two_sum
 
 __all__ = [
@@ -118,6 +120,12 @@ def check_inputs(moments: ArrayLike, m0: ArrayLike) -> tuple[NDArray[np.float64]
 
 
 @jitable
+def _moderate(x):
+    """``2⁻¹⁵⁰ ≤ |x| ≤ 2¹⁵⁰``: products of five such factors (and their rounding errors) are normal."""
+    return (np.abs(x) >= 7.006492321624085e-46) & (np.abs(x) <= 1.42724769270596e45)
+
+
+@jitable
 def _unit(x):
     """``x = f·2^e`` with ``1/2 ≤ |f| < 1`` (``f = e = 0`` for ``x = 0``): ``(f, e)``, exact."""
     e = exponent(x)
@@ -145,8 +153,10 @@ def regime_code(i1, i2, i3, m1, m2, m3):
     Rest (``m = 0``) first, then a sphere (``A = C``), an axisymmetric body (``B = A`` or
     ``B = C``), then the sign of ``P₂ = G²/B − 2T`` in double-double arithmetic (module
     docstring): positive SAM, negative LAM, zero the separatrix.  Written once for floats
-    and arrays: :func:`andoyer._jit.select` chooses, so numba compiles it per state and
-    numpy evaluates it on whole arrays; the moments are sorted by ``min``/``max``
+    and arrays: :func:`andoyer._jit.select` chooses and :func:`andoyer._jit.every` branches
+    (to rescale where a factor lies outside ``[2⁻¹⁵⁰, 2¹⁵⁰]``: per state compiled, for the
+    whole array if any state needs it on arrays), so numba compiles it per state and numpy
+    evaluates it on whole arrays; the moments are sorted by ``min``/``max``
     (the median ``max(min(a, b), min(max(a, b), c))``).  Any finite state is classified
     exactly (module docstring), whatever its magnitudes.
 
@@ -177,13 +187,21 @@ def regime_code(i1, i2, i3, m1, m2, m3):
     ma = select(i1 == A, m1, select(i2 == A, m2, m3))
     mc = select(i1 == C, m1, select(i2 == C, m2, m3))
     # P₂ A B C = t₁ − t₂, t₁ = m_C² (C − B) A, t₂ = m_A² (B − A) C (differences exact, two_sum)
-    t1h, t1l, e1 = _term(mc, *two_sum(C, -B), A)
-    t2h, t2l, e2 = _term(ma, *two_sum(B, -A), C)
-    # t₁ − t₂ at the larger exponent: a term 64 binades below the other (≥ 1/16) cannot change the sign.
-    k = e1 - e2
-    s1 = np.minimum(np.maximum(-k, 0), 64)
-    s2 = np.minimum(np.maximum(k, 0), 64)
-    p2 = dd_add(np.ldexp(t1h, -s1), np.ldexp(t1l, -s1), -np.ldexp(t2h, -s2), -np.ldexp(t2l, -s2))[0]
+    d1h, d1l = two_sum(C, -B)
+    d2h, d2l = two_sum(B, -A)
+    if every(_moderate(A) & _moderate(C) & (_moderate(ma) | (ma == 0)) & (_moderate(mc) | (mc == 0))):
+        # no product can overflow or underflow (the common case, and the fast one)
+        t1 = dd_mul(*two_prod(mc, mc), *dd_mul(d1h, d1l, A, 0.0))
+        t2 = dd_mul(*two_prod(ma, ma), *dd_mul(d2h, d2l, C, 0.0))
+        p2 = dd_add(t1[0], t1[1], -t2[0], -t2[1])[0]
+    else:
+        t1h, t1l, e1 = _term(mc, d1h, d1l, A)
+        t2h, t2l, e2 = _term(ma, d2h, d2l, C)
+        # at the larger exponent: a term 64 binades below the other (≥ 1/16) cannot change the sign
+        k = e1 - e2
+        s1 = np.minimum(np.maximum(-k, 0), 64)
+        s2 = np.minimum(np.maximum(k, 0), 64)
+        p2 = dd_add(np.ldexp(t1h, -s1), np.ldexp(t1l, -s1), -np.ldexp(t2h, -s2), -np.ldexp(t2l, -s2))[0]
     code = select(p2 > 0, _SAM, select(p2 < 0, _LAM, _SEPARATRIX))
     code = select((B == A) | (B == C), _AXISYMMETRIC, code)
     code = select(A == C, _SPHERE, code)

@@ -138,8 +138,9 @@ def test_regime_of_scaled_states_is_exact(case):
     _check_scaled(np.array([moments]), np.array([m]))
 
 
+@pytest.mark.parametrize("extreme", [False, True])
 @pytest.mark.parametrize("path", PATHS)
-def test_regime_paths_agree_on_random_and_near_separatrix_states(path):
+def test_regime_paths_agree_on_random_and_near_separatrix_states(path, extreme):
     rng = np.random.default_rng(2026)
     moments = rng.uniform(1.0, 2.0, (300, 3)) * 2.0 ** rng.integers(-60, 60, (300, 1))
     m = rng.normal(size=(300, 3)) * 2.0 ** rng.integers(-60, 60, (300, 1))
@@ -148,6 +149,8 @@ def test_regime_paths_agree_on_random_and_near_separatrix_states(path):
         A, B, C = moments[i][order]
         ratio = math.sqrt((1 / A - 1 / B) / (1 / B - 1 / C))
         m[i, order[2]] = m[i, order[0]] * ratio * (1 + rng.integers(-3, 4) * 2.2e-16)
+    if extreme:  # one state beyond 2^±150: on arrays every state then takes the rescaled branch
+        moments[-1] *= 2.0**700
     want = [exact_regime(moments[i], m[i]) for i in range(300)]
     assert PATHS[path](moments, m).tolist() == want
     _check_scaled(moments, m)
