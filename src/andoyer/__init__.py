@@ -37,10 +37,11 @@ if TYPE_CHECKING:  # the eager names, for type checkers and IDEs
         theories,
     )
     from andoyer._limits import PhasePrecisionWarning
-    from andoyer.body import NonPhysicalInertiaWarning, RigidBody, RotationMode, Symmetry
+    from andoyer.body import NonPhysicalInertiaWarning, RigidBody, Symmetry
     from andoyer.charts import SingularChartWarning
     from andoyer.free import FreeRotation
     from andoyer.propagation import propagate
+    from andoyer.regime import Regime
     from andoyer.state import State
 
 #: Public name -> the module that defines it (a subpackage maps to itself).
@@ -48,8 +49,8 @@ _LAZY = {
     "FreeRotation": "andoyer.free",
     "NonPhysicalInertiaWarning": "andoyer.body",
     "PhasePrecisionWarning": "andoyer._limits",
+    "Regime": "andoyer.regime",
     "RigidBody": "andoyer.body",
-    "RotationMode": "andoyer.body",
     "SingularChartWarning": "andoyer.charts",
     "State": "andoyer.state",
     "Symmetry": "andoyer.body",
@@ -75,8 +76,8 @@ __all__ = [
     "FreeRotation",
     "NonPhysicalInertiaWarning",
     "PhasePrecisionWarning",
+    "Regime",
     "RigidBody",
-    "RotationMode",
     "SingularChartWarning",
     "State",
     "Symmetry",
@@ -96,7 +97,13 @@ __all__ = [
 __version__ = "0.1.0.dev0"
 
 
+#: Deprecated public names -> the module that serves them (with a DeprecationWarning, each time).
+_DEPRECATED = {"RotationMode": "andoyer.body"}
+
+
 def __getattr__(name: str) -> Any:
+    if name in _DEPRECATED:
+        return getattr(importlib.import_module(_DEPRECATED[name]), name)
     module_name = _LAZY.get(name)
     if module_name is None:
         msg = f"module 'andoyer' has no attribute {name!r}"

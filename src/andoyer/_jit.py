@@ -21,7 +21,7 @@ if os.environ.get("ANDOYER_NUMBA", "1") == "0":  # pragma: no cover - depends on
 #: Whether the kernels decorated with :func:`jit` are compiled.
 NUMBA = _numba is not None
 
-__all__ = ["NUMBA", "every", "jit", "jitable", "select"]
+__all__ = ["NUMBA", "every", "exponent", "jit", "jitable", "select"]
 
 
 def jit(function=None, *, inline=False):
@@ -136,7 +136,38 @@ def every(condition):
     return bool(np.all(condition))
 
 
+def exponent(x):
+    """The binary exponent ``e`` of ``x = f·2^e``, ``1/2 ≤ |f| < 1`` (0 for ``x = 0``): frexp's second value.
+
+    Called from Python it is :func:`numpy.frexp`'s exponent (element-wise on arrays); inside a
+    kernel compiled by :func:`jit` it is :func:`math.frexp`'s (numba has no scalar
+    ``numpy.frexp``).  With :func:`numpy.ldexp` (which numba has for scalars) it scales a
+    kernel's inputs by exact powers of two.
+
+    Parameters
+    ----------
+    x : float or ndarray, shape (...)
+        Finite values.
+
+    Returns
+    -------
+    int or ndarray of int, shape (...)
+        The exponents.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> exponent(np.array([0.75, 6.0, 0.0])).tolist(), int(exponent(1.0))
+    ([0, 3, 0], 1)
+    """
+    import numpy as np
+
+    return np.frexp(x)[1]
+
+
 if _numba is not None:
+    import math
+
     from numba.extending import overload
 
     @overload(select)
@@ -149,3 +180,7 @@ if _numba is not None:
     @overload(every)
     def _every_compiled(condition):  # noqa: ARG001 - numba's overload signature
         return lambda condition: condition
+
+    @overload(exponent)
+    def _exponent_compiled(x):  # noqa: ARG001 - numba's overload signature
+        return lambda x: math.frexp(x)[1]

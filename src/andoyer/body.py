@@ -1,4 +1,9 @@
-"""The rigid body: principal moments of inertia and the parameters built on them."""
+"""The rigid body: principal moments of inertia and the parameters built on them.
+
+The regime of a state (SAM, LAM, separatrix, ...) is :meth:`RigidBody.regime`, the one
+classification of :mod:`andoyer.regime`; :class:`RotationMode` and
+:meth:`RigidBody.rotation_mode`, an older view of it, are deprecated.
+"""
 
 from __future__ import annotations
 
@@ -8,13 +13,14 @@ import sys
 import warnings
 from dataclasses import dataclass, field
 from enum import Enum
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer._validation import as_finite, as_vectors, describe
 
-__all__ = ["NonPhysicalInertiaWarning", "RigidBody", "RotationMode", "Symmetry"]
+__all__ = ["NonPhysicalInertiaWarning", "RigidBody", "Symmetry"]
 
 _PACKAGE = os.path.dirname(os.path.abspath(__file__)) + os.sep
 
@@ -53,19 +59,41 @@ class Symmetry(str, Enum):
 
 
 class RotationMode(str, Enum):
-    """Rotation mode of a torque-free state (Lara §1; Gurfil Fig. 4).
+    """Rotation mode of a torque-free state (Lara §1; Gurfil Fig. 4); deprecated for :class:`andoyer.Regime`.
 
     SAM: circulation about the axis of maximum inertia (``2T/G² < 1/B``);
     LAM: about the axis of minimum inertia (``2T/G² > 1/B``);
     SEPARATRIX: ``2T/G² = 1/B`` (the hyperbolic limit); STEADY: a body whose
     motion is a uniform rotation for every state (sphere) or a regular
-    precession (axisymmetric), where the distinction does not arise.
+    precession (axisymmetric), where the distinction does not arise, and rest.
+    These are the :class:`~andoyer.Regime` codes with AXISYMMETRIC, SPHERE and REST merged
+    into STEADY; accessing ``RotationMode`` warns (:class:`DeprecationWarning`).
     """
 
     SAM = "SAM"
     LAM = "LAM"
     SEPARATRIX = "separatrix"
     STEADY = "steady"
+
+
+# Served with a DeprecationWarning by the module's __getattr__.
+_RotationMode = RotationMode
+del RotationMode
+
+#: The RotationMode value of each Regime code (SAM, LAM, SEPARATRIX, AXISYMMETRIC, SPHERE, REST).
+_MODE_OF_REGIME = np.array(["SAM", "LAM", "separatrix", "steady", "steady", "steady"])
+
+
+def __getattr__(name: str) -> Any:
+    if name == "RotationMode":
+        msg = (
+            "andoyer.RotationMode is deprecated: RigidBody.regime gives andoyer.Regime codes "
+            "(AXISYMMETRIC, SPHERE and REST where RotationMode said STEADY)"
+        )
+        warnings.warn(msg, DeprecationWarning, stacklevel=_caller_stacklevel())
+        return _RotationMode
+    msg = f"module 'andoyer.body' has no attribute {name!r}"
+    raise AttributeError(msg)
 
 
 @dataclass(frozen=True, eq=True)
@@ -314,33 +342,72 @@ class RigidBody:
         m = as_vectors(m_body, "m_body")
         return 0.5 * np.sum(m * m / self.moments, axis=-1)
 
-    def rotation_mode(self, m_body: ArrayLike) -> NDArray[np.str_]:
-        """Classify body angular momenta (..., 3) as SAM, LAM or separatrix.
+    def regime(self, m_body: ArrayLike) -> NDArray[np.int8]:
+        r"""The :class:`~andoyer.Regime` of torque-free rotation of body angular momenta (..., 3).
 
-        The test ``2T/G² <=> 1/B`` is done without cancellation as the sign of
-        ``Σ m_i² (B - I_i)/I_i``. Bodies with ``B = A`` or ``B = C`` have no
-        separatrix to cross and give :attr:`RotationMode.STEADY`.
+        The package's one classification (:func:`andoyer.regime.regime_code`): REST for
+        ``m = 0``, SPHERE for ``A = C``, AXISYMMETRIC for ``B = A`` or ``B = C``, else the sign
+        of ``P₂ = G²/B − 2T`` evaluated exactly for the floating-point inputs (double-double
+        arithmetic): SAM where ``2T < G²/B``, LAM where ``2T > G²/B``, SEPARATRIX where they
+        are equal.  :class:`~andoyer.FreeRotation` and :class:`~andoyer.free.FreeMotion` decide
+        with the same kernel, so a state near the separatrix is classified identically
+        everywhere.
+
+        Parameters
+        ----------
+        m_body : array_like, shape (..., 3)
+            Body-frame angular momenta, finite.
+
+        Returns
+        -------
+        numpy.ndarray of int8, shape (...)
+            :class:`~andoyer.Regime` codes (``Regime(int(code)).name`` names one;
+            :func:`andoyer.regime.regime_names` names an array).
 
         Examples
         --------
+        >>> from andoyer import Regime, RigidBody
         >>> body = RigidBody(1.0, 2.0, 3.0)
-        >>> body.rotation_mode([[0.1, 0.0, 1.0], [1.0, 0.0, 0.1]]).tolist()
-        ['SAM', 'LAM']
+        >>> [Regime(int(r)).name for r in body.regime([[0.1, 0.0, 1.0], [1.0, 0.0, 0.1], [0.0, 1.0, 0.0]])]
+        ['SAM', 'LAM', 'SEPARATRIX']
+        >>> Regime(int(RigidBody(1.0, 1.0, 1.5).regime([0.3, 0.0, 1.0]))).name
+        'AXISYMMETRIC'
+        """
+        from andoyer.regime import regime_codes  # loads the compensated arithmetic on first use
+
+        m = as_vectors(m_body, "m_body")
+        return regime_codes(np.broadcast_to(self.moments, m.shape), m)
+
+    def rotation_mode(self, m_body: ArrayLike) -> NDArray[np.str_]:
+        """Classify body angular momenta (..., 3) as SAM, LAM, separatrix or steady.  Deprecated.
+
+        Use :meth:`regime`, of which this is a view: :class:`~andoyer.Regime` SAM, LAM and
+        SEPARATRIX give ``"SAM"``, ``"LAM"`` and ``"separatrix"``; AXISYMMETRIC, SPHERE and
+        REST (a zero momentum: the body does not move) give ``"steady"``.  The separatrix test
+        is :meth:`regime`'s, exact for the floating-point inputs.  Calling it warns
+        (:class:`DeprecationWarning`).
 
         Returns
         -------
         numpy.ndarray of str, shape (...)
-            The :class:`RotationMode` values.
+            The ``RotationMode`` values.
+
+        Examples
+        --------
+        >>> import warnings
+        >>> body = RigidBody(1.0, 2.0, 3.0)
+        >>> with warnings.catch_warnings():
+        ...     warnings.simplefilter("ignore", DeprecationWarning)
+        ...     body.rotation_mode([[0.1, 0.0, 1.0], [1.0, 0.0, 0.1], [0.0, 0.0, 0.0]]).tolist()
+        ['SAM', 'LAM', 'steady']
         """
-        m = as_vectors(m_body, "m_body")
-        a, b, c = self.sorted_moments
-        if b in (a, c):
-            return np.full(m.shape[:-1], RotationMode.STEADY.value)
-        s = np.sum(m * m * (b - self.moments) / self.moments, axis=-1)
-        out = np.full(m.shape[:-1], RotationMode.SEPARATRIX.value, dtype="<U10")
-        out[s > 0] = RotationMode.LAM.value
-        out[s < 0] = RotationMode.SAM.value
-        return out
+        msg = (
+            "RigidBody.rotation_mode is deprecated: use RigidBody.regime (andoyer.Regime codes; "
+            "AXISYMMETRIC, SPHERE and REST where rotation_mode says 'steady')"
+        )
+        warnings.warn(msg, DeprecationWarning, stacklevel=2)
+        codes = self.regime(m_body)
+        return _MODE_OF_REGIME[codes.ravel()].reshape(codes.shape)  # an array also for one state
 
     def __repr__(self) -> str:
         label = f", name={self.name!r}" if self.name else ""

@@ -9,7 +9,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from andoyer import RigidBody, RotationMode, Symmetry, bodies
+import andoyer
+from andoyer import Regime, RigidBody, Symmetry, bodies
 from andoyer.body import NonPhysicalInertiaWarning
 
 # Lara (2013) Table 1: beta as printed (7 significant digits).
@@ -76,7 +77,8 @@ def test_body_euler_coefficients_exact_on_near_axisymmetric_earth():
 )
 def test_body_rotation_mode_triaxial(m, mode):
     body = RigidBody(1.0, 2.0, 2.5)
-    assert body.rotation_mode(m) == mode
+    with pytest.warns(DeprecationWarning, match="use RigidBody.regime"):
+        assert body.rotation_mode(m) == mode
     # The classification agrees with the energy test 2T/G^2 vs 1/B done directly.
     two_t_over_g2 = 2 * body.energy(m) / np.dot(m, m)
     expected = (
@@ -86,9 +88,63 @@ def test_body_rotation_mode_triaxial(m, mode):
 
 
 def test_body_rotation_mode_axisymmetric_is_steady_and_vectorised():
-    modes = RigidBody(1.0, 1.0, 1.5).rotation_mode(np.ones((4, 2, 3)))
+    with pytest.warns(DeprecationWarning, match="rotation_mode is deprecated"):
+        modes = RigidBody(1.0, 1.0, 1.5).rotation_mode(np.ones((4, 2, 3)))
     assert modes.shape == (4, 2)
-    assert set(modes.ravel().tolist()) == {RotationMode.STEADY.value}
+    assert set(modes.ravel().tolist()) == {"steady"}
+
+
+@pytest.mark.parametrize(
+    ("moments", "m", "regime", "mode"),
+    [
+        ((1.0, 2.0, 3.0), (0.1, 0.2, 1.0), Regime.SAM, "SAM"),
+        ((1.0, 2.0, 3.0), (1.0, 0.2, 0.1), Regime.LAM, "LAM"),
+        ((3.0, 4.0, 6.0), (1.0, 0.7, -1.0), Regime.SEPARATRIX, "separatrix"),
+        ((2.0, 2.0, 3.0), (0.3, 0.1, 1.0), Regime.AXISYMMETRIC, "steady"),
+        ((2.0, 3.0, 3.0), (0.3, 0.1, 1.0), Regime.AXISYMMETRIC, "steady"),
+        ((2.0, 2.0, 2.0), (0.3, 0.1, 1.0), Regime.SPHERE, "steady"),
+        ((1.0, 2.0, 3.0), (0.0, 0.0, 0.0), Regime.REST, "steady"),
+    ],
+)
+def test_body_rotation_mode_is_a_view_of_regime(moments, m, regime, mode):
+    # (3, 4, 6), |m1| = |m3|: m_C^2 (C - B) A = m_A^2 (B - A) C = 6 exactly
+    body = RigidBody(*moments)
+    assert body.regime(m) == regime
+    with pytest.warns(DeprecationWarning, match="rotation_mode is deprecated"):
+        got = body.rotation_mode(m)
+    assert got.shape == ()
+    assert str(got) == mode
+
+
+def test_body_regime_broadcasts_leading_shape():
+    body = RigidBody(1.0, 2.0, 3.0)
+    m = np.zeros((4, 2, 3))
+    m[..., 2] = 1.0
+    m[0, 1] = (1.0, 0.0, 0.0)
+    got = body.regime(m)
+    assert got.shape == (4, 2)
+    assert got.dtype == np.int8
+    assert got[0, 1] == Regime.LAM
+    assert np.count_nonzero(got == Regime.SAM) == 7
+    with pytest.raises(ValueError, match=r"m_body with shape \(\.\.\., 3\)"):
+        body.regime([1.0, 2.0])
+    with pytest.raises(ValueError, match="m_body"):
+        body.regime([1.0, np.nan, 2.0])
+
+
+def test_body_rotation_mode_enum_is_deprecated_where_used():
+    with pytest.warns(DeprecationWarning, match="RotationMode is deprecated") as caught:
+        mode = andoyer.RotationMode
+    assert caught[0].filename == __file__
+    with pytest.warns(DeprecationWarning, match="RotationMode is deprecated") as caught:
+        from andoyer.body import RotationMode
+    assert caught[0].filename == __file__
+    assert mode is RotationMode
+    assert RotationMode.STEADY.value == "steady"
+    with pytest.warns(DeprecationWarning, match="rotation_mode is deprecated") as caught:
+        RigidBody(1.0, 2.0, 3.0).rotation_mode([0.0, 0.0, 1.0])
+    assert caught[0].filename == __file__
+    assert "RotationMode" not in andoyer.__all__
 
 
 @settings(max_examples=200, deadline=None)

@@ -1,12 +1,13 @@
 """Regime classification (exact for the floating-point inputs) and input validation."""
 
+import math
 from fractions import Fraction
 
 import numpy as np
 import pytest
 
 from andoyer.free import Regime, classify
-from andoyer.free.regime import check_inputs
+from andoyer.free.regime import check_inputs, normalise, scale_exponents
 
 
 def _exact_regime(moments, m0):
@@ -99,3 +100,23 @@ def test_bad_inputs_raise(moments, m0, message):
 def test_flat_body_is_allowed():
     # A + B = C (a lamina) satisfies the triangle inequality
     assert classify([1.0, 2.0, 3.0], [0.1, 0.2, 1.0]) == Regime.SAM
+
+
+@pytest.mark.parametrize(
+    ("moments", "m", "a", "b"),
+    [
+        ((3.0, 4.0, 6.0), (0.0, 48.0, 0.0), 3, 6),  # 6 = 0.75·2³, 48 = 0.75·2⁶
+        ((0.5, 0.25, 0.75), (-1.0, 0.0, 0.5), 0, 1),
+        ((1.0, 1.0, 1.0), (0.0, 0.0, 0.0), 1, 1),  # rest: the exponent of 1
+        ((1e300, 1.0, 1.0), (5e-324, 0.0, 0.0), 997, -1073),
+    ],
+)
+def test_scale_exponents_put_the_largest_in_half_open_unit(moments, m, a, b):
+    got = scale_exponents(*moments, *m)
+    assert (int(got[0]), int(got[1])) == (a, b)
+    assert 0.5 <= max(moments) / 2.0**a < 1.0
+    assert max(map(abs, m)) == 0 or 0.5 <= math.ldexp(max(map(abs, m)), -b) < 1.0
+    i, x, a2, b2 = normalise(np.array(moments), np.array(m))
+    assert (int(a2), int(b2)) == (a, b)
+    assert np.array_equal(i, np.ldexp(moments, -a))
+    assert np.array_equal(x, np.ldexp(m, -b))

@@ -23,10 +23,11 @@ import numpy as np
 
 from andoyer import bodies
 from andoyer._files import new_dir_mode
-from andoyer.body import RigidBody, RotationMode
+from andoyer.body import RigidBody
 from andoyer.cli.chart_table import CHARTS
 from andoyer.cli.output import CliError, atomic_output, output_target
 from andoyer.free import FreeRotation
+from andoyer.regime import Regime
 from andoyer.state import State
 
 if TYPE_CHECKING:
@@ -104,7 +105,7 @@ def section_body(ctx: DemoContext) -> str:
         (
             f"State: one spin per {entry.rotation_period:.10g} s, angular momentum {entry.J0:.3g} rad "
             f"from the figure axis, inclination I = {DEMO_INCLINATION} rad on the reference axis; "
-            f"rotation mode {body.rotation_mode(state.m_body)}, "
+            f"regime {Regime(int(body.regime(state.m_body))).name}, "
             f"energy T = {float(state.energy(body)):.17g}.\n"
         ),
     ]
@@ -148,7 +149,7 @@ def section_sam(ctx: DemoContext) -> str:
 
     body = ctx.body
     free = FreeRotation(body)
-    mode = "LAM" if body.rotation_mode(ctx.state.m_body) == RotationMode.LAM else "SAM"
+    mode = "LAM" if body.regime(ctx.state.m_body) == Regime.LAM else "SAM"
     theories = [SAMRotation(body, order=order, mode=mode) for order in SAM_ORDERS]
     rows = []
     for nutation in SAM_NUTATIONS:

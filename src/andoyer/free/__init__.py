@@ -17,7 +17,7 @@ import importlib
 from typing import TYPE_CHECKING, Any
 
 from andoyer.free.motion import FreeMotion, FreePeriods, attitude, momentum, periods, propagate
-from andoyer.free.regime import Regime, classify
+from andoyer.regime import Regime, classify
 
 if TYPE_CHECKING:
     from andoyer.free.rotation import FreeRotation

@@ -1,57 +1,31 @@
 """Regimes and power-of-two scaling of many states in one compiled loop.
 
 :func:`andoyer.free.regime.classify` and :func:`andoyer.free.regime.normalise` for
-validated inputs, per state in a numba kernel: the same exponents, the same scaled
-values and the same regimes (the sign of ``P₂ = G²/B − D`` from the same error-free
-products and double-double sums, :mod:`andoyer.special.compensated`, so the decision is the
-same bit for bit).  :class:`andoyer.free.FreeMotion` uses it when numba is installed.
+validated inputs, per state in a numba kernel: the same exponents and the same scaled
+values (:func:`andoyer.free.regime.scale_exponents`) and the same regimes, from the same kernel
+(:func:`andoyer.regime.regime_code`, compiled here, run on arrays there), so the decision is
+the same bit for bit.  :class:`andoyer.free.FreeMotion` uses it when numba is installed.
 """
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from andoyer._jit import jit
-from andoyer.free.regime import Regime
-from andoyer.special.compensated import dd_add, dd_mul, two_prod, two_sum
+from andoyer.free.regime import scale_exponents
+from andoyer.regime import regime_code
 
 __all__ = ["classify_and_scale"]
-
-_SAM, _LAM, _SEP = int(Regime.SAM), int(Regime.LAM), int(Regime.SEPARATRIX)
-_AXI, _SPHERE, _REST = int(Regime.AXISYMMETRIC), int(Regime.SPHERE), int(Regime.REST)
 
 
 @jit
 def _state(Ib, mb, Is, ms):
     """Scale one state into ``Is, ms``; return its regime code and the exponents ``a, b``."""
-    a = math.frexp(max(Ib[0], Ib[1], Ib[2]))[1]
-    big = max(abs(mb[0]), abs(mb[1]), abs(mb[2]))
-    b = math.frexp(big if big > 0 else 1.0)[1]
+    a, b = scale_exponents(Ib[0], Ib[1], Ib[2], mb[0], mb[1], mb[2])
     for k in range(3):
-        Is[k] = math.ldexp(Ib[k], -a)
-        ms[k] = math.ldexp(mb[k], -b)
-    o0, o1, o2 = 0, 1, 2  # stable sort of three moments
-    if Is[o1] < Is[o0]:
-        o0, o1 = o1, o0
-    if Is[o2] < Is[o1]:
-        o1, o2 = o2, o1
-        if Is[o1] < Is[o0]:
-            o0, o1 = o1, o0
-    A, B, C = Is[o0], Is[o1], Is[o2]
-    if big == 0:
-        return _REST, a, b
-    if A == C:
-        return _SPHERE, a, b
-    if B in (A, C):
-        return _AXI, a, b
-    # m_C² (C − B) A − m_A² (B − A) C: the sign of P₂ (andoyer.free.regime._separatrix_sign)
-    ma, mc = ms[o0], ms[o2]
-    t1 = dd_mul(*two_prod(mc, mc), *dd_mul(*two_sum(C, -B), A, 0.0))
-    t2 = dd_mul(*two_prod(ma, ma), *dd_mul(*two_sum(B, -A), C, 0.0))
-    hi = dd_add(t1[0], t1[1], -t2[0], -t2[1])[0]
-    return (_SAM if hi > 0 else (_LAM if hi < 0 else _SEP)), a, b
+        Is[k] = np.ldexp(Ib[k], -a)
+        ms[k] = np.ldexp(mb[k], -b)
+    return regime_code(Is[0], Is[1], Is[2], ms[0], ms[1], ms[2]), a, b
 
 
 @jit
@@ -72,7 +46,9 @@ def classify_and_scale(moments, m0):
     Returns
     -------
     regime : ndarray of int8, shape (N,)
-        :class:`andoyer.free.regime.Regime` codes.
+        :class:`andoyer.regime.Regime` codes of the scaled states, the states the solution
+        works on: those of the inputs (:func:`andoyer.regime.classify`) unless the scaling
+        rounded a component below ``2⁻¹⁰²²`` times the largest (a subnormal).
     moments, m0 : ndarray, shape (N, 3)
         The states scaled by powers of two.
     a, b : ndarray of int, shape (N,)

@@ -24,12 +24,11 @@ from typing import NamedTuple
 import numpy as np
 
 from andoyer._jit import jit
-from andoyer.free.regime import Regime
+from andoyer.regime import Regime
 from andoyer.special.compensated import dd_add, dd_div, dd_mul, dd_sqrt, two_prod, two_sum
 
 __all__ = ["COLUMNS", "UniformTable", "evaluate", "fill", "polhode_limit", "uniform_table"]
 
-_AXISYMMETRIC = int(Regime.AXISYMMETRIC)
 _TWO_PI_HI, _TWO_PI_LO = 2.0 * 3.141592653589793, 2.0 * 1.2246467991473532e-16
 
 #: Columns of the table: ``spin`` (hi, lo), ``body`` (hi, lo), ``m_par``, ``m_perp``,
@@ -85,11 +84,11 @@ def _axes(I, m, axisymmetric):
 
 
 @jit
-def _setup(moments, m0, regime, q0, out, period, rate):
+def _setup(moments, m0, axisymmetric, q0, out, period, rate):
     attitude = q0.shape[0] > 0
     for i in range(m0.shape[0]):
         m = m0[i]
-        k, I_s, I_t = _axes(moments[i], m, regime[i] == _AXISYMMETRIC)
+        k, I_s, I_t = _axes(moments[i], m, axisymmetric[i])
         ms = m[k]
         a0, a1 = two_prod(m[0], m[0])
         b0, b1 = two_prod(m[1], m[1])
@@ -175,7 +174,7 @@ def uniform_table(moments, m0, regime, q0=None):
     _setup(
         np.ascontiguousarray(moments, dtype=np.float64),
         np.ascontiguousarray(m0, dtype=np.float64),
-        np.ascontiguousarray(regime, dtype=np.int64),
+        np.ascontiguousarray(np.asarray(regime) == Regime.AXISYMMETRIC),
         q,
         out,
         period,

@@ -46,7 +46,8 @@ from andoyer.free import uniform as _uni
 from andoyer.free.blocks import Group, evaluate_blocks
 from andoyer.free.compiled_regime import classify_and_scale
 from andoyer.free.compiled_setup import as_triaxial, triaxial_table
-from andoyer.free.regime import Regime, check_inputs, classify_scaled, normalise, polhode_frame
+from andoyer.free.regime import normalise, polhode_frame
+from andoyer.regime import Regime, check_inputs, regime_codes
 
 __all__ = ["FreeMotion", "FreePeriods", "attitude", "momentum", "periods", "propagate"]
 
@@ -148,7 +149,7 @@ class FreeMotion:
             regime, moments, m0, a, b = classify_and_scale(moments, m0)
         else:
             moments, m0, a, b = normalise(moments, m0)
-            regime = classify_scaled(moments, m0)
+            regime = regime_codes(moments, m0)
         tshift = b - a
         self.regime = regime.reshape(shape)
         self._has_attitude = q0 is not None

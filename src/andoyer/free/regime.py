@@ -1,17 +1,8 @@
-r"""Regimes of torque-free rotation and the polhode-centred working frame.
+r"""The polhode-centred working frame of triaxial states and the power-of-two scaling.
 
-With the sorted moments ``A ≤ B ≤ C``, the angular momentum ``G = |m|`` and twice the
-kinetic energy ``D = 2T = Σ mᵢ²/Iᵢ``, the body angular momentum of a triaxial body
-circulates around the axis of maximum inertia (SAM, ``G²/C ≤ D < G²/B``), around the
-axis of minimum inertia (LAM, ``G²/B < D ≤ G²/A``), or lies on the separatrix
-(``D = G²/B``).  The sign of
-
-.. math:: P_2 = G^2/B - D = m_C^2 \Big(\frac1B - \frac1C\Big) - m_A^2 \Big(\frac1A - \frac1B\Big)
-
-decides; it is a difference of nearly equal numbers near the separatrix, so it is
-formed in double-double arithmetic from the exact products of the inputs (the
-differences of moments and the squares of the components are exact there), which
-makes the classification exact for the floating-point inputs as given.
+The regime vocabulary and its one classification live in :mod:`andoyer.regime` (below the
+body, which uses them too); :class:`Regime`, :func:`classify` and :func:`check_inputs` are
+re-exported here, where they were first defined.
 
 Working frame.  The kernels use body axes relabelled by a signed permutation ``P``
 (a proper rotation) such that axis 3 is the axis the polhode circles (``C`` for SAM and
@@ -30,12 +21,13 @@ give every constant of the solution (:mod:`andoyer.free.triaxial`).
 
 from __future__ import annotations
 
-from enum import IntEnum
 from typing import NamedTuple
 
 import numpy as np
 
+from andoyer._jit import exponent, jitable, select
 from andoyer.free.quaternion import matrix_quat, qmul, shortest_arc
+from andoyer.regime import Regime, check_inputs, classify, regime_codes
 from andoyer.special.compensated import dd_add, dd_div, dd_mul, dd_sqrt, two_prod, two_sum
 
 __all__ = [
@@ -47,68 +39,41 @@ __all__ = [
     "classify_scaled",
     "normalise",
     "polhode_frame",
+    "scale_exponents",
     "working_axes",
 ]
 
-class Regime(IntEnum):
-    """Kind of torque-free motion of one body and state."""
 
-    SAM = 0
-    """Short-axis mode: the momentum circles the axis of maximum inertia (triaxial body)."""
-    LAM = 1
-    """Long-axis mode: the momentum circles the axis of minimum inertia (triaxial body)."""
-    SEPARATRIX = 2
-    """On the separatrix (``2T = G²/B``), including steady spin about the middle axis."""
-    AXISYMMETRIC = 3
-    """Two equal moments (not three): regular precession."""
-    SPHERE = 4
-    """Three equal moments: uniform rotation about the fixed momentum."""
-    REST = 5
-    """Zero angular momentum: the body does not move."""
+@jitable
+def scale_exponents(i1, i2, i3, m1, m2, m3):
+    """Exponents ``a, b`` that scale a state into ``[1/2, 1)``: ``max Iᵢ = 2^a f``, ``max |mᵢ| = 2^b g``.
 
-
-def check_inputs(moments, m0):
-    """Validate moments and body angular momenta and broadcast them to a common shape.
+    ``f, g ∈ [1/2, 1)``; a zero momentum gives ``b = 1`` (the exponent of 1).  The motion
+    is covariant under ``I = 2^a I'``, ``m = 2^b m'`` (:func:`normalise`),
+    and the regime does not change.  A kernel written once: floats (compiled or not) or
+    arrays broadcast together.
 
     Parameters
     ----------
-    moments : array_like, shape (..., 3)
-        Principal moments along body axes b1, b2, b3: positive, finite, any order.  The
-        solution does not need the triangle inequality ``A + B ≥ C`` of a mass distribution
-        (:class:`~andoyer.RigidBody` warns where it fails).
-    m0 : array_like, shape (..., 3)
-        Body-frame angular momentum, finite.
+    i1, i2, i3 : float or ndarray, shape (...)
+        Principal moments (positive, finite).
+    m1, m2, m3 : float or ndarray, shape (...)
+        Body angular momentum (finite).
 
     Returns
     -------
-    moments, m0 : ndarray, shape (..., 3)
-        Float64 arrays broadcast against each other.
-
-    Raises
-    ------
-    ValueError
-        On a wrong shape, a non-finite value or a non-positive moment.
+    a, b : int or ndarray of int, shape (...)
+        The exponents.
 
     Examples
     --------
-    >>> moments, m = check_inputs([1.0, 2.0, 2.5], [[0.1, 0.2, 1.0], [1.0, 0.0, 0.0]])
-    >>> moments.shape, m.shape
-    ((2, 3), (2, 3))
+    >>> a, b = scale_exponents(3.0, 4.0, 6.0, 0.0, 48.0, 0.0)
+    >>> int(a), int(b)
+    (3, 6)
     """
-    moments = np.asarray(moments, dtype=np.float64)
-    m0 = np.asarray(m0, dtype=np.float64)
-    for name, a in (("moments", moments), ("m0", m0)):
-        if a.ndim == 0 or a.shape[-1] != 3:
-            raise ValueError(f"expected {name} with shape (..., 3), got shape {a.shape}")
-        if not np.all(np.isfinite(a)):
-            raise ValueError(f"expected finite {name}, got {a[~np.isfinite(a)].ravel()[:3]}")
-    if np.any(moments <= 0):
-        bad = moments[moments <= 0].ravel()[:3]
-        raise ValueError(f"expected positive moments of inertia, got {bad}")
-    if moments.shape == m0.shape:  # nothing to broadcast (one body per state, or one state)
-        return moments, m0
-    shape = np.broadcast_shapes(moments.shape, m0.shape)
-    return np.broadcast_to(moments, shape), np.broadcast_to(m0, shape)
+    big_i = np.maximum(np.maximum(i1, i2), i3)
+    big_m = np.maximum(np.maximum(np.abs(m1), np.abs(m2)), np.abs(m3))
+    return exponent(big_i), exponent(select(big_m > 0, big_m, 1.0))
 
 
 def normalise(moments, m0):
@@ -136,9 +101,8 @@ def normalise(moments, m0):
     >>> i.tolist(), m.tolist(), int(a), int(b)
     ([0.375, 0.5, 0.75], [0.0, 0.75, 0.0], 3, 6)
     """
-    _, a = np.frexp(np.max(moments, axis=-1))
-    big = np.max(np.abs(m0), axis=-1)
-    _, b = np.frexp(np.where(big > 0, big, 1.0))
+    a, b = scale_exponents(*(moments[..., k] for k in range(3)), *(m0[..., k] for k in range(3)))
+    a, b = np.broadcast_to(a, moments.shape[:-1]), np.broadcast_to(b, m0.shape[:-1])
     return np.ldexp(moments, -a[..., None]), np.ldexp(m0, -b[..., None]), a, b
 
 
@@ -148,57 +112,16 @@ def _sorted_axes(moments):
     return order[..., 0], order[..., 1], order[..., 2]
 
 
-def _separatrix_sign(moments, m0):
-    """Sign of ``P₂ = G²/B − D`` in double-double (``+1`` SAM, ``−1`` LAM, ``0`` separatrix)."""
-    ia, ib, ic = _sorted_axes(moments)
-    take = lambda a, i: np.take_along_axis(a, i[..., None], axis=-1)[..., 0]  # noqa: E731
-    A, B, C = take(moments, ia), take(moments, ib), take(moments, ic)
-    ma, mc = take(m0, ia), take(m0, ic)
-    # m_C² (C − B)/(B C) − m_A² (B − A)/(A B), times A B C > 0: same sign.
-    t1 = dd_mul(*two_prod(mc, mc), *dd_mul(*two_sum(C, -B), A, 0.0))
-    t2 = dd_mul(*two_prod(ma, ma), *dd_mul(*two_sum(B, -A), C, 0.0))
-    hi, _ = dd_add(*t1, -t2[0], -t2[1])
-    return np.sign(hi)
-
-
-def classify(moments, m0):
-    """Regime of the torque-free motion of each body and state.
-
-    Parameters
-    ----------
-    moments : array_like, shape (..., 3)
-        Principal moments (any order, positive).
-    m0 : array_like, shape (..., 3)
-        Body-frame angular momentum.
-
-    Returns
-    -------
-    ndarray of int, shape (...)
-        :class:`Regime` codes.  Exact equalities decide: two equal moments make a body
-        axisymmetric, and the separatrix is ``2T = G²/B`` for the floating-point inputs as
-        given (evaluated in double-double arithmetic).
-
-    Examples
-    --------
-    >>> moments = [1.0, 2.0, 3.0]
-    >>> [Regime(int(r)).name for r in classify(moments, [[0.1, 0.2, 1.0], [1.0, 0.2, 0.1],
-    ...                                              [0.0, 1.0, 0.0]])]
-    ['SAM', 'LAM', 'SEPARATRIX']
-    >>> Regime(int(classify([2.0, 2.0, 3.0], [0.3, 0.0, 1.0]))).name
-    'AXISYMMETRIC'
-    """
-    moments, m0 = check_inputs(moments, m0)
-    moments, m0, _, _ = normalise(moments, m0)
-    return classify_scaled(moments, m0)
-
-
 def classify_scaled(moments, m0):
-    """:func:`classify` for validated states already scaled by :func:`normalise`.
+    """:func:`andoyer.regime.classify` for validated states, without the checks.
+
+    The states need not be scaled any more (:func:`andoyer.regime.regime_code` scales each
+    state itself); the name stays for the callers of :func:`normalise` that used it.
 
     Parameters
     ----------
     moments, m0 : ndarray, shape (..., 3)
-        Output of :func:`normalise`.
+        Validated moments and momenta, e.g. the output of :func:`normalise`.
 
     Returns
     -------
@@ -210,14 +133,7 @@ def classify_scaled(moments, m0):
     >>> Regime(int(classify_scaled(np.array([0.375, 0.5, 0.75]), np.array([0.0, 0.75, 0.0])))).name
     'SEPARATRIX'
     """
-    s = np.sort(moments, axis=-1)
-    sign = _separatrix_sign(moments, m0)
-    regime = np.where(sign > 0, Regime.SAM, np.where(sign < 0, Regime.LAM, Regime.SEPARATRIX))
-    axisymmetric = (s[..., 0] == s[..., 1]) | (s[..., 1] == s[..., 2])
-    regime = np.where(axisymmetric, Regime.AXISYMMETRIC, regime)
-    regime = np.where(s[..., 0] == s[..., 2], Regime.SPHERE, regime)
-    regime = np.where(np.all(m0 == 0, axis=-1), Regime.REST, regime)
-    return regime.astype(np.int8)
+    return regime_codes(moments, m0)
 
 
 class PolhodeFrame(NamedTuple):

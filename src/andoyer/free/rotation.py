@@ -7,7 +7,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from andoyer.body import RigidBody
 from andoyer.free.motion import FreeMotion, FreePeriods
-from andoyer.free.regime import Regime
+from andoyer.regime import regime_names
 from andoyer.state import State
 
 __all__ = ["FreeRotation"]
@@ -86,9 +86,7 @@ class FreeRotation:
 
     def regime(self, state: State) -> NDArray[np.str_]:
         """Regime names, shape (S...): SAM, LAM, SEPARATRIX, AXISYMMETRIC, SPHERE or REST."""
-        codes = self._motion(state).regime
-        names = np.array([r.name for r in Regime])
-        return names[np.asarray(codes, dtype=int)]
+        return regime_names(self._motion(state).regime)
 
     def periods(self, state: State) -> FreePeriods:
         """Period of ``m(t)``, precession of the attitude per period and its mean rate, shape (S...)."""

@@ -23,7 +23,7 @@ from scipy.spatial.transform import Rotation
 
 from andoyer.free.phase import Frequency, cycles, frequency
 from andoyer.free.quaternion import qmul
-from andoyer.free.regime import Regime
+from andoyer.regime import Regime
 from andoyer.special.compensated import (
     PI_DD,
     dd_add,
@@ -144,7 +144,7 @@ def uniform_axes(moments, m0, regime):
     ----------
     moments, m0 : ndarray, shape (N, 3)
     regime : ndarray of int, shape (N,)
-        :class:`andoyer.free.regime.Regime` codes: axisymmetric states use the axis of the
+        :class:`andoyer.regime.Regime` codes: axisymmetric states use the axis of the
         distinct moment; steady spins (of any regime, including a wobble so small that
         its square underflows), spheres and rest use the largest momentum component,
         with ``I_t = I_s`` so that ``λ = 0``.

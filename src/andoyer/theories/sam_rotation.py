@@ -20,8 +20,9 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer._validation import as_finite
-from andoyer.body import RigidBody, RotationMode
+from andoyer.body import RigidBody
 from andoyer.charts.sam import SAM, SAMAxes, _sam_of_hub, sam_axes, sam_to_hub
+from andoyer.regime import Regime
 from andoyer.state import State
 from andoyer.theories.sam import SAMTheory, sam_theory
 
@@ -51,7 +52,8 @@ class SAMRotation:
         Deprit order ``N ≥ 1`` (error ``O(δ^(N+1))``).
     mode : {"SAM", "LAM"}
         Rotation about the axis of maximum (SAM) or minimum (LAM) inertia.  States must be in
-        that rotation mode (any state of an axisymmetric body whose chart exists).
+        that :class:`~andoyer.Regime` (:meth:`~andoyer.RigidBody.regime`; any state of an
+        axisymmetric body whose chart exists).
 
     Attributes
     ----------
@@ -93,10 +95,11 @@ class SAMRotation:
             msg = f"expected an andoyer State, got {type(state).__name__}"
             raise ValueError(msg)
         m = state.m_body
-        modes = self.body.rotation_mode(m)
-        wrong = (modes != self.mode) & (modes != RotationMode.STEADY.value)
+        regime = self.body.regime(m)
+        # the triaxial regimes other than the theory's; the chart refuses a zero momentum itself
+        wrong = (regime <= Regime.SEPARATRIX) & (regime != Regime[self.mode])
         if np.any(wrong):
-            other = str(modes[wrong].flat[0])
+            other = Regime(int(regime[wrong].flat[0])).name
             msg = (
                 f"expected states in {self.mode} rotation for mode={self.mode!r}, "
                 f"got {int(np.count_nonzero(wrong))} state(s) in {other} rotation"
