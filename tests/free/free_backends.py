@@ -1,4 +1,4 @@
-"""The backends of the free solution driven alike by the tests (the fixtures are in ``conftest.py``).
+"""The backends of the free solution driven alike by the tests (fixtures in ``tests/conftest.py``).
 
 Three implementations of the torque-free solution (:mod:`andoyer.free.backends`):
 

@@ -5,7 +5,7 @@ to 100 periods, for 25 seeded bodies and states in every regime (SAM, LAM, 1 −
 1e-10, near pure spin, the Earth, spheres, axisymmetric bodies, the separatrix, k² ≈ 1/2,
 moments and momenta from 1e-6 to 1e12).  The default run checks five of them over a few
 periods; ``-m slow`` checks all of them out to 100 periods.  Each on every backend
-(``conftest.py``: the scalar one near the separatrix over short steps, not on it).
+(``free_backends.py``: the scalar one near the separatrix over short steps, not on it).
 """
 
 import mpmath as mp

@@ -1,6 +1,6 @@
 """The backends of the free solution: their names and errors, and that they agree in every regime.
 
-Each backend (``compiled`` with numba, ``numpy``, ``scalar``; ``conftest.py``) against the
+Each backend (``compiled`` with numba, ``numpy``, ``scalar``; ``free_backends.py``) against the
 57-digit Taylor reference of ``free_reference.py`` (the accuracy documented in
 ``test_free_accuracy.py``: 1e-13 in ``m``, 1e-12 rad), and against each other, over the regimes.
 """

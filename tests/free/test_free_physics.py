@@ -1,6 +1,6 @@
 """Physics of the exact solution: invariants, periods, precession, limits, symmetries.
 
-On every backend (``conftest.py``): the flow on all three, periods and limits on FreeMotion's.
+On every backend (``free_backends.py``): the flow on all three, periods and limits on FreeMotion's.
 """
 
 from functools import partial

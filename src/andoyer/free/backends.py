@@ -28,7 +28,7 @@ a step ``h`` from wherever it is, and has no periods or regime to report; it lea
 within ``10⁻¹²`` of the separatrix to ``FreeMotion`` and keeps the accuracy of the others
 near the separatrix only over short steps (it works in float64 where they carry the phase in
 double-double: over a third of a period its error grows to ~1e-12 at ``1 − k² = 10⁻⁶`` and
-~1e-9 at ``10⁻¹⁰``, against 1e-15 over a hundredth of a period; ``tests/free/conftest.py``).
+~1e-9 at ``10⁻¹⁰``, against 1e-15 over a hundredth of a period; ``tests/free/free_backends.py``).
 """
 
 from __future__ import annotations
