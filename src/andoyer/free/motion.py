@@ -126,8 +126,8 @@ class FreeMotion:
     [0.3, 0.2, 1.0]
     >>> fm.attitude([0.0, T]).shape
     (2, 4)
-    >>> numpy = FreeMotion([1.0, 2.0, 3.0], [0.3, 0.2, 1.0], [0.0, 0.0, 0.0, 1.0], backend="numpy")
-    >>> numpy.backend, bool(abs(numpy.attitude(T) - fm.attitude(T)).max() < 1e-14)
+    >>> vectorised = FreeMotion([1.0, 2.0, 3.0], [0.3, 0.2, 1.0], [0.0, 0.0, 0.0, 1.0], backend="numpy")
+    >>> vectorised.backend, bool(abs(vectorised.attitude(T) - fm.attitude(T)).max() < 1e-14)
     ('numpy', True)
     """
 
