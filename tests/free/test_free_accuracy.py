@@ -26,6 +26,7 @@ Q_TOL = 1e-12
 def _check(backend, name, multiples, reference):
     _, moments, m0, q0, t_unit = BY_NAME[name]
     times = backend.times(name, multiples)
+    assert times, (name, backend)
     m, q = backend.propagate(moments, m0, q0, [k * t_unit for k in times])
     for j, k in enumerate(times):
         m_ref, q_ref = reference(name, k)

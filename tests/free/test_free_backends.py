@@ -48,6 +48,7 @@ def _run(backend, name):
     """``{k: (m, q)}`` of ``backend`` on case ``name`` at its times."""
     _, moments, m0, q0, t_unit = BY_NAME[name]
     times = backend.times(name, TIMES)
+    assert times, (name, backend)
     m, q = backend.propagate(moments, m0, q0, [k * t_unit for k in times])
     return {k: (m[j], q[j]) for j, k in enumerate(times)}
 
