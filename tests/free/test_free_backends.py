@@ -61,11 +61,15 @@ def test_backend_matches_the_reference_in_every_regime(name, free_backend, refer
         assert angle_between(q_ref, q) <= Q_TOL, (name, free_backend, k)
 
 
-@pytest.mark.parametrize("name", REGIMES)
+def _applicable(name):
+    return [b for b in AVAILABLE if not (b == "scalar" and name == "separatrix")]
+
+
+# where two backends or more apply (the separatrix without numba has only numpy)
+@pytest.mark.parametrize("name", [n for n in REGIMES if len(_applicable(n)) >= 2])
 def test_backends_agree_with_each_other(name):
     _, _, m0, _, _ = BY_NAME[name]
-    runs = {b: _run(Backend(b), name) for b in AVAILABLE if not (b == "scalar" and name == "separatrix")}
-    assert len(runs) >= 2
+    runs = {b: _run(Backend(b), name) for b in _applicable(name)}
     names = list(runs)
     for i, a in enumerate(names):
         for b in names[i + 1 :]:

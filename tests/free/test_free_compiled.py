@@ -95,9 +95,13 @@ def test_compiled_constants_flag_a_steady_spin():
     assert table.shape == (1, 58)
 
 
-# the backends other than numpy, each against it: the compiled one where numba is available
-@pytest.mark.parametrize("motion_backend", [b for b in MOTION if b != "numpy"], indirect=True)
-@pytest.mark.parametrize("case", CASES, ids=[c[0] for c in CASES])
+# the backends other than numpy, each against it: the compiled one, where numba is available
+# (without it this test has no parameter, and pytest reports it skipped once)
+@pytest.mark.parametrize(
+    ("case", "motion_backend"),
+    [pytest.param(c, b, id=f"{c[0]}-{b}") for b in MOTION if b != "numpy" for c in CASES],
+    indirect=["motion_backend"],
+)
 def test_compiled_freemotion_equals_numpy_freemotion(case, motion_backend):
     _name, moments, m0, q0, t_unit = case
     t = np.array([0.0, 0.37, 9.71, 100.0]) * t_unit
