@@ -12,8 +12,9 @@ item 1); each is a *backend*, chosen by name:
 ``"numpy"``
     vectorised numpy on arrays of states: :func:`~andoyer.free.regime.normalise` and
     :func:`~andoyer.free.regime.classify_scaled`, :func:`andoyer.free.triaxial.triaxial`,
-    :func:`andoyer.free.series.evaluate` and :func:`andoyer.free.periodic.fill_numpy`.
-    Always available.
+    :func:`andoyer.free.series.evaluate` and :func:`andoyer.free.periodic.fill_numpy` (whose
+    piecewise kernels, :mod:`andoyer.free.kernels.piecewise`, numba compiles for arrays when
+    it is installed).  Always available.
 ``"scalar"``
     one state, one step, no set-up: :mod:`andoyer.free.lean` (``_step_one``, compiled by numba
     when it is available, plain Python otherwise), behind :func:`andoyer.free.lean.free_step`

@@ -334,7 +334,7 @@ class FreeMotion:
             for group in self._groups:
                 if group.kernel is _ceval.evaluate or group.kernel is series.evaluate:
                     built = [g for g in _periodic.build(group, attitude) if g is not None]
-                    if self.backend == "numpy":  # filled by numpy too, numba or not
+                    if self.backend == "numpy":  # the vectorised fill, numba or not
                         built = [g._replace(kernel=_NumpyPieces) if g.kernel is _periodic.evaluate else g
                                  for g in built]
                     groups += built
@@ -345,10 +345,10 @@ class FreeMotion:
 
 
 class _NumpyPieces:
-    """Kernel of a periodic group of the numpy backend: :func:`andoyer.free.periodic.fill_numpy`.
+    """Kernel of a periodic group of the numpy backend: the vectorised :func:`andoyer.free.periodic.fill_numpy`.
 
-    :func:`andoyer.free.periodic.evaluate` fills through the compiled loop whenever numba is
-    installed; :func:`andoyer.free.blocks.evaluate_blocks` calls only this ``fill``.
+    :func:`andoyer.free.periodic.evaluate` fills through the compiled per-epoch loop whenever
+    numba is installed; :func:`andoyer.free.blocks.evaluate_blocks` calls only this ``fill``.
     """
 
     fill = staticmethod(_periodic.fill_numpy)
