@@ -345,7 +345,7 @@ class FreeMotion:
 
 
 class _NumpyPieces:
-    """Kernel of a periodic group of the numpy backend: the vectorised :func:`andoyer.free.periodic.fill_numpy`.
+    """The numpy backend's kernel of periodic groups: :func:`andoyer.free.periodic.fill_numpy`, vectorised.
 
     :func:`andoyer.free.periodic.evaluate` fills through the compiled per-epoch loop whenever
     numba is installed; :func:`andoyer.free.blocks.evaluate_blocks` calls only this ``fill``.
