@@ -11,6 +11,7 @@ from hypothesis import settings
 from scipy.spatial.transform import Rotation
 
 from andoyer import RigidBody, State, bodies
+from andoyer.free import backends as free_backends
 
 # Seeded like every other test: hypothesis draws the same examples on every run and machine.
 settings.register_profile("andoyer", derandomize=True, deadline=None)
@@ -120,3 +121,50 @@ def run_cli(capsys):
         return code, out, err
 
     return run
+
+
+# --- the free solution's backends (tests/free; the drivers in tests/free/free_backends.py) ---
+# Here rather than in tests/free/conftest.py: a second module named conftest would replace this
+# one for every test that imports its helpers with ``from conftest import ...``.
+
+_MOTION_BACKENDS = [b for b in free_backends.available() if b in free_backends.MOTION_BACKENDS]
+
+
+@pytest.fixture(scope="session", params=free_backends.available())
+def free_backend(request):
+    """Every available backend of the free solution (``compiled`` with numba, ``numpy``, ``scalar``).
+
+    A ``free_backends.Backend``: the flow ``(m(t), q(t))`` from initial states, the one thing
+    the scalar backend computes, so only for tests of the flow on states off the separatrix
+    (which the scalar kernel refuses), in units where its squares neither overflow nor
+    underflow, near the separatrix over short steps only and elsewhere over at most ten
+    periods (``Backend.times``, ``Backend.step_error``); see ``tests/free/free_backends.py``.
+    A test that applies to only some backends parametrises it itself
+    (``indirect=["free_backend"]``, e.g. with ``free_backends.pairs``).
+    """
+    from free_backends import Backend  # tests/free is on the path of the tests that use it
+
+    return Backend(request.param)
+
+
+@pytest.fixture(scope="session", params=_MOTION_BACKENDS)
+def motion_backend(request) -> str:
+    """Every available backend of ``FreeMotion`` (``compiled`` with numba, ``numpy``), by name.
+
+    For ``FreeMotion(..., backend=motion_backend)`` in the tests of what only ``FreeMotion``
+    offers: periods, regime, the separatrix, layouts, extreme units, the periodic representation.
+    """
+    return request.param
+
+
+@pytest.fixture(scope="session")
+def reference():
+    """``reference(name, k)``: the 57-digit solution of a case of ``tests/free/free_cases.py``.
+
+    At ``k`` of the case's time units, integrated once per case and time for the session
+    (``free_reference.References``).
+    """
+    from free_cases import cases
+    from free_reference import References
+
+    return References(cases())

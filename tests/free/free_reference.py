@@ -202,3 +202,29 @@ def relative_error(m_ref, m):
         num = mp.sqrt(sum((mp.mpf(float(a)) - b) ** 2 for a, b in zip(m, m_ref, strict=True)))
         den = mp.sqrt(sum(b**2 for b in m_ref))
         return float(num / den)
+
+
+class References:
+    """The reference of named cases ``(name, moments, m0, q0, t_unit)``, integrated once per case and time.
+
+    ``references(name, k)`` is ``(m, q)`` at ``k`` time units of case ``name`` (mpf lists);
+    negative ``k`` by time reversal, ``m(−t) = −n(t)``, ``q(−t) = p(t)`` where ``(n, p)``
+    start from ``(−m₀, q₀)``.
+    """
+
+    def __init__(self, cases):
+        self.cases = {c[0]: c for c in cases}
+        self.runs = {}
+        self.done = {}
+
+    def __call__(self, name, k):
+        if (name, k) not in self.done:
+            _, moments, m0, q0, t_unit = self.cases[name]
+            sign = -1 if k < 0 else 1
+            reached, run = self.runs.get((name, sign), (None, None))
+            if run is None or reached > abs(k):  # the integration only goes forward
+                run = TaylorReference(moments, [sign * float(x) for x in m0], q0)
+            m, q = run.advance_to(abs(k) * t_unit)
+            self.runs[name, sign] = (abs(k), run)
+            self.done[name, k] = ([sign * x for x in m], q)
+        return self.done[name, k]

@@ -1,4 +1,4 @@
-"""Array API of the exact solution: broadcasting, chunking, grouping, errors."""
+"""Array API of the exact solution: broadcasting, chunking, grouping, errors (on FreeMotion's backends)."""
 
 import numpy as np
 import pytest
@@ -30,10 +30,10 @@ def _mixed_states():
 MOMENTS, M0, Q0 = _mixed_states()
 
 
-def _one_by_one(t_per_state):
+def _one_by_one(t_per_state, backend=None):
     ms, qs = [], []
     for i in range(len(M0)):
-        m, q = FreeMotion(MOMENTS[i], M0[i], Q0[i]).propagate(t_per_state[i])
+        m, q = FreeMotion(MOMENTS[i], M0[i], Q0[i], backend=backend).propagate(t_per_state[i])
         ms.append(m)
         qs.append(q)
     return np.array(ms), np.array(qs)
@@ -46,39 +46,39 @@ def _same_rotation(qa, qb, tol):
     return np.max(angle) <= tol
 
 
-def test_batch_of_mixed_regimes_equals_states_one_by_one():
+def test_batch_of_mixed_regimes_equals_states_one_by_one(motion_backend):
     t = np.linspace(0.5, 40.0, len(M0))
-    m, q = FreeMotion(MOMENTS, M0, Q0).propagate(t)
-    m1, q1 = _one_by_one(t)
+    m, q = FreeMotion(MOMENTS, M0, Q0, backend=motion_backend).propagate(t)
+    m1, q1 = _one_by_one(t, motion_backend)
     assert np.allclose(m, m1, rtol=0, atol=1e-15 * np.abs(M0).max())
     assert _same_rotation(q, q1, 1e-14)
 
 
-def test_outer_layout_states_by_epochs():
+def test_outer_layout_states_by_epochs(motion_backend):
     t = np.linspace(0.0, 30.0, 7)
-    m, q = FreeMotion(MOMENTS[:, None], M0[:, None], Q0[:, None]).propagate(t)
+    m, q = FreeMotion(MOMENTS[:, None], M0[:, None], Q0[:, None], backend=motion_backend).propagate(t)
     assert m.shape == (len(M0), 7, 3)
     assert q.shape == (len(M0), 7, 4)
     for k in (0, 3, 6):
-        mk, qk = _one_by_one(np.full(len(M0), t[k]))
+        mk, qk = _one_by_one(np.full(len(M0), t[k]), motion_backend)
         assert np.allclose(m[:, k], mk, rtol=0, atol=1e-15 * np.abs(M0).max())
         assert _same_rotation(q[:, k], qk, 1e-14)
 
 
-def test_per_state_epochs_in_outer_layout():
+def test_per_state_epochs_in_outer_layout(motion_backend):
     t = np.arange(len(M0) * 4, dtype=float).reshape(len(M0), 4)
-    m = FreeMotion(MOMENTS[:, None], M0[:, None]).momentum(t)
+    m = FreeMotion(MOMENTS[:, None], M0[:, None], backend=motion_backend).momentum(t)
     for j in range(4):
-        assert np.array_equal(m[:, j], FreeMotion(MOMENTS, M0).momentum(t[:, j]))
+        assert np.array_equal(m[:, j], FreeMotion(MOMENTS, M0, backend=motion_backend).momentum(t[:, j]))
 
 
-def test_general_broadcast_layout():
-    fm = FreeMotion(MOMENTS[:3][None, :], M0[:3][None, :], Q0[:3][None, :])
+def test_general_broadcast_layout(motion_backend):
+    fm = FreeMotion(MOMENTS[:3][None, :], M0[:3][None, :], Q0[:3][None, :], backend=motion_backend)
     t = np.array([[0.0], [2.0]])  # (2, 1) against states (1, 3): no outer split
     m, q = fm.propagate(t)
     assert m.shape == (2, 3, 3)
     assert q.shape == (2, 3, 4)
-    m1, _ = _one_by_one(np.full(len(M0), 2.0))
+    m1, _ = _one_by_one(np.full(len(M0), 2.0), motion_backend)
     assert np.allclose(m[1], m1[:3], rtol=0, atol=1e-15)
 
 
@@ -91,8 +91,8 @@ def test_scalar_shapes():
     assert fm.periods.period.shape == ()
 
 
-def test_long_time_series_is_chunked_consistently():
-    fm = FreeMotion(MOMENTS[0], M0[0], Q0[0])
+def test_long_time_series_is_chunked_consistently(motion_backend):
+    fm = FreeMotion(MOMENTS[0], M0[0], Q0[0], backend=motion_backend)
     fm.periodic_epochs = np.inf  # the direct path (the periodic one: tests/free/test_free_periodic.py)
     t = np.linspace(0.0, 1e4, 50_001)
     m, q = fm.propagate(t)
@@ -101,8 +101,8 @@ def test_long_time_series_is_chunked_consistently():
     assert np.array_equal(q[::997], q2)
 
 
-def test_initial_state_is_reproduced_in_every_regime():
-    m, q = FreeMotion(MOMENTS, M0, Q0).propagate(0.0)
+def test_initial_state_is_reproduced_in_every_regime(motion_backend):
+    m, q = FreeMotion(MOMENTS, M0, Q0, backend=motion_backend).propagate(0.0)
     assert np.allclose(m, M0, rtol=0, atol=4e-16 * np.abs(M0).max())
     assert _same_rotation(q, Q0, 1e-14)
 
@@ -124,8 +124,8 @@ def test_convenience_functions_agree_with_the_class():
     assert np.array_equal(periods(MOMENTS, M0).period, fm.periods.period)
 
 
-def test_regime_attribute():
-    fm = FreeMotion(MOMENTS, M0)
+def test_regime_attribute(motion_backend):
+    fm = FreeMotion(MOMENTS, M0, backend=motion_backend)
     assert fm.regime[6] == Regime.AXISYMMETRIC
     assert fm.regime[7] == Regime.SPHERE
     assert fm.regime[8] == Regime.SEPARATRIX

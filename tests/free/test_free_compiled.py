@@ -1,15 +1,17 @@
-"""The compiled paths of FreeMotion against the numpy paths they replace, in every regime.
+"""The compiled backend of FreeMotion against the numpy backend it replaces, in every regime.
 
-With numba installed :class:`andoyer.free.FreeMotion` builds the triaxial constants in a
-compiled per-body loop (:mod:`andoyer.free.compiled_setup`) instead of the vectorised
-double-double arithmetic of :func:`andoyer.free.triaxial.triaxial`.  The accuracy tests
-(``test_free_accuracy.py``) check whichever path is active against the 57-digit reference;
-here both paths are run on the same states and compared directly (without numba the
-"compiled" functions run as plain Python and are compared all the same).
+With the compiled backend (the default with numba) :class:`andoyer.free.FreeMotion` builds
+the triaxial constants in a compiled per-body loop (:mod:`andoyer.free.compiled_setup`)
+instead of the vectorised double-double arithmetic of :func:`andoyer.free.triaxial.triaxial`.
+The accuracy tests (``test_free_accuracy.py``) check every backend against the 57-digit
+reference; here both are run on the same states and compared directly: the set-up tables
+(without numba the "compiled" functions run as plain Python and are compared all the same)
+and ``FreeMotion(..., backend=...)`` (where the compiled backend is available).
 """
 
 import numpy as np
 import pytest
+from free_backends import MOTION
 from free_cases import cases, with_k2
 from scipy.spatial.transform import Rotation
 
@@ -93,16 +95,21 @@ def test_compiled_constants_flag_a_steady_spin():
     assert table.shape == (1, 58)
 
 
-@pytest.mark.parametrize("case", CASES, ids=[c[0] for c in CASES])
-def test_compiled_freemotion_equals_numpy_freemotion(case, monkeypatch):
+# the backends other than numpy, each against it: the compiled one, where numba is available
+# (without it this test has no parameter, and pytest reports it skipped once)
+@pytest.mark.parametrize(
+    ("case", "motion_backend"),
+    [pytest.param(c, b, id=f"{c[0]}-{b}") for b in MOTION if b != "numpy" for c in CASES],
+    indirect=["motion_backend"],
+)
+def test_compiled_freemotion_equals_numpy_freemotion(case, motion_backend):
     _name, moments, m0, q0, t_unit = case
     t = np.array([0.0, 0.37, 9.71, 100.0]) * t_unit
-    m_c, q_c = FreeMotion(moments, m0, q0).propagate(t)
-    lazy = FreeMotion(moments, m0)  # the compiled set-up skips the precession rate here
+    m_c, q_c = FreeMotion(moments, m0, q0, backend=motion_backend).propagate(t)
+    lazy = FreeMotion(moments, m0, backend=motion_backend)  # the compiled set-up skips the precession rate
     m_l, p_l = lazy.momentum(t), lazy.periods
-    monkeypatch.setattr(motion, "NUMBA", False)
-    m_n, q_n = FreeMotion(moments, m0, q0).propagate(t)
-    p_n = FreeMotion(moments, m0).periods
+    m_n, q_n = FreeMotion(moments, m0, q0, backend="numpy").propagate(t)
+    p_n = FreeMotion(moments, m0, backend="numpy").periods
     for got, want in zip(p_l, p_n, strict=True):
         np.testing.assert_allclose(got, want, rtol=1e-14, atol=0)
     assert np.max(np.abs(m_l - m_c)) <= 4 * EPS * np.linalg.norm(m0)
@@ -154,10 +161,9 @@ def test_numpy_setup_in_blocks_equals_setup_at_once(monkeypatch):
         m0[i] = 0.0
         m0[i, j], m0[i, (j + 1) % 3] = 0.5, 1e-170
     t = np.array([[0.0, 0.37, -9.71, 100.0]])
-    monkeypatch.setattr(motion, "NUMBA", False)
-    m_one, q_one = FreeMotion(moments[:, None], m0[:, None], q0[:, None]).propagate(t)
+    m_one, q_one = FreeMotion(moments[:, None], m0[:, None], q0[:, None], backend="numpy").propagate(t)
     monkeypatch.setattr(motion, "_SETUP_BLOCK", 7)
-    fm = FreeMotion(moments[:, None], m0[:, None], q0[:, None])
+    fm = FreeMotion(moments[:, None], m0[:, None], q0[:, None], backend="numpy")
     m_blk, q_blk = fm.propagate(t)
     assert np.array_equal(m_one, m_blk)
     assert np.array_equal(q_one, q_blk)

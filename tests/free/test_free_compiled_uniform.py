@@ -8,7 +8,6 @@ import pytest
 from scipy.spatial.transform import Rotation
 
 from andoyer.free import compiled_uniform as cuni
-from andoyer.free import motion
 from andoyer.free import uniform as uni
 from andoyer.free.motion import FreeMotion
 from andoyer.free.regime import Regime
@@ -119,12 +118,10 @@ def test_free_compiled_uniform_polhode_limit_mpmath(lam, rng):
 def test_free_compiled_uniform_free_motion_equals_numpy_path(moments, m0, rng):
     q0 = Rotation.random(2, rng=rng).as_quat()
     t = np.array([[-3e3], [0.0], [0.5], [1e4]])
-    fast = FreeMotion(moments, m0, q0)
+    fast = FreeMotion(moments, m0, q0)  # the default backend: compiled wherever numba is
     m_fast, q_fast = fast.propagate(t)
-    with pytest.MonkeyPatch.context() as patch:
-        patch.setattr(motion, "NUMBA", False)
-        slow = FreeMotion(moments, m0, q0)
-        m_slow, q_slow = slow.propagate(t)
+    slow = FreeMotion(moments, m0, q0, backend="numpy")
+    m_slow, q_slow = slow.propagate(t)
     for a, b in zip(fast.periods, slow.periods, strict=True):
         assert np.array_equal(a, b)
     G = np.linalg.norm(np.asarray(m0), axis=-1)

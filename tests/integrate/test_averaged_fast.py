@@ -4,7 +4,7 @@
 precession and steady spins included) and turns it with one vectorised quaternion product.
 The general path, written out here: the same mean momentum ``M̄``
 (:func:`andoyer.integrate.secular.propagate_momentum`), the free motion of the numpy kernels
-(:class:`andoyer.FreeRotation` with numba switched off in :mod:`andoyer.free.motion`) and
+(:class:`andoyer.FreeRotation` with ``backend="numpy"``) and
 scipy's ``Rotation`` for ``Rz(h̄) Rx(Ī − I₀) Rz(−h₀)`` at each time.
 """
 
@@ -15,7 +15,6 @@ import pytest
 from scipy.spatial.transform import Rotation
 
 from andoyer import FreeRotation, RigidBody, State, bodies
-from andoyer.free import motion
 from andoyer.integrate import averaged
 from andoyer.integrate.averaged import integrate_secular, secular_parts
 from andoyer.integrate.secular import propagate_momentum
@@ -51,9 +50,7 @@ def general_path(model, state, t):
     """Mean states at the times ``t`` (1-D, ≥ 0) by the general evaluation, shape (T, S)."""
     M0 = state.m_reference
     M = propagate_momentum(secular_parts(model)[0], M0, state.m_body[..., 2], t)
-    with pytest.MonkeyPatch.context() as patch:
-        patch.setattr(motion, "NUMBA", False)
-        free = FreeRotation(model.body).propagate(state, t[:, None])
+    free = FreeRotation(model.body, backend="numpy").propagate(state, t[:, None])
 
     def node_inclination(v):
         return np.arctan2(v[..., 0], -v[..., 1]), np.arctan2(np.hypot(v[..., 0], v[..., 1]), v[..., 2])

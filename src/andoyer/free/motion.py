@@ -11,11 +11,13 @@ Each state is routed to one kernel:
 * :mod:`andoyer.free.uniform` — axisymmetric bodies, spheres, steady spins about a
   principal axis and bodies at rest.
 
-With numba installed (:data:`andoyer._jit.NUMBA`) states are classified, and the
-triaxial ones prepared and evaluated, in compiled loops (:mod:`~andoyer.free.compiled_regime`,
-:mod:`~andoyer.free.compiled_setup`, :mod:`~andoyer.free.compiled_eval`: the same formulas
-and accuracy, ~1.5 µs a body to set up and evaluate once, against ~10 µs), and so are the
-uniform motions (:mod:`~andoyer.free.compiled_uniform`).
+The backend (:mod:`andoyer.free.backends`, the keyword ``backend``) decides how: with
+``"compiled"``, the default when numba is installed (:data:`andoyer._jit.NUMBA`), states are
+classified, and the triaxial ones prepared and evaluated, in compiled loops
+(:mod:`~andoyer.free.compiled_regime`, :mod:`~andoyer.free.compiled_setup`,
+:mod:`~andoyer.free.compiled_eval`: the same formulas and accuracy, ~1.5 µs a body to set up
+and evaluate once, against ~10 µs), and so are the uniform motions
+(:mod:`~andoyer.free.compiled_uniform`); with ``"numpy"``, by the vectorised kernels above.
 
 With many epochs per state (:attr:`FreeMotion.periodic_epochs`), the triaxial states are
 evaluated through a piecewise-polynomial representation of one period built once per state
@@ -43,6 +45,7 @@ from andoyer.free import separatrix as _sep
 from andoyer.free import series
 from andoyer.free import triaxial as _tri
 from andoyer.free import uniform as _uni
+from andoyer.free.backends import resolve
 from andoyer.free.blocks import Group, evaluate_blocks
 from andoyer.free.compiled_regime import classify_and_scale
 from andoyer.free.compiled_setup import as_triaxial, triaxial_table
@@ -94,9 +97,17 @@ class FreeMotion:
     q0 : array_like, shape (..., 4), optional
         Initial attitude quaternions (scalar last, body → reference); normalised here.
         Required for :meth:`attitude`.
+    backend : {"compiled", "numpy"}, optional
+        The implementation that classifies the states and prepares and evaluates the
+        triaxial ones (:mod:`andoyer.free.backends`): compiled loops or vectorised numpy, the
+        same formulas and accuracy.  Default: the fastest available, ``"compiled"`` when
+        numba is installed (:func:`andoyer.free.backends.default`).  ``ValueError`` for another
+        name, or ``"compiled"`` without numba.
 
     Attributes
     ----------
+    backend : str
+        The backend used.
     shape : tuple
         Broadcast shape of the states.
     regime : ndarray of int8
@@ -108,8 +119,8 @@ class FreeMotion:
         piecewise-polynomial representation of one period, built once
         (:mod:`andoyer.free.periodic`: same accuracy, several times faster per epoch);
         below it, directly.  A class default (16384 with numba, ``inf`` without, where the
-        vectorised direct path is faster), settable per instance (``0``: always, ``inf``:
-        never).
+        vectorised direct path is faster; ``inf`` too for the numpy backend with numba),
+        settable per instance (``0``: always, ``inf``: never).
 
     Examples
     --------
@@ -119,6 +130,9 @@ class FreeMotion:
     [0.3, 0.2, 1.0]
     >>> fm.attitude([0.0, T]).shape
     (2, 4)
+    >>> vectorised = FreeMotion([1.0, 2.0, 3.0], [0.3, 0.2, 1.0], [0.0, 0.0, 0.0, 1.0], backend="numpy")
+    >>> vectorised.backend, bool(abs(vectorised.attitude(T) - fm.attitude(T)).max() < 1e-14)
+    ('numpy', True)
     """
 
     # measured break-even (bench_free.py --epochs and 50 bodies at 2^11 … 2^15 epochs): the
@@ -126,7 +140,11 @@ class FreeMotion:
     # numba the vectorised direct kernels beat the per-epoch gathers of the pieces
     periodic_epochs = 16384.0 if NUMBA else np.inf
 
-    def __init__(self, moments, m0, q0=None):
+    def __init__(self, moments, m0, q0=None, *, backend=None):
+        self.backend = resolve(backend)
+        compiled = self.backend == "compiled"
+        if not compiled and NUMBA:  # the numpy backend's own break-even (the class default is numba's)
+            self.periodic_epochs = np.inf
         moments, m0 = check_inputs(moments, m0)
         shape = moments.shape[:-1]
         if q0 is not None:
@@ -145,7 +163,7 @@ class FreeMotion:
         self._spin = (moments, m0)  # their spin rate bounds every phase rate (andoyer._limits)
         self._spin_bound = None
         # solve the scaled problem (powers of two, exact): internal time 2^(b−a) t
-        if NUMBA:
+        if compiled:
             regime, moments, m0, a, b = classify_and_scale(moments, m0)
         else:
             moments, m0, a, b = normalise(moments, m0)
@@ -165,8 +183,9 @@ class FreeMotion:
         tri = triax & ~sep & ~spin
         if tri.any():
             idx = np.nonzero(tri)[0]
+            qi = None if q0 is None else q0[idx]
             idx, flat, tri_groups, const, self._pending = _triaxial_groups(
-                moments[idx], m0[idx], regime[idx] == Regime.LAM, None if q0 is None else q0[idx], idx
+                moments[idx], m0[idx], regime[idx] == Regime.LAM, qi, idx, compiled
             )
             spin[flat] = True  # a wobble whose square underflows (|m⊥| < 1e-154 |m|)
             tri[flat] = False  # is a steady spin
@@ -185,7 +204,7 @@ class FreeMotion:
         if uni.any():
             idx = np.nonzero(uni)[0]
             qi = None if q0 is None else q0[idx]
-            if NUMBA:  # compiled, the set-up and evaluation of one body take µs instead of ~0.5 ms
+            if compiled:  # the set-up and evaluation of one body take µs instead of ~0.5 ms
                 const, kernel = _cuni.uniform_table(moments[idx], m0[idx], regime[idx], qi), _cuni.evaluate
             else:
                 axis, I_s, I_t = _uni.uniform_axes(moments[idx], m0[idx], regime[idx])
@@ -195,7 +214,7 @@ class FreeMotion:
             lim = spin[idx] & (regime[idx] != Regime.SEPARATRIX)
             if lim.any():  # steady spin about the polhode axis: the limit of nearby polhodes
                 j = idx[lim]
-                if NUMBA:
+                if compiled:
                     period[j], rate[j] = _cuni.polhode_limit(moments[j], m0[j], regime[j] == Regime.LAM)
                 else:
                     frame = polhode_frame(moments[j], m0[j], regime[j] == Regime.LAM)
@@ -324,7 +343,11 @@ class FreeMotion:
             groups = []
             for group in self._groups:
                 if group.kernel is _ceval.evaluate or group.kernel is series.evaluate:
-                    groups += [g for g in _periodic.build(group, attitude) if g is not None]
+                    built = [g for g in _periodic.build(group, attitude) if g is not None]
+                    if self.backend == "numpy":  # the vectorised fill, numba or not
+                        built = [g._replace(kernel=_NumpyPieces) if g.kernel is _periodic.evaluate else g
+                                 for g in built]
+                    groups += built
                 else:
                     groups.append(group)
             self._periodic[attitude] = groups
@@ -337,18 +360,29 @@ def _flat(a, shape):
     return a.reshape(-1, k) if a.shape[:-1] == shape else np.broadcast_to(a, (*shape, k)).reshape(-1, k)
 
 
-def _triaxial_groups(moments, m0, lam, q0, idx):
+class _NumpyPieces:
+    """The numpy backend's kernel of periodic groups: :func:`andoyer.free.periodic.fill_numpy`, vectorised.
+
+    :func:`andoyer.free.periodic.evaluate` fills through the compiled per-epoch loop whenever
+    numba is installed; :func:`andoyer.free.blocks.evaluate_blocks` calls only this ``fill``.
+    """
+
+    fill = staticmethod(_periodic.fill_numpy)
+
+
+def _triaxial_groups(moments, m0, lam, q0, idx, compiled):
     """Constants and evaluation groups of triaxial states (SAM, LAM) with flat indices ``idx``.
 
-    With numba, one compiled loop builds the constants and a compiled kernel evaluates
-    them (:mod:`andoyer.free.compiled_setup`, :mod:`andoyer.free.compiled_eval`); without,
-    the vectorised :mod:`andoyer.free.triaxial` and :mod:`andoyer.free.series`.  Returns
+    ``compiled`` (the compiled backend): one compiled loop builds the constants and a
+    compiled kernel evaluates them (:mod:`andoyer.free.compiled_setup`,
+    :mod:`andoyer.free.compiled_eval`); else (numpy) the vectorised
+    :mod:`andoyer.free.triaxial` and :mod:`andoyer.free.series`.  Returns
     the indices kept, those found to be steady spins (a wobble ``P₁`` that underflows),
     the ``(kernel, indices, constants)`` groups, the :class:`Triaxial` constants and, where
     the compiled set-up skipped the precession rate (no attitude), what it needs to
     compute it later: ``(positions, (moments, m0, lam))``.
     """
-    if NUMBA:
+    if compiled:
         table, flat = triaxial_table(moments, m0, lam, q0, rate=False)
         keep = idx[~flat]
         pending = None

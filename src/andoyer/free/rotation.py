@@ -6,6 +6,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer.body import RigidBody
+from andoyer.free.backends import resolve
 from andoyer.free.motion import FreeMotion, FreePeriods
 from andoyer.regime import regime_names
 from andoyer.state import State
@@ -27,6 +28,8 @@ class FreeRotation:
     Parameters
     ----------
     body : RigidBody
+    backend : {"compiled", "numpy"}, optional
+        The implementation (:mod:`andoyer.free.backends`); default the fastest available.
 
     Examples
     --------
@@ -41,17 +44,18 @@ class FreeRotation:
     'SAM'
     """
 
-    def __init__(self, body: RigidBody) -> None:
+    def __init__(self, body: RigidBody, backend: str | None = None) -> None:
         if not isinstance(body, RigidBody):
             msg = f"expected an andoyer.RigidBody, got {type(body).__name__}"
             raise ValueError(msg)
         self.body = body
+        self.backend = resolve(backend)
 
     def _motion(self, state: State) -> FreeMotion:
         if not isinstance(state, State):
             msg = f"expected an andoyer State, got {type(state).__name__}"
             raise ValueError(msg)
-        return FreeMotion(self.body.moments, state.m_body, state.quaternion)
+        return FreeMotion(self.body.moments, state.m_body, state.quaternion, backend=self.backend)
 
     def propagate(self, state: State, t: ArrayLike) -> State:
         """The states reached after times ``t`` (shape (T...)), broadcast with ``state`` (S...).
@@ -82,7 +86,7 @@ class FreeRotation:
 
     def momentum(self, state: State, t: ArrayLike) -> NDArray[np.float64]:
         """Body angular momentum only (cheaper than :meth:`propagate`), shape broadcast(S..., T...) + (3,)."""
-        return FreeMotion(self.body.moments, state.m_body).momentum(t)
+        return FreeMotion(self.body.moments, state.m_body, backend=self.backend).momentum(t)
 
     def regime(self, state: State) -> NDArray[np.str_]:
         """Regime names, shape (S...): SAM, LAM, SEPARATRIX, AXISYMMETRIC, SPHERE or REST."""
