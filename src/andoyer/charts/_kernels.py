@@ -19,6 +19,8 @@ from __future__ import annotations
 
 import math
 
+from andoyer._quaternion import product
+
 __all__ = [
     "HELPERS",
     "LOOPS",
@@ -163,12 +165,7 @@ def andoyer_to_hub_one(
     cb, sb = math.cos(0.5 * b), math.sin(0.5 * b)
     cc, sc = math.cos(0.5 * l), math.sin(0.5 * l)
     rx, ry, rz, rw = sb * cc, -sb * sc, cb * sc, cb * cc
-    qx, qy, qz, qw = unit_quaternion(
-        pw * rx + px * rw + py * rz - pz * ry,
-        pw * ry - px * rz + py * rw + pz * rx,
-        pw * rz + px * ry - py * rx + pz * rw,
-        pw * rw - px * rx - py * ry - pz * rz,
-    )
+    qx, qy, qz, qw = unit_quaternion(*product(px, py, pz, pw, rx, ry, rz, rw))
     return qx, qy, qz, qw, GsJ * math.sin(l), GsJ * math.cos(l), L
 
 
@@ -263,6 +260,7 @@ def andoyer_to_hub_loop(l, g, h, L, G, H, q, m):  # pragma: no cover - run compi
 #: Every function the loops call, which the compiled module registers with numba.
 LOOPS = (hub_to_euler_loop, euler_to_hub_loop, hub_to_andoyer_loop, andoyer_to_hub_loop)
 HELPERS = (
+    product,
     wrap_2pi,
     atan2_2pi,
     unit_quaternion,
