@@ -139,13 +139,13 @@ def every(condition):
 if _numba is not None:
     from numba.extending import overload
 
-    @overload(select, inline="always")
+    @overload(select)
     def _select_compiled(condition, if_true, if_false):  # noqa: ARG001 - numba's overload signature
         def conditional(condition, if_true, if_false):
             return if_true if condition else if_false
 
         return conditional
 
-    @overload(every, inline="always")
+    @overload(every)
     def _every_compiled(condition):  # noqa: ARG001 - numba's overload signature
         return lambda condition: condition
