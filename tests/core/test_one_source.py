@@ -8,6 +8,7 @@ loops (``while``) and calls ``asin``/``arcsin`` is the AGM amplitude.
 from __future__ import annotations
 
 import ast
+import functools
 from pathlib import Path
 
 import pytest
@@ -63,11 +64,10 @@ def _calls(function: ast.AST) -> set[str]:
     return names
 
 
-def _functions():
-    for path, tree in _modules():
-        for node in ast.walk(tree):
-            if isinstance(node, ast.FunctionDef):
-                yield path, node
+@functools.cache
+def _functions() -> tuple[tuple[str, ast.FunctionDef], ...]:
+    found = ((path, node) for path, tree in _modules() for node in ast.walk(tree))
+    return tuple((path, node) for path, node in found if isinstance(node, ast.FunctionDef))
 
 
 def test_one_source_hamilton_product():
