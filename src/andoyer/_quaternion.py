@@ -4,11 +4,11 @@ The hub state keeps its attitude as quaternions so that chart conversions on
 millions of states are a handful of numpy expressions, with no per-state
 Python work and no round trip through rotation matrices.
 
-:func:`product` is the project's one Hamilton product: arithmetic on components only, so
-the same function serves floats, numpy arrays of components (:func:`multiply` on
-``(..., 4)`` arrays), sympy expressions, and numba kernels, which compile it inline after
-:func:`andoyer._jit.jitable` has registered it (the compiled modules do so; this module
-does not import numba).
+:func:`product` is the project's one Hamilton product and :func:`apply` its one rotation of
+a vector: arithmetic on components only, so the same function serves floats, numpy arrays
+of components (:func:`multiply` and :func:`rotate` on ``(..., 4)`` arrays), sympy and heyoka
+expressions, and numba kernels, which compile it inline after :func:`andoyer._jit.jitable`
+has registered it (the compiled modules do so; this module does not import numba).
 """
 
 from __future__ import annotations
@@ -100,12 +100,49 @@ def conjugate(q: Array) -> Array:
     return q * np.array([-1.0, -1.0, -1.0, 1.0])
 
 
+def apply(qx, qy, qz, qw, vx, vy, vz):
+    """The rotation of the unit quaternion ``q`` applied to the vector ``v``, by components.
+
+    ``R(q) v = v + w t + u × t`` with ``t = 2 u × v``, ``u = (q_x, q_y, q_z)``, ``w = q_w``
+    (``q ⊗ (v, 0) ⊗ q*`` expanded): the project's one formula, on floats, arrays, heyoka
+    expressions and in numba kernels (registered with :func:`andoyer._jit.jitable`).
+    ``R(q)ᵀ v`` is ``apply(−q_x, −q_y, −q_z, q_w, …)``.
+
+    Parameters
+    ----------
+    qx, qy, qz, qw : float, ndarray or expression
+        Unit quaternion (scalar last).
+    vx, vy, vz : float, ndarray or expression
+        The vector, broadcast with ``q``.
+
+    Returns
+    -------
+    tuple of 3
+        ``R(q) v``.
+
+    Examples
+    --------
+    A quarter turn about ``z`` takes ``x`` to ``y``:
+
+    >>> h = 0.5 ** 0.5
+    >>> [round(c, 12) + 0.0 for c in apply(0.0, 0.0, h, h, 1.0, 0.0, 0.0)]
+    [0.0, 1.0, 0.0]
+    """
+    tx = 2.0 * (qy * vz - qz * vy)
+    ty = 2.0 * (qz * vx - qx * vz)
+    tz = 2.0 * (qx * vy - qy * vx)
+    return (
+        vx + qw * tx + (qy * tz - qz * ty),
+        vy + qw * ty + (qz * tx - qx * tz),
+        vz + qw * tz + (qx * ty - qy * tx),
+    )
+
+
 def rotate(q: Array, v: Array) -> Array:
-    """Apply the rotation of unit quaternions ``q`` (..., 4) to vectors ``v`` (..., 3)."""
-    u = q[..., :3]
-    w = q[..., 3:]
-    t = 2.0 * cross(u, v)
-    return v + w * t + cross(u, t)
+    """Apply the rotation of unit quaternions ``q`` (..., 4) to vectors ``v`` (..., 3) (:func:`apply`)."""
+    q = np.asarray(q, dtype=np.float64)
+    v = np.asarray(v, dtype=np.float64)
+    return np.stack(apply(*_components(q), v[..., 0], v[..., 1], v[..., 2]), axis=-1)
 
 
 def from_zxz(a: Array, b: Array, c: Array) -> Array:

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import math
 
-from andoyer._quaternion import product
+from andoyer._quaternion import apply, product
 
 __all__ = [
     "HELPERS",
@@ -109,11 +109,7 @@ def hub_to_euler_one(
     s_psi, c_psi = z * x - w * y, w * x + z * y
     psi = atan2_2pi(s_psi, c_psi)
     r = rho_xy * rho_zw
-    # Third reference component of m (quaternion.rotate): m + w t + u × t with t = 2 u × m.
-    t0 = 2.0 * (y * m3 - z * m2)
-    t1 = 2.0 * (z * m1 - x * m3)
-    t2 = 2.0 * (x * m2 - y * m1)
-    Phi = (m3 + w * t2) + (x * t1 - y * t0)
+    Phi = apply(x, y, z, w, m1, m2, m3)[2]  # third reference component of m
     return phi, theta, psi, Phi, (m1 * c_psi - m2 * s_psi) / r, m3, False
 
 
@@ -261,6 +257,7 @@ def andoyer_to_hub_loop(l, g, h, L, G, H, q, m):  # pragma: no cover - run compi
 LOOPS = (hub_to_euler_loop, euler_to_hub_loop, hub_to_andoyer_loop, andoyer_to_hub_loop)
 HELPERS = (
     product,
+    apply,
     wrap_2pi,
     atan2_2pi,
     unit_quaternion,
