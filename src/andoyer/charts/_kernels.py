@@ -19,6 +19,8 @@ from __future__ import annotations
 
 import math
 
+from andoyer._quaternion import apply, product
+
 __all__ = [
     "HELPERS",
     "LOOPS",
@@ -107,11 +109,7 @@ def hub_to_euler_one(
     s_psi, c_psi = z * x - w * y, w * x + z * y
     psi = atan2_2pi(s_psi, c_psi)
     r = rho_xy * rho_zw
-    # Third reference component of m (quaternion.rotate): m + w t + u × t with t = 2 u × m.
-    t0 = 2.0 * (y * m3 - z * m2)
-    t1 = 2.0 * (z * m1 - x * m3)
-    t2 = 2.0 * (x * m2 - y * m1)
-    Phi = (m3 + w * t2) + (x * t1 - y * t0)
+    Phi = apply(x, y, z, w, m1, m2, m3)[2]  # third reference component of m
     return phi, theta, psi, Phi, (m1 * c_psi - m2 * s_psi) / r, m3, False
 
 
@@ -163,12 +161,7 @@ def andoyer_to_hub_one(
     cb, sb = math.cos(0.5 * b), math.sin(0.5 * b)
     cc, sc = math.cos(0.5 * l), math.sin(0.5 * l)
     rx, ry, rz, rw = sb * cc, -sb * sc, cb * sc, cb * cc
-    qx, qy, qz, qw = unit_quaternion(
-        pw * rx + px * rw + py * rz - pz * ry,
-        pw * ry - px * rz + py * rw + pz * rx,
-        pw * rz + px * ry - py * rx + pz * rw,
-        pw * rw - px * rx - py * ry - pz * rz,
-    )
+    qx, qy, qz, qw = unit_quaternion(*product(px, py, pz, pw, rx, ry, rz, rw))
     return qx, qy, qz, qw, GsJ * math.sin(l), GsJ * math.cos(l), L
 
 
@@ -263,6 +256,8 @@ def andoyer_to_hub_loop(l, g, h, L, G, H, q, m):  # pragma: no cover - run compi
 #: Every function the loops call, which the compiled module registers with numba.
 LOOPS = (hub_to_euler_loop, euler_to_hub_loop, hub_to_andoyer_loop, andoyer_to_hub_loop)
 HELPERS = (
+    product,
+    apply,
     wrap_2pi,
     atan2_2pi,
     unit_quaternion,

@@ -16,11 +16,15 @@ import math
 
 import numpy as np
 
-from andoyer._jit import jit
+from andoyer._jit import jit, jitable
+from andoyer._quaternion import product
 from andoyer.free.phase import _COS, _SIN
 from andoyer.special.compensated import two_prod
 
 __all__ = ["evaluate", "fill"]
+
+# the one Hamilton product, compiled inline into the kernels below
+jitable(product)
 
 _NEGLIGIBLE = 1e-18
 
@@ -174,10 +178,7 @@ def _state(c, r, t, out_m, out_q, attitude):
     ay = c[r, 40] * cz + c[r, 44] * sz
     az = c[r, 41] * cz + c[r, 45] * sz
     aw = c[r, 42] * cz + c[r, 46] * sz
-    out_q[0] = aw * bx + ax * bw + ay * bz - az * by
-    out_q[1] = aw * by - ax * bz + ay * bw + az * bx
-    out_q[2] = aw * bz + ax * by - ay * bx + az * bw
-    out_q[3] = aw * bw - ax * bx - ay * by - az * bz
+    out_q[0], out_q[1], out_q[2], out_q[3] = product(ax, ay, az, aw, bx, by, bz, bw)
 
 
 @jit

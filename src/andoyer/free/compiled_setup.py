@@ -21,7 +21,8 @@ import math
 
 import numpy as np
 
-from andoyer._jit import jit
+from andoyer._jit import jit, jitable
+from andoyer._quaternion import product
 from andoyer.free.compiled_eval import _count
 from andoyer.free.kernels.elliptic import carlson_rf
 from andoyer.free.phase import Frequency
@@ -30,6 +31,9 @@ from andoyer.special.agm import ellipk_dd, ellippi_k_dd
 from andoyer.special.compensated import dd_add, dd_div, dd_mul, dd_sqrt, split, two_prod, two_sum
 
 __all__ = ["as_triaxial", "triaxial_table"]
+
+# the one Hamilton product, compiled inline into the kernels below
+jitable(product)
 
 _PI_HI, _PI_LO = 3.141592653589793, 1.2246467991473532e-16
 _ROWS = 58  # rows of the output table, laid out in triaxial_table
@@ -48,18 +52,6 @@ def _nome(p, pc):
     eps = p / (2.0 * (1.0 + kc) * (1.0 + math.sqrt(kc)) ** 2)
     e4 = eps**4
     return eps * (1.0 + e4 * (2.0 + e4 * (15.0 + e4 * (150.0 + e4 * (1707.0 + e4 * 20910.0)))))
-
-
-@jit
-def _qmul(a, b):
-    ax, ay, az, aw = a
-    bx, by, bz, bw = b
-    return (
-        aw * bx + ax * bw + ay * bz - az * by,
-        aw * by - ax * bz + ay * bw + az * bx,
-        aw * bz + ax * by - ay * bx + az * bw,
-        aw * bw - ax * bx - ay * by - az * bz,
-    )
 
 
 @jit
@@ -264,12 +256,12 @@ def _body(Ib, mb, lam, q0, out, i, full):
     out[i, 38] = _psi_offset(circ, frac0, q, wa, wb, kk, slope)
     # U = Q₀ ⊗ P, V = Q₀ ⊗ e_z ⊗ P (andoyer.free.regime.attitude_anchor)
     pq = _perm_quat(perm, sign)
-    q_rw = _qmul((q0[i, 0], q0[i, 1], q0[i, 2], q0[i, 3]), (-pq[0], -pq[1], -pq[2], pq[3]))
+    q_rw = product(q0[i, 0], q0[i, 1], q0[i, 2], q0[i, 3], -pq[0], -pq[1], -pq[2], pq[3])
     w = Gh + mw[2]
     nrm = math.sqrt(2.0 * Gh * w)
-    q_0 = _qmul(q_rw, (-mw[1] / nrm, mw[0] / nrm, 0.0, w / nrm))
-    U = _qmul(q_0, pq)
-    V = _qmul(_qmul(q_0, (0.0, 0.0, 1.0, 0.0)), pq)
+    q_0 = product(*q_rw, -mw[1] / nrm, mw[0] / nrm, 0.0, w / nrm)
+    U = product(*q_0, *pq)
+    V = product(*product(*q_0, 0.0, 0.0, 1.0, 0.0), *pq)
     for k in range(4):
         out[i, 39 + k] = U[k]
         out[i, 43 + k] = V[k]

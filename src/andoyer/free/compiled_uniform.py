@@ -23,11 +23,15 @@ from typing import NamedTuple
 
 import numpy as np
 
-from andoyer._jit import jit
+from andoyer._jit import jit, jitable
+from andoyer._quaternion import product
 from andoyer.regime import Regime
 from andoyer.special.compensated import dd_add, dd_div, dd_mul, dd_sqrt, two_prod, two_sum
 
 __all__ = ["COLUMNS", "UniformTable", "evaluate", "fill", "polhode_limit", "uniform_table"]
+
+# the one Hamilton product, compiled inline into the kernels below
+jitable(product)
 
 _TWO_PI_HI, _TWO_PI_LO = 2.0 * 3.141592653589793, 2.0 * 1.2246467991473532e-16
 
@@ -50,16 +54,6 @@ class UniformTable(NamedTuple):
     table: np.ndarray
     period: np.ndarray
     precession_rate: np.ndarray
-
-
-@jit
-def _qmul(ax, ay, az, aw, bx, by, bz, bw):
-    return (
-        aw * bx + ax * bw + ay * bz - az * by,
-        aw * by - ax * bz + ay * bw + az * bx,
-        aw * bz + ax * by - ay * bx + az * bw,
-        aw * bw - ax * bx - ay * by - az * bz,
-    )
 
 
 @jit
@@ -130,9 +124,9 @@ def _setup(moments, m0, axisymmetric, q0, out, period, rate):
         else:
             r0, r1, r2 = 0.0, 0.0, 0.0
         s0, s1, s2 = (1.0 if k == 0 else 0.0), (1.0 if k == 1 else 0.0), (1.0 if k == 2 else 0.0)
-        q2 = _qmul(x, y, z, w, s0, s1, s2, 0.0)
-        q3 = _qmul(r0, r1, r2, 0.0, x, y, z, w)
-        q4 = _qmul(r0, r1, r2, 0.0, q2[0], q2[1], q2[2], q2[3])
+        q2 = product(x, y, z, w, s0, s1, s2, 0.0)
+        q3 = product(r0, r1, r2, 0.0, x, y, z, w)
+        q4 = product(r0, r1, r2, 0.0, q2[0], q2[1], q2[2], q2[3])
         row[13], row[14], row[15], row[16] = x, y, z, w
         for j in range(4):
             row[17 + j] = q2[j]

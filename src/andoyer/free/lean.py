@@ -38,26 +38,20 @@ import math
 
 import numpy as np
 
-from andoyer._jit import NUMBA, jit
+from andoyer._jit import NUMBA, jit, jitable
+from andoyer._quaternion import product
 from andoyer.free.kernels.elliptic import am, carlson_rf, carlson_rj, third_minus_a_unwrapped
 
 __all__ = ["NUMBA", "free_step", "jit"]
+
+# the one Hamilton product, compiled inline into the kernels below
+jitable(product)
 
 
 _EPS = 2.220446049250313e-16
 _SEPARATRIX = 1e-12
 # interpreted, the kernel costs ~0.2 ms a state: FreeMotion's vectorised set-up wins beyond
 _INTERPRETED_MAX = 32
-
-
-@jit
-def _qmul(p0, p1, p2, p3, q0, q1, q2, q3):
-    return (
-        p3 * q0 + p0 * q3 + p1 * q2 - p2 * q1,
-        p3 * q1 - p0 * q2 + p1 * q3 + p2 * q0,
-        p3 * q2 + p0 * q1 - p1 * q0 + p2 * q3,
-        p3 * q3 - p0 * q0 - p1 * q1 - p2 * q2,
-    )
 
 
 @jit
@@ -75,7 +69,7 @@ def _arc(m, e, g):
 def _turn(q, axis, angle):
     """``q ⊗ R_axis(angle)`` in place (``axis`` a unit body vector)."""
     s, c = math.sin(0.5 * angle), math.cos(0.5 * angle)
-    r = _qmul(q[0], q[1], q[2], q[3], s * axis[0], s * axis[1], s * axis[2], c)
+    r = product(q[0], q[1], q[2], q[3], s * axis[0], s * axis[1], s * axis[2], c)
     q[0], q[1], q[2], q[3] = r[0], r[1], r[2], r[3]
 
 
@@ -176,12 +170,12 @@ def _step_one(moments, q, m, h):
     new[iu], new[ib], new[ip] = n1, parity * s3 * n2, s3 * n3
     # q ⊗ S(m₀)* ⊗ R_e(Δψ) ⊗ S(m₁)
     a = _arc(m, e, G)
-    r = _qmul(q[0], q[1], q[2], q[3], -a[0], -a[1], -a[2], a[3])
+    r = product(q[0], q[1], q[2], q[3], -a[0], -a[1], -a[2], a[3])
     q[0], q[1], q[2], q[3] = r[0], r[1], r[2], r[3]
     _turn(q, e, dpsi)
     g1 = math.sqrt(n1 * n1 + n2 * n2 + n3 * n3)
     b = _arc(new, e, g1)
-    r = _qmul(q[0], q[1], q[2], q[3], b[0], b[1], b[2], b[3])
+    r = product(q[0], q[1], q[2], q[3], b[0], b[1], b[2], b[3])
     q[0], q[1], q[2], q[3] = r[0], r[1], r[2], r[3]
     m[0], m[1], m[2] = new[0], new[1], new[2]
     return True

@@ -1,66 +1,19 @@
-"""Hamilton quaternion products on component arrays (scalar last, as scipy).
+"""Quaternions of the free solution on component arrays (scalar last, as scipy).
 
 A rotation ``rot`` (body → reference) is the unit quaternion ``q = (x, y, z, w)`` with
-``v_ref = q ⊗ (v_body, 0) ⊗ q*``; composition ``rot_a · rot_b`` is ``q_a ⊗ q_b``.
-Components are kept as separate arrays (a tuple of four) in the hot loops, so that
-numpy broadcasts per-body constants against per-epoch arrays without stacking.
+``v_ref = q ⊗ (v_body, 0) ⊗ q*``; composition ``rot_a · rot_b`` is ``q_a ⊗ q_b``, the one
+product :func:`andoyer._quaternion.product`. Components are kept as separate arrays (a tuple
+of four) in the hot loops, so that numpy broadcasts per-body constants against per-epoch
+arrays without stacking.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["anchored_attitude", "matrix_quat", "qmul", "qmul_array", "shortest_arc"]
+from andoyer._quaternion import product
 
-
-def qmul(a, b):
-    """Hamilton product of quaternions given as 4-tuples of arrays ``(x, y, z, w)``.
-
-    Parameters
-    ----------
-    a, b : tuple of array_like
-        Components, broadcast together.
-
-    Returns
-    -------
-    tuple of ndarray
-        ``a ⊗ b``.
-
-    Examples
-    --------
-    >>> [float(c) for c in qmul((1.0, 0.0, 0.0, 0.0), (0.0, 1.0, 0.0, 0.0))]
-    [0.0, 0.0, 1.0, 0.0]
-    """
-    ax, ay, az, aw = a
-    bx, by, bz, bw = b
-    return (
-        aw * bx + ax * bw + ay * bz - az * by,
-        aw * by - ax * bz + ay * bw + az * bx,
-        aw * bz + ax * by - ay * bx + az * bw,
-        aw * bw - ax * bx - ay * by - az * bz,
-    )
-
-
-def qmul_array(a, b):
-    """Hamilton product of quaternion arrays of shape ``(..., 4)`` (scalar last).
-
-    Parameters
-    ----------
-    a, b : array_like, shape (..., 4)
-        Quaternions, broadcast together.
-
-    Returns
-    -------
-    ndarray, shape (..., 4)
-
-    Examples
-    --------
-    >>> qmul_array([0.0, 0.0, 0.0, 1.0], [0.5, 0.5, 0.5, 0.5]).tolist()
-    [0.5, 0.5, 0.5, 0.5]
-    """
-    a = np.asarray(a, dtype=np.float64)
-    b = np.asarray(b, dtype=np.float64)
-    return np.stack(qmul(np.moveaxis(a, -1, 0), np.moveaxis(b, -1, 0)), axis=-1)
+__all__ = ["anchored_attitude", "matrix_quat", "shortest_arc"]
 
 
 def shortest_arc(m):
@@ -148,31 +101,7 @@ def anchored_attitude(c, half, arc, m3):
         v += tmp
         vec.append(v)
     w *= inv
-    return _qmul_accumulate(au, (*vec, w), tmp)
-
-
-def _qmul_accumulate(a, b, tmp):
-    """``a ⊗ b`` with one scratch array (same result as :func:`qmul`)."""
-    ax, ay, az, aw = a
-    bx, by, bz, bw = b
-    terms = (
-        ((aw, bx, 1), (ax, bw, 1), (ay, bz, 1), (az, by, -1)),
-        ((aw, by, 1), (ax, bz, -1), (ay, bw, 1), (az, bx, 1)),
-        ((aw, bz, 1), (ax, by, 1), (ay, bx, -1), (az, bw, 1)),
-        ((aw, bw, 1), (ax, bx, -1), (ay, by, -1), (az, bz, -1)),
-    )
-    out = []
-    for row in terms:
-        (u, v, _), *rest = row
-        r = u * v
-        for u, v, sign in rest:
-            np.multiply(u, v, out=tmp)
-            if sign > 0:
-                r += tmp
-            else:
-                r -= tmp
-        out.append(r)
-    return tuple(out)
+    return product(*au, *vec, w)
 
 
 def matrix_quat(cols):

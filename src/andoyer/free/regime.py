@@ -26,7 +26,8 @@ from typing import NamedTuple
 import numpy as np
 
 from andoyer._jit import exponent, jitable, select
-from andoyer.free.quaternion import matrix_quat, qmul, shortest_arc
+from andoyer._quaternion import product
+from andoyer.free.quaternion import matrix_quat, shortest_arc
 from andoyer.regime import Regime, check_inputs, classify, regime_codes
 from andoyer.special.compensated import dd_add, dd_div, dd_mul, dd_sqrt, two_prod, two_sum
 
@@ -289,6 +290,5 @@ def attitude_anchor(frame: PolhodeFrame, cols, q0):
     """
     pq = matrix_quat(cols)
     arc = shortest_arc(frame.mw).T
-    q_0 = qmul(qmul(tuple(q0.T), (-pq[0], -pq[1], -pq[2], pq[3])), (-arc[0], -arc[1], -arc[2], arc[3]))
-    pqt = tuple(pq)
-    return np.stack(qmul(q_0, pqt)), np.stack(qmul(qmul(q_0, (0.0, 0.0, 1.0, 0.0)), pqt))
+    q_0 = product(*product(*q0.T, -pq[0], -pq[1], -pq[2], pq[3]), -arc[0], -arc[1], -arc[2], arc[3])
+    return np.stack(product(*q_0, *pq)), np.stack(product(*product(*q_0, 0.0, 0.0, 1.0, 0.0), *pq))

@@ -21,8 +21,8 @@ from typing import NamedTuple
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from andoyer._quaternion import product
 from andoyer.free.phase import Frequency, cycles, frequency
-from andoyer.free.quaternion import qmul
 from andoyer.regime import Regime
 from andoyer.special.compensated import (
     PI_DD,
@@ -131,9 +131,9 @@ def uniform(m0, axis, I_s, I_t, q0=None):
     sq_ = (*s_hat.T, np.zeros(n))
     mq = (*m_hat.T, np.zeros(n))
     q1 = tuple(q0.T)
-    q2 = qmul(q1, sq_)
+    q2 = product(*q1, *sq_)
     return const._replace(
-        q1=np.stack(q1), q2=np.stack(q2), q3=np.stack(qmul(mq, q1)), q4=np.stack(qmul(mq, q2))
+        q1=np.stack(q1), q2=np.stack(q2), q3=np.stack(product(*mq, *q1)), q4=np.stack(product(*mq, *q2))
     )
 
 

@@ -36,7 +36,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.integrate import solve_ivp
 
 from andoyer import _quaternion as quat
-from andoyer._jit import NUMBA, jit
+from andoyer._jit import NUMBA, jit, jitable
 from andoyer._limits import PhasePrecisionWarning, check_size
 from andoyer._validation import as_finite
 from andoyer.free.motion import FreeMotion
@@ -44,6 +44,9 @@ from andoyer.integrate.output import gather_table, output_times
 from andoyer.integrate.secular import propagate_checked
 from andoyer.perturbations.model import Model
 from andoyer.state import State
+
+# the one Hamilton product, compiled inline into the attitude turn below
+jitable(quat.product)
 
 __all__ = ["integrate_secular", "secular_parts"]
 
@@ -136,11 +139,10 @@ def _turned_compiled(M0, M, q_free, out):
             cb, sb = np.cos(0.5 * b), np.sin(0.5 * b)
             px, py = sb * np.cos(half_diff), sb * np.sin(half_diff)
             pz, pw = cb * np.sin(half_sum), cb * np.cos(half_sum)
-            qx, qy, qz, qw = q_free[k, i, 0], q_free[k, i, 1], q_free[k, i, 2], q_free[k, i, 3]
-            out[k, i, 0] = pw * qx + px * qw + py * qz - pz * qy
-            out[k, i, 1] = pw * qy - px * qz + py * qw + pz * qx
-            out[k, i, 2] = pw * qz + px * qy - py * qx + pz * qw
-            out[k, i, 3] = pw * qw - px * qx - py * qy - pz * qz
+            q = q_free[k, i]
+            out[k, i, 0], out[k, i, 1], out[k, i, 2], out[k, i, 3] = quat.product(
+                px, py, pz, pw, q[0], q[1], q[2], q[3]
+            )
 
 
 def integrate_secular(

@@ -20,6 +20,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.integrate import solve_ivp
 
 from andoyer._limits import check_size, progress, spin_rate
+from andoyer._quaternion import product
 from andoyer._validation import as_finite
 from andoyer.integrate.output import gather_states, output_times
 from andoyer.integrate.reference_heyoka import _propagate_heyoka
@@ -229,15 +230,9 @@ def _rhs(model: Model, n: int) -> Callable[[float, Array], Array]:
                 w1, w2, w3 = w1 + dv[0], w2 + dv[1], w3 + dv[2]
             if dm is not None:
                 d1, d2, d3 = d1 + dm[0], d2 + dm[1], d3 + dm[2]
-        rates = (
-            0.5 * (qw * w1 + qy * w3 - qz * w2),
-            0.5 * (qw * w2 + qz * w1 - qx * w3),
-            0.5 * (qw * w3 + qx * w2 - qy * w1),
-            -0.5 * (qx * w1 + qy * w2 + qz * w3),
-            d1,
-            d2,
-            d3,
-        )
+        # dq/dt = q ⊗ (ω, 0) / 2
+        dq = product(qx, qy, qz, qw, w1, w2, w3, 0.0)
+        rates = (0.5 * dq[0], 0.5 * dq[1], 0.5 * dq[2], 0.5 * dq[3], d1, d2, d3)
         if n == 1:
             return np.array([float(v) for v in rates])
         out = np.empty(7 * n)

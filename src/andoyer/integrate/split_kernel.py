@@ -28,24 +28,21 @@ import math
 
 import numpy as np
 
-from andoyer._jit import jit
-from andoyer.free.lean import _qmul, _step_one
+from andoyer._jit import jit, jitable
+from andoyer._quaternion import apply, product
+from andoyer.free.lean import _step_one
 
 __all__ = ["run_tabulated"]
+
+# the one Hamilton product and rotation, compiled inline into the kernels below
+jitable(product)
+jitable(apply)
 
 
 @jit
 def _body_vector(q, v):
     """``Rᵀ v``: reference vector ``v`` in body components for attitude ``q``."""
-    x, y, z, w = -q[0], -q[1], -q[2], q[3]
-    tx = 2.0 * (y * v[2] - z * v[1])
-    ty = 2.0 * (z * v[0] - x * v[2])
-    tz = 2.0 * (x * v[1] - y * v[0])
-    return (
-        v[0] + w * tx + (y * tz - z * ty),
-        v[1] + w * ty + (z * tx - x * tz),
-        v[2] + w * tz + (x * ty - y * tx),
-    )
+    return apply(-q[0], -q[1], -q[2], q[3], v[0], v[1], v[2])
 
 
 @jit
@@ -82,7 +79,7 @@ def _frame_turn(q, rate, dt):
         return
     half = -0.5 * norm * dt
     s = math.sin(half) / norm
-    r = _qmul(s * rate[0], s * rate[1], s * rate[2], math.cos(half), q[0], q[1], q[2], q[3])
+    r = product(s * rate[0], s * rate[1], s * rate[2], math.cos(half), q[0], q[1], q[2], q[3])
     q[0], q[1], q[2], q[3] = r[0], r[1], r[2], r[3]
 
 

@@ -21,6 +21,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from andoyer._quaternion import product
 from andoyer.liepoisson.algebra import get_algebra
 
 __all__ = ["CanonicalCoordinates", "andoyer_coordinates", "andoyer_symbols", "euler_coordinates"]
@@ -217,14 +218,11 @@ def _qx(c: Any, s: Any) -> list[Any]:
 
 
 def _quat(a: list[Any], b: list[Any]) -> list[Any]:
+    """Scalar-first product ``a ⊗ b`` of sympy quaternions (:func:`andoyer._quaternion.product`)."""
     aw, ax, ay, az = a
     bw, bx, by, bz = b
-    return [
-        aw * bw - ax * bx - ay * by - az * bz,
-        aw * bx + ax * bw + ay * bz - az * by,
-        aw * by - ax * bz + ay * bw + az * bx,
-        aw * bz + ax * by - ay * bx + az * bw,
-    ]
+    x, y, z, w = product(ax, ay, az, aw, bx, by, bz, bw)
+    return [w, x, y, z]
 
 
 def quaternion_gamma(lam: Any) -> Any:

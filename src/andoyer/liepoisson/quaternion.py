@@ -19,6 +19,7 @@ from typing import Any
 
 import numpy as np
 
+from andoyer._quaternion import product
 from andoyer.liepoisson._domain import as_components, unit_vectors
 
 __all__ = ["gamma_from_quaternion", "quaternion_from_scipy", "quaternion_to_scipy"]
@@ -107,6 +108,19 @@ def gamma_from_quaternion(lam: Any) -> np.ndarray:
 def quaternion_product(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """Hamilton product of scalar-first quaternions, shapes (..., 4).
 
+    Pavlov's ``λ = (w, x, y, z)`` reordered to scalar last, multiplied by the project's one
+    product :func:`andoyer._quaternion.product`, and reordered back.
+
+    Parameters
+    ----------
+    a, b : ndarray, shape (..., 4)
+        Scalar-first quaternions, broadcast together.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 4)
+        ``a ⊗ b``, scalar first.
+
     Examples
     --------
     >>> quaternion_product(np.array([0.0, 1, 0, 0]), np.array([0.0, 0, 1, 0]))  # i j = k
@@ -114,15 +128,8 @@ def quaternion_product(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """
     aw, ax, ay, az = np.moveaxis(a, -1, 0)
     bw, bx, by, bz = np.moveaxis(b, -1, 0)
-    return np.stack(
-        [
-            aw * bw - ax * bx - ay * by - az * bz,
-            aw * bx + ax * bw + ay * bz - az * by,
-            aw * by - ax * bz + ay * bw + az * bx,
-            aw * bz + ax * by - ay * bx + az * bw,
-        ],
-        axis=-1,
-    )
+    x, y, z, w = product(ax, ay, az, aw, bx, by, bz, bw)
+    return np.stack([w, x, y, z], axis=-1)
 
 
 def rotation_matrix(lam: np.ndarray) -> np.ndarray:

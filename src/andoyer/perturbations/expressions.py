@@ -17,6 +17,7 @@ from typing import Any
 
 import numpy as np
 
+from andoyer._quaternion import apply
 from andoyer.perturbations.orbits import CircularOrbit, KeplerOrbit, Orbit
 
 __all__ = ["HeyokaContext", "Parameters", "float_position", "kepler_position", "to_body"]
@@ -30,7 +31,7 @@ HubRates = Callable[[float, Quaternion, Vector], tuple[Vector | None, Vector | N
 
 
 def to_body(q: Sequence[Any], v: Sequence[Any]) -> Vector:
-    """``Rᵀ v`` (as ``quat.rotate(quat.conjugate(q), v)``), by components.
+    """``Rᵀ v`` (as ``quat.rotate(quat.conjugate(q), v)``), by components (:func:`andoyer._quaternion.apply`).
 
     Examples
     --------
@@ -40,13 +41,7 @@ def to_body(q: Sequence[Any], v: Sequence[Any]) -> Vector:
     >>> [round(c, 12) + 0.0 for c in to_body(q, (1.0, 0.0, 0.0))]
     [0.0, -1.0, 0.0]
     """
-    ux, uy, uz, w = -q[0], -q[1], -q[2], q[3]
-    tx, ty, tz = 2.0 * (uy * v[2] - uz * v[1]), 2.0 * (uz * v[0] - ux * v[2]), 2.0 * (ux * v[1] - uy * v[0])
-    return (
-        v[0] + w * tx + (uy * tz - uz * ty),
-        v[1] + w * ty + (uz * tx - ux * tz),
-        v[2] + w * tz + (ux * ty - uy * tx),
-    )
+    return apply(-q[0], -q[1], -q[2], q[3], v[0], v[1], v[2])
 
 
 class Parameters:

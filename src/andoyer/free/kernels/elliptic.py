@@ -2,8 +2,10 @@ r"""Scalar elliptic kernels of the free rotation: Carlson's integrals, the ampli
 
 Plain Python on floats, compiled with numba through :func:`andoyer._jit.jit` when it is
 installed, so that the one-step flow (:mod:`andoyer.free.lean`) and the compiled set-up
-(:mod:`andoyer.free.compiled_setup`) call one definition of each formula.  The vectorised
-numpy path uses scipy's ``elliprf``/``elliprj`` and the theta series of
+(:mod:`andoyer.free.compiled_setup`) call one definition of each formula. The amplitude
+``am`` is :func:`andoyer.special.jacobi.amplitude` (the same kernel serves
+:func:`andoyer.special.am` on arrays), registered here for the compiled kernels.
+The vectorised numpy path uses scipy's ``elliprf``/``elliprj`` and the theta series of
 :mod:`andoyer.special.theta` instead, which are accurate over many periods.
 """
 
@@ -11,13 +13,14 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
-from andoyer._jit import jit
+from andoyer._jit import jit, jitable
+from andoyer.special.jacobi import amplitude
 
 __all__ = ["am", "carlson_rf", "carlson_rj", "third_minus_a_unwrapped"]
 
-_EPS = 2.220446049250313e-16
+#: The Jacobi amplitude ``am(u | m)`` given ``mc = 1 − m``: the one kernel
+#: :func:`andoyer.special.jacobi.amplitude`, registered so that compiled kernels call it.
+am = jitable(amplitude)
 
 
 @jit
@@ -114,36 +117,6 @@ def carlson_rj(x, y, z, p):
         + 3.0 * e5 / 26.0
     )
     return f * series / (a * math.sqrt(a)) + 6.0 * total
-
-
-@jit
-def am(u, m, mc):
-    """Jacobi amplitude ``am(u | m)`` for ``0 ≤ m < 1`` given also ``mc = 1 − m`` (AGM, DLMF 22.20).
-
-    ``mc`` is passed separately so that it carries its digits near ``m = 1``. The
-    result is unwrapped (continuous in ``u``).
-
-    Examples
-    --------
-    >>> round(am(0.7, 0.0, 1.0), 15)
-    0.7
-    """
-    a = 1.0
-    b = math.sqrt(mc)
-    c = math.sqrt(m)
-    ratios = np.empty(32)
-    n = 0
-    while abs(c) > _EPS * a and n < 32:
-        an = 0.5 * (a + b)
-        c = 0.5 * (a - b)
-        b = math.sqrt(a * b)
-        a = an
-        ratios[n] = c / a
-        n += 1
-    phi = a * u * 2.0**n
-    for i in range(n - 1, -1, -1):
-        phi = 0.5 * (phi + math.asin(ratios[i] * math.sin(phi)))
-    return phi
 
 
 @jit
