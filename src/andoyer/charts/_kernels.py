@@ -29,7 +29,6 @@ from __future__ import annotations
 from math import atan2, copysign, cos, sin, sqrt
 
 from andoyer._fastmath import atan2_2pi_one as atan2_2pi
-from andoyer._fastmath import wrap_2pi_one as wrap_2pi
 from andoyer._jit import on_arrays, on_floats, select
 
 __all__ = [
@@ -100,12 +99,13 @@ def hub_to_euler_one(
 
     Attitudes with ``sin(θ/2)`` or ``cos(θ/2)`` (the norms ``ρ_xy``, ``ρ_zw`` of the
     quaternion's pairs) at most ``2ε`` are snapped onto ``θ = 0`` or ``π``, where only
-    ``φ ± ψ`` is defined: ``ψ = 0``, ``φ`` carries twice the half angle that is, and
-    ``Φ = ±Ψ``, ``Θ = m1``. Elsewhere ``φ`` and ``ψ``, the sum and difference of the half
-    angles ``atan2(z, w)`` and ``atan2(y, x)``, come from one ``atan2`` each of the products
-    ``(zx ± wy, wx ∓ zy) = ρ_xy ρ_zw (sin, cos)(φ or ψ)`` (as well conditioned: the error
-    is ``2ε`` absolute), and ``cos ψ``, ``sin ψ`` from the same pair divided by
-    ``ρ_xy ρ_zw``, not from ``cos``/``sin`` of the rounded ``ψ``.
+    ``φ ± ψ`` is defined: ``ψ = 0``, ``φ`` carries twice the half angle that is (``φ + ψ``
+    at ``θ = 0``, ``φ - ψ`` at ``θ = π``), and ``Φ = ±Ψ``, ``Θ = m1``. Elsewhere ``φ`` and
+    ``ψ``, the sum and difference of the half angles ``atan2(z, w)`` and ``atan2(y, x)``,
+    come from one ``atan2`` each of the products ``(zx ± wy, wx ∓ zy) = ρ_xy ρ_zw (sin,
+    cos)(φ or ψ)`` (as well conditioned: the error is ``2ε`` absolute), and ``cos ψ``,
+    ``sin ψ`` from the same pair divided by ``ρ_xy ρ_zw``, not from ``cos``/``sin`` of the
+    rounded ``ψ``.
     """
     tol = 2.0 * EPS
     rho_xy = sqrt(x * x + y * y)
@@ -120,13 +120,13 @@ def hub_to_euler_one(
     t2 = 2.0 * (x * m2 - y * m1)
     Phi = (m3 + w * t2) + (x * t1 - y * t0)
     r = select(singular, 1.0, rho_xy * rho_zw)
-    # (Each branch's work inside its operand: on floats only the chosen one runs.)
+    # On the singularity φ is twice the half angle atan2(z, w) (θ = 0) or atan2(y, x) (θ = π):
+    # atan2(2 z w, w² - z²) or atan2(2 x y, x² - y²) (error 2ε absolute, the norm being 1 - 2ε²),
+    # which lets one atan2 serve both cases (compiled, both operands of a select are evaluated).
+    sy = select(singular, select(at_zero, 2.0 * z * w, 2.0 * x * y), z * x + w * y)
+    sx = select(singular, select(at_zero, w * w - z * z, x * x - y * y), w * x - z * y)
     return (
-        select(
-            singular,
-            wrap_2pi(2.0 * atan2(select(at_zero, z, y), select(at_zero, w, x))),
-            atan2_2pi(z * x + w * y, w * x - z * y),
-        ),
+        atan2_2pi(sy, sx),
         select(singular, select(at_zero, 0.0, PI), 2.0 * atan2_2pi(rho_xy, rho_zw)),
         select(singular, 0.0, atan2_2pi(s_psi, c_psi)),
         select(singular, select(at_zero, m3, -m3), Phi),
@@ -246,7 +246,6 @@ def hub_to_andoyer_one(
     hub_to_andoyer_floats,
 ) = on_floats(
     atan2_2pi,
-    wrap_2pi,
     unit_quaternion,
     from_zxz,
     transverse_momentum_one,
@@ -322,7 +321,6 @@ def andoyer_to_hub_loop(l, g, h, L, G, H, q, m):  # pragma: no cover - run compi
 #: Every function the loops call, which the compiled module registers with numba.
 LOOPS = (hub_to_euler_loop, euler_to_hub_loop, hub_to_andoyer_loop, andoyer_to_hub_loop)
 HELPERS = (
-    wrap_2pi,
     atan2_2pi,
     unit_quaternion,
     from_zxz,
