@@ -30,6 +30,8 @@ from math import atan2, copysign, cos, sin, sqrt
 
 from andoyer._fastmath import atan2_2pi_one as atan2_2pi
 from andoyer._jit import on_arrays, on_floats, select
+from andoyer._quaternion import from_xz_one as from_xz
+from andoyer._quaternion import from_zxz_one as from_zxz
 
 __all__ = [
     "HELPERS",
@@ -40,7 +42,6 @@ __all__ = [
     "euler_to_hub_arrays",
     "euler_to_hub_floats",
     "euler_to_hub_one",
-    "from_zxz",
     "hub_to_andoyer_arrays",
     "hub_to_andoyer_floats",
     "hub_to_andoyer_one",
@@ -64,18 +65,6 @@ def unit_quaternion(x: float, y: float, z: float, w: float) -> tuple[float, floa
     """The quaternion divided by its norm ``sqrt(((x² + y²) + z²) + w²)``."""
     n = sqrt(((x * x + y * y) + z * z) + w * w)
     return x / n, y / n, z / n, w / n
-
-
-def from_zxz(a: float, b: float, c: float) -> tuple[float, float, float, float]:
-    """Quaternion ``(x, y, z, w)`` of ``Rz(a) Rx(b) Rz(c)`` (:func:`andoyer._quaternion.from_zxz`).
-
-    ``w = cos(b/2) cos((a+c)/2)``, ``z = cos(b/2) sin((a+c)/2)``,
-    ``x = sin(b/2) cos((a-c)/2)``, ``y = sin(b/2) sin((a-c)/2)``.
-    """
-    half_sum = 0.5 * (a + c)
-    half_diff = 0.5 * (a - c)
-    cb, sb = cos(0.5 * b), sin(0.5 * b)
-    return sb * cos(half_diff), sb * sin(half_diff), cb * sin(half_sum), cb * cos(half_sum)
 
 
 def transverse_momentum_one(big: float, small: float, theta: float) -> tuple[float, float]:
@@ -172,10 +161,7 @@ def andoyer_to_hub_one(
     GsI = sqrt((G - H) * (G + H))
     GsJ = sqrt((G - L) * (G + L))
     px, py, pz, pw = from_zxz(h, atan2(GsI, H), g)
-    b = atan2(GsJ, L)
-    cb, sb = cos(0.5 * b), sin(0.5 * b)
-    cc, sc = cos(0.5 * l), sin(0.5 * l)
-    rx, ry, rz, rw = sb * cc, -sb * sc, cb * sc, cb * cc  # Rx(J) Rz(l)
+    rx, ry, rz, rw = from_xz(atan2(GsJ, L), l)
     # The Hamilton product p ⊗ r (andoyer._quaternion.multiply), by components.
     qx, qy, qz, qw = unit_quaternion(
         pw * rx + px * rw + py * rz - pz * ry,
@@ -248,6 +234,7 @@ def hub_to_andoyer_one(
     atan2_2pi,
     unit_quaternion,
     from_zxz,
+    from_xz,
     transverse_momentum_one,
     hub_to_euler_one,
     euler_to_hub_one,
@@ -264,7 +251,6 @@ def hub_to_andoyer_one(
     hub_to_andoyer_arrays,
 ) = on_arrays(
     unit_quaternion,
-    from_zxz,
     transverse_momentum_one,
     hub_to_euler_one,
     euler_to_hub_one,
@@ -324,6 +310,7 @@ HELPERS = (
     atan2_2pi,
     unit_quaternion,
     from_zxz,
+    from_xz,
     transverse_momentum_one,
     hub_to_euler_one,
     euler_to_hub_one,
