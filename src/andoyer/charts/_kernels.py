@@ -21,7 +21,10 @@ pole masks); the chart modules turn them into :class:`~andoyer.SingularChartWarn
 quantity that vanishes on a singular chart divides by a safe one chosen first. The loops
 live here, not in ``_compiled``, because numba's on-disk cache of a function is
 invalidated only by changes to the file that defines it: a loop defined beside its
-kernels is recompiled whenever they change.
+kernels is recompiled whenever they change. (The angle and quaternion kernels it calls,
+:func:`andoyer._fastmath.atan2_2pi_one`, :func:`andoyer._quaternion.from_zxz_one` and
+``from_xz_one``, live with their array forms: after editing one of them, touch this file
+or clear the ``*.nbi``/``*.nbc`` cache.)
 """
 
 from __future__ import annotations
