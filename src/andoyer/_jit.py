@@ -308,12 +308,15 @@ def on_floats(*kernels: FunctionType) -> list[FunctionType]:
         if filename not in trees:
             source = "".join(linecache.getlines(filename))
             nodes = ast.walk(ast.parse(source, filename))
-            trees[filename] = {node.lineno: node for node in nodes if isinstance(node, ast.FunctionDef)}
+            functions = [node for node in nodes if isinstance(node, ast.FunctionDef)]
+            # (a decorated function's code starts at its first decorator, not at ``def``)
+            trees[filename] = {min([f.lineno] + [d.lineno for d in f.decorator_list]): f for f in functions}
         definition = Conditional(kernel.__globals__).visit(trees[filename][first])
+        definition.decorator_list = []  # the copy is the plain function
         flags = __future__.annotations.compiler_flag  # annotations stay strings, as in the source
         module = ast.Module(body=[definition], type_ignores=[])
         local: dict = {}
         exec(compile(module, filename, "exec", flags=flags, dont_inherit=True), namespace, local)
-        return local[kernel.__name__]
+        return local[definition.name]
 
     return _copy_kernels(kernels, "floats", {}, {}, recompiled)
