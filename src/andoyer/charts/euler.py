@@ -61,7 +61,7 @@ _INFINITE_MOMENTUM = "expected Phi = Psi cos(theta) where sin(theta) = 0, got Ph
 #: Arrays of at least this many states go through the compiled loops; smaller ones through
 #: numpy, as do all where numba is missing. Importing numba and loading the cached loops costs
 #: ~0.7 s once per process (a command converting a few states should not pay it), and numpy's
-#: ~150 µs a call stays small below this size. The two paths agree within 2 ulp.
+#: ~150 µs a call stays small below this size. Both run the same kernels and agree within 2 ulp.
 COMPILED_MIN = 2048
 
 
