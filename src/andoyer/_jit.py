@@ -44,6 +44,11 @@ def _load_numba():
             return lambda condition: condition
 
         _numba = numba
+        from numba.extending import register_jitable
+
+        for function in _PENDING:
+            register_jitable(function)
+        _PENDING.clear()
     return _numba
 
 
@@ -80,7 +85,9 @@ def jitable(function):
     """Let compiled kernels call the plain Python ``function`` (``numba.extending.register_jitable``).
 
     The function itself is returned unchanged, so Python callers keep calling it as
-    Python; kernels compiled with :func:`jit` that name it compile it inline.
+    Python; kernels compiled with :func:`jit` that name it compile it inline. Until numba
+    is loaded (by the first :func:`jit`, before anything compiles) the registration waits,
+    so a module of kernels that Python also runs does not import numba.
 
     Examples
     --------
@@ -91,10 +98,16 @@ def jitable(function):
     """
     if not NUMBA:  # pragma: no cover - depends on the environment
         return function
-    _load_numba()
+    if _numba is None:
+        _PENDING.append(function)
+        return function
     from numba.extending import register_jitable
 
     return register_jitable(function)
+
+
+#: Functions given to :func:`jitable` before numba was loaded; registered when it is.
+_PENDING: list = []
 
 
 def select(condition, if_true, if_false):

@@ -90,3 +90,22 @@ def test_single_state_conversions_load_no_numba():
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "False"
+
+
+def test_jitable_waits_for_numba_then_compiles(tmp_path):
+    # A module of jitable kernels loads no numba; the first jit loads it and registers them.
+    script = tmp_path / "kernels.py"
+    script.write_text(
+        "import sys\n"
+        "from andoyer._jit import NUMBA, jit, jitable\n"
+        "@jitable\n"
+        "def twice(x):\n"
+        "    return 2.0 * x\n"
+        "before = 'numba' in sys.modules\n"
+        "def caller(x):\n"
+        "    return twice(x) + 1.0\n"
+        "compiled = jit(caller)\n"
+        "print(before, compiled(3.0), hasattr(compiled, 'py_func') == NUMBA)\n"
+    )
+    out = subprocess.run([sys.executable, str(script)], capture_output=True, text=True, check=True).stdout
+    assert out.split() == ["False", "7.0", "True"]
