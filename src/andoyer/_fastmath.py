@@ -1,46 +1,84 @@
-"""Cache-friendly evaluation for the vectorised hot paths.
+"""Angles on ``[0, 2π)`` written once, and cache-friendly evaluation for the vectorised hot paths.
 
 numpy's ``arctan2`` costs about 50 ns per element while ``arctan`` costs
 about 12 ns, and on arrays of millions of states every temporary lives in
-main memory. :func:`atan2_2pi` rebuilds ``atan2`` from ``arctan`` on the
+main memory. :func:`atan2_2pi_one` rebuilds ``atan2`` from ``atan`` on the
 octant-reduced ratio (error within 2 ulp of the result), and :func:`chunked`
 evaluates an element-wise kernel on slices small enough for the temporaries
 to stay in cache. Together they make the state → Andoyer conversion about
 2.5 times faster at 10⁶ states (``benchmarks/bench_conversions.py``).
+
+:func:`wrap_2pi_one` and :func:`atan2_2pi_one` are scalar kernels (:mod:`math`, branches through
+:func:`andoyer._jit.select`): Python on floats, compiled inline by the callers' numba loops;
+:func:`wrap_2pi` and :func:`atan2_2pi` are the same code on whole arrays
+(:func:`andoyer._jit.on_arrays`):
+
+>>> atan2_2pi(np.array([1.0, -1.0]), np.array([0.0, 0.0])).tolist() == [HALF_PI, 3 * HALF_PI]
+True
+>>> wrap_2pi(np.array([-1e-300, 7.0])).tolist() == [0.0, 7.0 - TWO_PI]
+True
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from math import atan
 
 import numpy as np
 from numpy.typing import NDArray
 
+from andoyer._jit import on_arrays, select
+
+__all__ = ["atan2_2pi", "atan2_2pi_one", "chunked", "wrap_2pi", "wrap_2pi_one"]
+
 Array = NDArray[np.float64]
 
-TWO_PI = 2.0 * np.pi
-HALF_PI = 0.5 * np.pi
+PI = 3.141592653589793
+TWO_PI = 2.0 * PI
+HALF_PI = 0.5 * PI
 
 #: Elements per slice: eight float64 temporaries of this length fit in a 512 KiB cache.
 CHUNK = 8192
 
 
-def atan2_2pi(y: Array, x: Array) -> Array:
-    """``atan2(y, x)`` mapped to ``[0, 2π)``; ``(0, 0)`` gives 0."""
-    ax, ay = np.abs(x), np.abs(y)
-    big = np.maximum(ax, ay)
-    a = np.arctan(np.minimum(ax, ay) / np.where(big == 0, 1.0, big))
-    a = np.where(ay > ax, HALF_PI - a, a)
-    a = np.where(x < 0, np.pi - a, a)
-    a = np.where(y < 0, TWO_PI - a, a)
+def atan2_2pi_one(y: float, x: float) -> float:
+    """``atan2(y, x)`` mapped to ``[0, 2π)``; ``(0, 0)`` gives 0 (the kernel of :func:`atan2_2pi`).
+
+    ``a = atan(min/max)`` of ``|x|``, ``|y|`` (``max = 0`` read as 1), reflected into the
+    octant of ``(x, y)``: ``π/2 - a`` above the diagonal, ``π - a`` for ``x < 0``, ``2π - a``
+    for ``y < 0``.
+
+    Examples
+    --------
+    >>> atan2_2pi_one(-1.0, 0.0) == 1.5 * PI
+    True
+    """
+    ax, ay = abs(x), abs(y)
+    above = ay > ax
+    big = select(above, ay, ax)
+    a = atan(select(above, ax, ay) / select(big == 0, 1.0, big))
+    a = select(above, HALF_PI - a, a)
+    a = select(x < 0, PI - a, a)
+    a = select(y < 0, TWO_PI - a, a)
     # 2π - (tiny) rounds to 2π: fold it onto 0, the same point of the circle.
-    return np.where(a >= TWO_PI, 0.0, a)
+    return select(a >= TWO_PI, 0.0, a)
 
 
-def wrap_2pi(a: Array) -> Array:
-    """Angles reduced to ``[0, 2π)`` (``np.mod`` alone can return 2π for tiny negatives)."""
-    r = np.mod(a, TWO_PI)
-    return np.where(r >= TWO_PI, 0.0, r)
+def wrap_2pi_one(a: float) -> float:
+    """``a`` reduced to ``[0, 2π)`` (the kernel of :func:`wrap_2pi`; ``a % 2π`` alone can give 2π).
+
+    Examples
+    --------
+    >>> wrap_2pi_one(-1e-300)
+    0.0
+    """
+    r = a % TWO_PI
+    return select(r >= TWO_PI, 0.0, r)
+
+
+atan2_2pi, wrap_2pi = on_arrays(atan2_2pi_one, wrap_2pi_one)
+atan2_2pi.__doc__ = "``atan2(y, x)`` mapped to ``[0, 2π)`` on arrays (:func:`atan2_2pi_one`); (0, 0) gives 0."
+wrap_2pi.__doc__ = "Angles reduced to ``[0, 2π)`` on arrays (:func:`wrap_2pi_one`)."
 
 
 def chunked(
@@ -54,7 +92,8 @@ def chunked(
     """
     n = arrays[0].shape[0]
     if n <= chunk:
-        return [np.asarray(r, dtype=float) for r in kernel(*arrays)]
+        # copies: a kernel may hand back one of its inputs, which the caller must not alias
+        return [np.array(r, dtype=float) for r in kernel(*arrays)]
     out = np.empty((n_out, n))
     for start in range(0, n, chunk):
         stop = min(start + chunk, n)

@@ -13,10 +13,12 @@ has registered it (the compiled modules do so; this module does not import numba
 
 from __future__ import annotations
 
+from math import cos, sin
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from andoyer._fastmath import wrap_2pi
+from andoyer._jit import on_arrays
 
 Array = NDArray[np.float64]
 
@@ -145,52 +147,48 @@ def rotate(q: Array, v: Array) -> Array:
     return np.stack(apply(*_components(q), v[..., 0], v[..., 1], v[..., 2]), axis=-1)
 
 
-def from_zxz(a: Array, b: Array, c: Array) -> Array:
-    """Quaternion of ``Rz(a) Rx(b) Rz(c)`` (intrinsic 3-1-3 sequence), shape (..., 4).
+def from_zxz_one(a: float, b: float, c: float) -> tuple[float, float, float, float]:
+    """Quaternion ``(x, y, z, w)`` of ``Rz(a) Rx(b) Rz(c)`` (intrinsic 3-1-3 sequence): the scalar kernel.
 
     ``w = cos(b/2) cos((a+c)/2)``, ``z = cos(b/2) sin((a+c)/2)``,
-    ``x = sin(b/2) cos((a-c)/2)``, ``y = sin(b/2) sin((a-c)/2)``.
+    ``x = sin(b/2) cos((a-c)/2)``, ``y = sin(b/2) sin((a-c)/2)``. Written once for floats,
+    the compiled chart loops and (through :func:`andoyer._jit.on_arrays`) :func:`from_zxz`.
+
+    Examples
+    --------
+    >>> [round(v, 12) for v in from_zxz_one(0.0, 3.141592653589793, 0.0)]
+    [1.0, 0.0, 0.0, 0.0]
     """
     half_sum = 0.5 * (a + c)
     half_diff = 0.5 * (a - c)
-    cb, sb = np.cos(0.5 * b), np.sin(0.5 * b)
-    return np.stack(
-        [sb * np.cos(half_diff), sb * np.sin(half_diff), cb * np.sin(half_sum), cb * np.cos(half_sum)],
-        axis=-1,
-    )
+    cb, sb = cos(0.5 * b), sin(0.5 * b)
+    return sb * cos(half_diff), sb * sin(half_diff), cb * sin(half_sum), cb * cos(half_sum)
+
+
+def from_xz_one(b: float, c: float) -> tuple[float, float, float, float]:
+    """Quaternion ``(x, y, z, w)`` of ``Rx(b) Rz(c)``: the scalar kernel of :func:`from_xz`.
+
+    Examples
+    --------
+    >>> [round(v, 12) for v in from_xz_one(0.0, 3.141592653589793)]
+    [0.0, -0.0, 1.0, 0.0]
+    """
+    cb, sb = cos(0.5 * b), sin(0.5 * b)
+    cc, sc = cos(0.5 * c), sin(0.5 * c)
+    return sb * cc, -sb * sc, cb * sc, cb * cc
+
+
+_from_zxz_arrays, _from_xz_arrays = on_arrays(from_zxz_one, from_xz_one)
+
+
+def from_zxz(a: Array, b: Array, c: Array) -> Array:
+    """Quaternion of ``Rz(a) Rx(b) Rz(c)``, shape (..., 4): :func:`from_zxz_one` on arrays."""
+    return np.stack(_from_zxz_arrays(a, b, c), axis=-1)
 
 
 def from_xz(b: Array, c: Array) -> Array:
-    """Quaternion of ``Rx(b) Rz(c)``, shape (..., 4)."""
-    cb, sb = np.cos(0.5 * b), np.sin(0.5 * b)
-    cc, sc = np.cos(0.5 * c), np.sin(0.5 * c)
-    return np.stack([sb * cc, -sb * sc, cb * sc, cb * cc], axis=-1)
-
-
-def to_zxz(q: Array, tol: float = 0.0) -> tuple[Array, Array, Array, Array]:
-    """Angles ``(a, b, c)`` with ``Rz(a) Rx(b) Rz(c) = R(q)``, and the singular mask.
-
-    ``b`` is in ``[0, π]``, ``a`` and ``c`` in ``[0, 2π)``. Where ``sin b = 0``
-    only ``a ± c`` is defined; the convention is ``c = 0``. Entries with
-    ``sin(b/2) <= tol`` or ``cos(b/2) <= tol`` are snapped onto the singularity
-    (``b = 0`` or ``π``); the mask marks them. Half-angle sums and differences
-    come from ``atan2`` of quaternion pairs, which is well conditioned
-    everywhere (Bernardes & Viollet 2022).
-    """
-    x, y, z, w = q[..., 0], q[..., 1], q[..., 2], q[..., 3]
-    rho_xy = np.hypot(x, y)
-    rho_zw = np.hypot(z, w)
-    at_zero = rho_xy <= tol
-    at_pi = (rho_zw <= tol) & ~at_zero
-    b = np.where(at_zero, 0.0, np.where(at_pi, np.pi, 2.0 * np.arctan2(rho_xy, rho_zw)))
-    half_sum = np.arctan2(z, w)
-    half_diff = np.arctan2(y, x)
-    half_diff = np.where(at_zero, half_sum, half_diff)
-    half_sum = np.where(at_pi, half_diff, half_sum)
-    a = wrap_2pi(half_sum + half_diff)
-    c = wrap_2pi(half_sum - half_diff)
-    c = np.where(at_zero | at_pi, 0.0, c)
-    return a, b, c, at_zero | at_pi
+    """Quaternion of ``Rx(b) Rz(c)``, shape (..., 4): :func:`from_xz_one` on arrays."""
+    return np.stack(_from_xz_arrays(b, c), axis=-1)
 
 
 def normalise(q: Array) -> Array:

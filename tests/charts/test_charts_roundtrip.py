@@ -149,7 +149,8 @@ def test_state_round_trip_hypothesis(q, m):
     q = np.asarray(q) / np.linalg.norm(q)
     state = State.from_quaternion(q, m)
     m_ref = state.m_reference
-    assume(min(np.hypot(*m[:2]), np.hypot(*m_ref[:2])) > 1e-3 * np.linalg.norm(m))
+    # 1e-2: the round trip loses ε/sin J and ε/sin I, under the 1e-13 asked below
+    assume(min(np.hypot(*m[:2]), np.hypot(*m_ref[:2])) > 1e-2 * np.linalg.norm(m))
     a = state.as_andoyer()  # conditioning near singularities has its own test
     back = State.from_andoyer(*a)
     assert rotation_distance(back.quaternion, state.quaternion) <= 1e-13

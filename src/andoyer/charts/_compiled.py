@@ -4,7 +4,8 @@ Each loop (defined in :mod:`andoyer.charts._kernels`, beside the scalar kernel i
 applies state by state) is compiled here, so an array conversion gives the same bits as
 the single-state fast path. The module
 imports numba (through :mod:`andoyer._jit`); the chart modules import it only for
-arrays, and only use it when ``NUMBA`` is true, else their numpy expressions.
+arrays, and only use it when ``NUMBA`` is true, else the same kernels on whole arrays
+(the ``*_arrays`` functions of :mod:`andoyer.charts._kernels`).
 """
 
 from __future__ import annotations

@@ -28,8 +28,7 @@ from typing import TYPE_CHECKING, NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from andoyer import _quaternion as quat
-from andoyer._fastmath import atan2_2pi, chunked, wrap_2pi
+from andoyer._fastmath import chunked, wrap_2pi
 from andoyer._validation import (
     MAX_ANGLE,
     MAX_MOMENTUM,
@@ -166,77 +165,34 @@ def andoyer_to_hub(
 ) -> tuple[Array, Array]:
     """Attitude quaternions (..., 4) and body angular momenta (..., 3) of Andoyer states.
 
-    With ``unit=True`` the quaternions come divided by their norm as
-    :class:`~andoyer.State` stores them, through the scalar kernel for one state
-    and the compiled loop for arrays.
+    The quaternions come divided by their norm as :class:`~andoyer.State` stores them
+    (``unit``, kept for the callers that ask for it, changes nothing), from the kernel
+    :func:`andoyer.charts._kernels.andoyer_to_hub_one`: as Python for one state, compiled
+    for arrays (numba), or on whole arrays (numpy).
     """
-    one = scalars((l, g, h, L, G, H)) if unit else None
+    del unit  # every path normalises
+    one = scalars((l, g, h, L, G, H))
     if one is not None:
         L1, G1, H1 = one[3:]
         slack = 4 * _kernels.EPS * G1
         # Anything else (G out of range, |L| or |H| above G) takes the array path, which names it.
         angles_ok = max(map(abs, one[:3])) <= MAX_ANGLE
         if angles_ok and 0 < G1 <= MAX_MOMENTUM and abs(L1) - G1 <= slack and abs(H1) - G1 <= slack:
-            *r, mz = _kernels.andoyer_to_hub_one(*one)
+            *r, mz = _kernels.andoyer_to_hub_floats(*one)
             return np.array(r[:4]), np.array([*r[4:], mz])
     l, g, h = (as_finite(v, n) for n, v in zip("lgh", (l, g, h), strict=True))
     for name, angle in (("l", l), ("g", g), ("h", h)):
         check_angle(angle, name)
     L, G, H = _momenta(L, G, H)
     l, g, h, L, G, H = broadcast(("l", l), ("g", g), ("h", h), ("L", L), ("G", G), ("H", H))
-    compiled = compiled_conversions(l.size) if unit else None
+    compiled = compiled_conversions(l.size)
     if compiled is not None:
         q, m = compiled.andoyer_to_hub((l, g, h, L, G, H))
-        return q.reshape(*l.shape, 4), m.reshape(*l.shape, 3)
-    GsI, GcI = _sin_cos(H, G)
-    GsJ, GcJ = _sin_cos(L, G)
-    q = quat.multiply(quat.from_zxz(h, np.arctan2(GsI, GcI), g), quat.from_xz(np.arctan2(GsJ, GcJ), l))
-    m = np.stack([GsJ * np.sin(l), GsJ * np.cos(l), L], axis=-1)
-    return (quat.normalise(q) if unit else q), m
-
-
-def _hub_to_andoyer_kernel(
-    x: Array, y: Array, z: Array, w: Array, m1: Array, m2: Array, m3: Array
-) -> tuple[Array, ...]:
-    """Element-wise core of :func:`hub_to_andoyer` on 1-D slices."""
-    G = np.sqrt(m1 * m1 + m2 * m2 + m3 * m3)
-    # Rotation matrix A of the quaternion (body -> reference); only products are needed.
-    xx, yy, zz = x * x, y * y, z * z
-    xy, xz, yz, xw, yw, zw = x * y, x * z, y * z, x * w, y * w, z * w
-    a00, a01, a02 = 1 - 2 * (yy + zz), 2 * (xy - zw), 2 * (xz + yw)
-    a10, a11, a12 = 2 * (xy + zw), 1 - 2 * (xx + zz), 2 * (yz - xw)
-    M1 = a00 * m1 + a01 * m2 + a02 * m3
-    M2 = a10 * m1 + a11 * m2 + a12 * m3
-    M3 = 2 * (xz - yw) * m1 + 2 * (yz + xw) * m2 + (1 - 2 * (xx + yy)) * m3
-    rho_body = np.sqrt(m1 * m1 + m2 * m2)
-    rho_ref = np.sqrt(M1 * M1 + M2 * M2)
-    # Within a few ulp of a pole the direction of the node is round-off; snapping onto the
-    # pole (L or H = ±G exactly) keeps the round trip exact where (L, G, H) could not.
-    pole_tol = 4 * np.finfo(float).eps * G
-    on_pole_j = rho_body <= pole_tol
-    on_pole_i = rho_ref <= pole_tol
-    safe_body = np.where(on_pole_j, 1.0, rho_body)
-    safe_ref = np.where(on_pole_i, 1.0, rho_ref)
-    sl = np.where(on_pole_j, 0.0, m1 / safe_body)
-    cl = np.where(on_pole_j, 1.0, m2 / safe_body)
-    sh = np.where(on_pole_i, 0.0, M1 / safe_ref)
-    ch = np.where(on_pole_i, 1.0, -M2 / safe_ref)
-    # Node i = (cos h, sin h, 0) seen in the body frame is Aᵀ i; node j = (cos l, -sin l, 0).
-    i1, i2, i3 = ch * a00 + sh * a10, ch * a01 + sh * a11, ch * a02 + sh * a12
-    # g = angle from i to j about m: sin g ∝ m·(i × j), cos g ∝ G i·j, with m·(i × j)
-    # = i·(j × m) and j × m = (-sin l m3, -cos l m3, rho_body).
-    sin_g = rho_body * i3 - m3 * (sl * i1 + cl * i2)
-    cos_g = G * (i1 * cl - i2 * sl)
-    return (
-        atan2_2pi(sl, cl),
-        atan2_2pi(sin_g, cos_g),
-        atan2_2pi(sh, ch),
-        np.where(on_pole_j, np.copysign(G, m3), m3),
-        G,
-        np.where(on_pole_i, np.copysign(G, M3), M3),
-        on_pole_j,
-        on_pole_i,
-    )
+    else:
+        flat = [np.ascontiguousarray(v).reshape(-1) for v in (l, g, h, L, G, H)]
+        columns = chunked(_kernels.andoyer_to_hub_arrays, flat, 7)
+        q, m = np.stack(columns[:4], axis=-1), np.stack(columns[4:], axis=-1)
+    return q.reshape(*l.shape, 4), m.reshape(*l.shape, 3)
 
 
 _ZERO_MOMENTUM = "expected a non-zero angular momentum, got |m| = 0 (the Andoyer chart needs G > 0)"
@@ -252,31 +208,31 @@ def hub_to_andoyer(q: Array, m: Array, stacklevel: int = 2) -> Andoyer:
     frame) to the node ``j = (cos l, -sin l, 0)`` (body frame). Building ``i``
     and ``j`` from the same ``h`` and ``l`` that are returned keeps the
     attitude round trip exact even where ``h`` or ``l`` is ill-conditioned.
-    One state goes through the scalar kernel (fields are numpy scalars), arrays
-    through the compiled loop when numba is there, else through numpy.
+    One state goes through the kernel :func:`andoyer.charts._kernels.hub_to_andoyer_one`
+    as Python (fields are numpy scalars), arrays through it compiled when numba is
+    there, else through it on whole arrays (numpy).
     """
     if q.shape == (4,) and m.shape == (3,):
         m1, m2, m3 = m.tolist()
         if m1 * m1 + m2 * m2 + m3 * m3 <= 0:
             raise ValueError(_ZERO_MOMENTUM)
-        *r, on_pole_j, on_pole_i = _kernels.hub_to_andoyer_one(*q.tolist(), m1, m2, m3)
+        *r, on_pole_j, on_pole_i = _kernels.hub_to_andoyer_floats(*q.tolist(), m1, m2, m3)
         if on_pole_j:
             warn_if_singular(True, _SINGULAR_J, stacklevel + 1)
         if on_pole_i:
             warn_if_singular(True, _SINGULAR_I, stacklevel + 1)
         return Andoyer(*map(np.float64, r))
-    shape = m.shape[:-1]
-    compiled = compiled_conversions(m.size // 3) if q.shape[:-1] == shape else None
+    shape = np.broadcast_shapes(q.shape[:-1], m.shape[:-1])
+    q, m = np.broadcast_to(q, (*shape, 4)).reshape(-1, 4), np.broadcast_to(m, (*shape, 3)).reshape(-1, 3)
+    compiled = compiled_conversions(m.shape[0])
     if compiled is not None:
-        out, on_pole_j, on_pole_i, zero = compiled.hub_to_andoyer(q.reshape(-1, 4), m.reshape(-1, 3))
+        columns, on_pole_j, on_pole_i, zero = compiled.hub_to_andoyer(q, m)
         if zero:
             raise ValueError(_ZERO_MOMENTUM)
-        columns = out
     else:
         if np.any(np.sum(m * m, axis=-1) <= 0):
             raise ValueError(_ZERO_MOMENTUM)
-        flat = [*q.reshape(-1, 4).T, *m.reshape(-1, 3).T]
-        *columns, on_pole_j, on_pole_i = chunked(_hub_to_andoyer_kernel, flat, 8)
+        *columns, on_pole_j, on_pole_i = chunked(_kernels.hub_to_andoyer_arrays, [*q.T, *m.T], 8)
     warn_if_singular(on_pole_j != 0, _SINGULAR_J, stacklevel + 1)
     warn_if_singular(on_pole_i != 0, _SINGULAR_I, stacklevel + 1)
     return Andoyer(*(v.reshape(shape) for v in columns))

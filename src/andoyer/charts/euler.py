@@ -28,7 +28,7 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from andoyer import _quaternion as quat
+from andoyer._fastmath import chunked
 from andoyer._validation import (
     MAX_ANGLE,
     MAX_MOMENTUM,
@@ -64,7 +64,7 @@ _INFINITE_MOMENTUM = "expected Phi = Psi cos(theta) where sin(theta) = 0, got Ph
 #: Arrays of at least this many states go through the compiled loops; smaller ones through
 #: numpy, as do all where numba is missing. Importing numba and loading the cached loops costs
 #: ~0.7 s once per process (a command converting a few states should not pay it), and numpy's
-#: ~150 µs a call stays small below this size. The two paths agree within 2 ulp.
+#: ~150 µs a call stays small below this size. Both run the same kernels and agree within 2 ulp.
 COMPILED_MIN = 2048
 
 
@@ -148,20 +148,30 @@ def euler_matrix(phi: ArrayLike, theta: ArrayLike, psi: ArrayLike) -> Array:
 
 
 def transverse_momentum(big: Array, small: Array, theta: Array) -> tuple[Array, Array]:
-    """``(big - small cos θ)`` and ``sin θ`` without cancellation near ``sin θ = 0``.
+    """``(big - small cos θ)`` and ``sin θ`` without cancellation near ``sin θ = 0``, on arrays.
 
     Near ``θ = 0`` the physical state has ``big ≈ small`` and the difference is
     ``(big - small) + 2 small sin²(θ/2)``; near ``θ = π`` it is
-    ``(big + small) - 2 small cos²(θ/2)``. Both forms are exact rearrangements.
+    ``(big + small) - 2 small cos²(θ/2)``. Both forms are exact rearrangements
+    (the kernel :func:`andoyer.charts._kernels.transverse_momentum_one`, on arrays).
+
+    Parameters
+    ----------
+    big, small, theta : ndarray, shape (...)
+        The two momenta (``Φ, Ψ`` for ``X``; ``Ψ, Φ`` for its reference twin) and ``θ``;
+        they broadcast together.
+
+    Returns
+    -------
+    numerator, sin_theta : ndarray, shape (...)
+
+    Examples
+    --------
+    >>> numerator, st = transverse_momentum(np.array(1.0), np.array(1.0), np.array(1e-9))
+    >>> float(numerator), float(st)  # Φ - Ψ cos θ with Φ = Ψ: Ψ θ²/2, no cancellation
+    (5.000000000000001e-19, 1e-09)
     """
-    ct = np.cos(theta)
-    near_zero = ct >= 0
-    s2 = np.sin(0.5 * theta)
-    c2 = np.cos(0.5 * theta)
-    numerator = np.where(
-        near_zero, (big - small) + 2.0 * small * s2 * s2, (big + small) - 2.0 * small * c2 * c2
-    )
-    return numerator, np.sin(theta)
+    return _kernels.transverse_momentum_arrays(big, small, theta)
 
 
 def euler_to_hub(
@@ -179,13 +189,16 @@ def euler_to_hub(
 
     At ``sin θ = 0`` the component ``X`` of the momentum is not represented by
     the chart; it is set to 0 with a :class:`SingularChartWarning`, and states
-    with ``Φ ≠ ±Ψ`` there (infinite momentum) are rejected. With ``unit=True`` the
-    quaternions come divided by their norm as :class:`~andoyer.State` stores them,
-    through the scalar kernel for one state and the compiled loop for arrays.
+    with ``Φ ≠ ±Ψ`` there (infinite momentum) are rejected. The quaternions come
+    divided by their norm as :class:`~andoyer.State` stores them (``unit``, kept for
+    the callers that ask for it, changes nothing), from the kernel
+    :func:`andoyer.charts._kernels.euler_to_hub_one`: as Python for one state,
+    compiled for arrays (numba), or on whole arrays (numpy).
     """
+    del unit  # every path normalises
     names = ("phi", "theta", "psi", "Phi", "Theta", "Psi")
     values = (phi, theta, psi, Phi, Theta, Psi)
-    one = scalars(values) if unit else None
+    one = scalars(values)
     # Out-of-range angles or momenta take the array path, which names them.
     if (
         one is not None
@@ -193,7 +206,7 @@ def euler_to_hub(
         and max(abs(one[0]), abs(one[2])) <= MAX_ANGLE
         and max(map(abs, one[3:])) <= MAX_MOMENTUM
     ):
-        *r, status = _kernels.euler_to_hub_one(*one)
+        *r, status = _kernels.euler_to_hub_floats(*one)
         if status == _kernels.INFINITE_MOMENTUM:
             raise ValueError(_INFINITE_MOMENTUM)
         if status == _kernels.SINGULAR:
@@ -208,25 +221,17 @@ def euler_to_hub(
         bad = float(theta[(theta < 0) | (theta > np.pi)].flat[0])
         msg = f"expected 0 <= theta <= pi, got theta = {bad!r}"
         raise ValueError(msg)
-    compiled = compiled_conversions(phi.size) if unit else None
+    compiled = compiled_conversions(phi.size)
     if compiled is not None:
         q, m, status = compiled.euler_to_hub((phi, theta, psi, Phi, Theta, Psi))
-        if np.any(status == _kernels.INFINITE_MOMENTUM):
-            raise ValueError(_INFINITE_MOMENTUM)
-        warn_if_singular(status == _kernels.SINGULAR, _SINGULAR_TO_HUB, stacklevel + 1)
-        return q.reshape(*phi.shape, 4), m.reshape(*phi.shape, 3)
-    numerator, st = transverse_momentum(Phi, Psi, theta)
-    # sin(pi) evaluates to 1.2e-16, not 0: treat |sin θ| <= 2ε as the singularity itself.
-    singular = np.abs(st) <= 2 * np.finfo(float).eps
-    scale = np.maximum(np.abs(Phi) + np.abs(Psi) + np.abs(Theta), np.finfo(float).tiny)
-    if np.any(singular & (np.abs(numerator) > 8 * np.finfo(float).eps * scale)):
+    else:
+        flat = [np.ascontiguousarray(v).reshape(-1) for v in (phi, theta, psi, Phi, Theta, Psi)]
+        *columns, status = chunked(_kernels.euler_to_hub_arrays, flat, 8)
+        q, m = np.stack(columns[:4], axis=-1), np.stack(columns[4:], axis=-1)
+    if np.any(status == _kernels.INFINITE_MOMENTUM):
         raise ValueError(_INFINITE_MOMENTUM)
-    X = np.divide(numerator, st, out=np.zeros_like(numerator), where=~singular)
-    warn_if_singular(singular, _SINGULAR_TO_HUB, stacklevel + 1)
-    cp, sp = np.cos(psi), np.sin(psi)
-    m = np.stack([Theta * cp + X * sp, -Theta * sp + X * cp, Psi], axis=-1)
-    q = quat.from_zxz(phi, theta, psi)
-    return (quat.normalise(q) if unit else q), m
+    warn_if_singular(status == _kernels.SINGULAR, _SINGULAR_TO_HUB, stacklevel + 1)
+    return q.reshape(*phi.shape, 4), m.reshape(*phi.shape, 3)
 
 
 def hub_to_euler(q: Array, m: Array, stacklevel: int = 2) -> Euler:
@@ -236,27 +241,24 @@ def hub_to_euler(q: Array, m: Array, stacklevel: int = 2) -> Euler:
     :class:`SingularChartWarning`. Attitudes within ``2ε`` of the singularity
     (``sin(θ/2)`` or ``cos(θ/2)`` below ``2ε``) are snapped onto it, and there
     ``Φ = Ψ cos θ`` exactly, so the rotation round trip stays exact to ``4ε``.
-    One state goes through the scalar kernel (fields are numpy scalars), arrays
-    through the compiled loop when numba is there, else through numpy.
+    One state goes through the kernel :func:`andoyer.charts._kernels.hub_to_euler_one`
+    as Python (fields are numpy scalars), arrays through it compiled when numba is
+    there, else through it on whole arrays (numpy).
     """
     if q.shape == (4,) and m.shape == (3,):
-        *r, singular = _kernels.hub_to_euler_one(*q.tolist(), *m.tolist())
+        *r, singular = _kernels.hub_to_euler_floats(*q.tolist(), *m.tolist())
         if singular:
             warn_if_singular(True, _SINGULAR_TO_EULER, stacklevel + 1)
         return Euler(*map(np.float64, r))
-    compiled = compiled_conversions(m.size // 3) if q.shape[:-1] == m.shape[:-1] else None
+    shape = np.broadcast_shapes(q.shape[:-1], m.shape[:-1])
+    q, m = np.broadcast_to(q, (*shape, 4)).reshape(-1, 4), np.broadcast_to(m, (*shape, 3)).reshape(-1, 3)
+    compiled = compiled_conversions(m.shape[0])
     if compiled is not None:
-        out, singular = compiled.hub_to_euler(q.reshape(-1, 4), m.reshape(-1, 3))
-        warn_if_singular(singular, _SINGULAR_TO_EULER, stacklevel + 1)
-        return Euler(*(v.reshape(q.shape[:-1]) for v in out))
-    phi, theta, psi, singular = quat.to_zxz(q, tol=2 * np.finfo(float).eps)
-    warn_if_singular(singular, _SINGULAR_TO_EULER, stacklevel + 1)
-    m_ref = quat.rotate(q, m)
-    cp, sp = np.cos(psi), np.sin(psi)
-    Theta = m[..., 0] * cp - m[..., 1] * sp
-    Psi = m[..., 2].copy()
-    Phi = np.where(singular, np.where(theta == 0, Psi, -Psi), m_ref[..., 2])
-    return Euler(phi, theta, psi, Phi, Theta, Psi)
+        out, singular = compiled.hub_to_euler(q, m)
+    else:
+        *out, singular = chunked(_kernels.hub_to_euler_arrays, [*q.T, *m.T], 7)
+    warn_if_singular(singular != 0, _SINGULAR_TO_EULER, stacklevel + 1)
+    return Euler(*(v.reshape(shape) for v in out))
 
 
 # The chart's methods of State (installed by andoyer.charts.registry.install): their signatures

@@ -48,7 +48,8 @@ from andoyer import _quaternion as quat
 from andoyer._fastmath import atan2_2pi, chunked, wrap_2pi
 from andoyer._validation import as_finite, as_vectors, broadcast, check_momenta
 from andoyer.body import RigidBody
-from andoyer.charts.andoyer import Andoyer, _hub_to_andoyer_kernel
+from andoyer.charts import _kernels
+from andoyer.charts.andoyer import Andoyer
 from andoyer.charts.registry import Chart, register
 from andoyer.charts.sam_axes import SAMAxes, andoyer_parameters, sam_axes
 from andoyer.charts.singular import warn_if_singular
@@ -254,7 +255,7 @@ def _sam_of_hub(q: Array, m: Array, axes: SAMAxes) -> tuple[SAM, Array, Array]:
     q = quat.multiply(q, axes.quaternion)
     m = m[..., list(axes.permutation)]
     columns = [*q.reshape(-1, 4).T, *m.reshape(-1, 3).T]
-    l, g, h, L, G, H, on_pole_j, on_pole_i = chunked(_hub_to_andoyer_kernel, columns, 8)
+    l, g, h, L, G, H, on_pole_j, on_pole_i = chunked(_kernels.hub_to_andoyer_arrays, columns, 8)
     m1, m2 = columns[4], columns[5]
     gap = np.where(on_pole_j != 0, 0.0, (m1 * m1 + m2 * m2) / (G + np.abs(L)))
     sign = _hemisphere(L)

@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from andoyer._jit import NUMBA, jitable, select
+from andoyer._jit import fused_multiply_add, jitable, select, when_compiled
 
 __all__ = [
     "PI_DD",
@@ -150,26 +150,11 @@ def product_error(a, b, p):
     return ((ah * bh - p) + ah * bl + al * bh) + al * bl
 
 
-if NUMBA:
-    from llvmlite import ir
-    from numba.core import cgutils, types
-    from numba.extending import intrinsic, overload
-
-    @intrinsic
-    def _fma(typingctx, a, b, c):  # noqa: ARG001 - numba's intrinsic signature
-        """``a b + c`` rounded once (LLVM's ``llvm.fma``: the instruction, or libm's ``fma``)."""
-        sig = types.float64(types.float64, types.float64, types.float64)
-
-        def codegen(context, builder, signature, args):  # noqa: ARG001
-            d = ir.DoubleType()
-            fn = cgutils.get_or_insert_function(builder.module, ir.FunctionType(d, [d, d, d]), "llvm.fma.f64")
-            return builder.call(fn, args)
-
-        return sig, codegen
-
+@when_compiled
+def _compiled_product_error(overload):
     @overload(product_error)
     def _product_error_compiled(a, b, p):  # noqa: ARG001 - numba's overload signature
-        return lambda a, b, p: _fma(a, b, -p)
+        return lambda a, b, p: fused_multiply_add(a, b, -p)
 
 
 @jitable
