@@ -10,7 +10,8 @@ taken from the AGM sequence of ``Π`` (the same sequence), ``K'`` from the nome,
 offset from the series at ``τ₀`` directly, and without an attitude the quantities only
 the attitude needs (``Π``, the ``ϑ₁`` series) can be skipped.  The constants agree with
 the numpy ones to a few ulps (``tests/free/test_free_compiled.py``); they are stored one
-row per body, as :mod:`andoyer.free.compiled_eval` reads them.
+row per body, as :mod:`andoyer.free.compiled_eval` reads them, in the columns named by
+:mod:`andoyer.free.table`.
 :class:`andoyer.free.FreeMotion` uses both when numba is installed
 (:data:`andoyer._jit.NUMBA`).
 """
@@ -36,12 +37,45 @@ from andoyer.free.scalar_dd import (
     two_prod,
     two_sum,
 )
+from andoyer.free.table import (
+    A3,
+    C_CN,
+    C_DN,
+    C_SN,
+    CIRCULAR,
+    FLAT,
+    FRAC0,
+    HH,
+    HI,
+    HL,
+    KK,
+    LO,
+    MU_CN,
+    MU_DN,
+    MU_SN,
+    NCOLUMNS,
+    NU,
+    NU_PSI,
+    NWA,
+    PERIOD,
+    PRECESSION_RATE,
+    PSI0,
+    QUAT_U,
+    QUAT_V,
+    SLOPE,
+    V_CN,
+    V_SN,
+    WA,
+    WB,
+    G,
+    Q,
+    S,
+)
 from andoyer.free.triaxial import Triaxial
 
 __all__ = ["as_triaxial", "triaxial_table"]
 
 _PI_HI, _PI_LO = 3.141592653589793, 1.2246467991473532e-16
-_ROWS = 58  # rows of the output table, laid out in triaxial_table
 
 
 @jit
@@ -141,7 +175,7 @@ def _psi_offset(circ, f0, q, wa, wb, kk, slope):
 
 @jit
 def _body(Ib, mb, lam, q0, out, i, full):
-    """Constants of body ``i`` into column ``i`` of ``out`` (see :func:`triaxial_table`)."""
+    """Constants of body ``i`` into row ``i`` of ``out`` (columns: :mod:`andoyer.free.table`)."""
     # working frame: axis 3 the polhode axis (C for SAM, A for LAM), axis 2 the middle one
     o0, o1, o2 = 0, 1, 2  # stable sort of three moments
     if Ib[o1] < Ib[o0]:
@@ -165,7 +199,7 @@ def _body(Ib, mb, lam, q0, out, i, full):
     x1h, x1l = two_prod(mw[1], mw[1])
     x2h, x2l = two_prod(mw[2], mw[2])
     P1h, P1l = dd_add(*dd_mul(x0h, x0l, e13h, e13l), *dd_mul(x1h, x1l, e23h, e23l))
-    out[i, 57] = 1.0 if P1h == 0.0 else 0.0
+    out[i, FLAT] = 1.0 if P1h == 0.0 else 0.0
     if P1h == 0.0:  # a steady spin: FreeMotion routes it elsewhere
         return
     P3h, P3l = dd_add(*dd_mul(x1h, x1l, e12h, e12l), *dd_mul(x2h, x2l, e13h, e13l))
@@ -210,26 +244,34 @@ def _body(Ib, mb, lam, q0, out, i, full):
     period = 1.0 / nuh
     frac0 = tau0 / (4.0 * Kh)
     nhh, nhl = split(nuh)
-    row = (1.0 if circ else 0.0, nuh, nul, nhh, nhl, frac0, q, c_sn, c_cn, c_dn, kk)
-    for r in range(11):
-        out[i, r] = row[r]
+    out[i, CIRCULAR] = 1.0 if circ else 0.0
+    out[i, NU + HI] = nuh
+    out[i, NU + LO] = nul
+    out[i, NU + HH] = nhh
+    out[i, NU + HL] = nhl
+    out[i, FRAC0] = frac0
+    out[i, Q] = q
+    out[i, C_SN] = c_sn
+    out[i, C_CN] = c_cn
+    out[i, C_DN] = c_dn
+    out[i, KK] = kk
     # working axis j is sign[j] times body axis perm[j]
-    out[i, 11 + perm[0]] = a1 * c_cn
-    out[i, 14 + perm[1]] = s * a2 * c_sn * sign[1]
-    out[i, 17 + perm[2]] = a3 * c_dn * s3
-    out[i, 47 + perm[0]] = s * a2
-    out[i, 50 + perm[1]] = -a1 * sign[1]
-    out[i, 53] = Gh
-    out[i, 54] = a3
-    out[i, 55] = period
-    out[i, 20] = s
+    out[i, MU_CN + perm[0]] = a1 * c_cn
+    out[i, MU_SN + perm[1]] = s * a2 * c_sn * sign[1]
+    out[i, MU_DN + perm[2]] = a3 * c_dn * s3
+    out[i, V_SN + perm[0]] = s * a2
+    out[i, V_CN + perm[1]] = -a1 * sign[1]
+    out[i, G] = Gh
+    out[i, A3] = a3
+    out[i, PERIOD] = period
+    out[i, S] = s
     if not full:
-        out[i, 56] = math.nan  # the precession rate needs Π
+        out[i, PRECESSION_RATE] = math.nan  # the precession rate needs Π
         return
     kappa2 = e12h / e23h
     v1 = carlson_rf(kappa2, kappa2 + m, 1.0 + kappa2)
-    wa = out[i, 25:31]  # views into the table: no allocation per body
-    wb = out[i, 31:37]
+    wa = out[i, WA : WA + NWA]  # views into the table: no allocation per body
+    wb = out[i, WB : WB + NWA]
     if circ:
         eta = math.exp(-math.pi * v1 / Kh)
         head, tail = 1.0, q2 / eta  # q^{2n²} ηⁿ and q^{2(n+1)²} η^{−n−1}
@@ -263,14 +305,15 @@ def _body(Ib, mb, lam, q0, out, i, full):
     psh, psl = dd_div(rate_h, rate_l, 2.0 * _PI_HI, 2.0 * _PI_LO)
     slope = s if circ else s * 0.5 * v1 / Kp
     phh, phl = split(psh)
-    row4 = (psh, psl, phh, phl)
-    for r in range(4):
-        out[i, 21 + r] = row4[r]
-    out[i, 37] = slope
-    out[i, 56] = rate_h + 2.0 * math.pi * s / period
+    out[i, NU_PSI + HI] = psh
+    out[i, NU_PSI + LO] = psl
+    out[i, NU_PSI + HH] = phh
+    out[i, NU_PSI + HL] = phl
+    out[i, SLOPE] = slope
+    out[i, PRECESSION_RATE] = rate_h + 2.0 * math.pi * s / period
     if q0.shape[0] == 0:
         return
-    out[i, 38] = _psi_offset(circ, frac0, q, wa, wb, kk, slope)
+    out[i, PSI0] = _psi_offset(circ, frac0, q, wa, wb, kk, slope)
     # U = Q₀ ⊗ P, V = Q₀ ⊗ e_z ⊗ P (andoyer.free.regime.attitude_anchor)
     pq = _perm_quat(perm, sign)
     q_rw = _qmul((q0[i, 0], q0[i, 1], q0[i, 2], q0[i, 3]), (-pq[0], -pq[1], -pq[2], pq[3]))
@@ -280,8 +323,8 @@ def _body(Ib, mb, lam, q0, out, i, full):
     U = _qmul(q_0, pq)
     V = _qmul(_qmul(q_0, (0.0, 0.0, 1.0, 0.0)), pq)
     for k in range(4):
-        out[i, 39 + k] = U[k]
-        out[i, 43 + k] = V[k]
+        out[i, QUAT_U + k] = U[k]
+        out[i, QUAT_V + k] = V[k]
 
 
 @jit
@@ -310,13 +353,10 @@ def triaxial_table(moments, m0, lam, q0=None, rate=True):
 
     Returns
     -------
-    table : ndarray, shape (M, 58)
+    table : ndarray, shape (M, NCOLUMNS)
         One row per state that is not a steady spin (the constants of a state lie
-        together in memory, as the compiled evaluation reads them); columns: ``circular`` (1 or 0),
-        ``nu`` (hi, lo, hh, hl), ``frac0``, ``q``, ``c_sn``, ``c_cn``, ``c_dn``, ``kk``,
-        ``mu_cn``, ``mu_sn``, ``mu_dn`` (3 each), ``s``, ``nu_psi`` (4), ``wa``, ``wb``
-        (6 each), ``slope``, ``psi0``, ``quat_u``, ``quat_v`` (4 each), ``v_sn``, ``v_cn``
-        (3 each), ``G``, ``a3``, ``period``, ``precession_rate``, and a last column of zeros.
+        together in memory, as the compiled evaluation reads them); the columns are named
+        in :mod:`andoyer.free.table` (``FLAT`` is zero in every row kept).
     flat : ndarray of bool, shape (N,)
         States whose wobble ``P₁`` underflows to zero: steady spins about the polhode
         axis, which have no column.
@@ -325,11 +365,11 @@ def triaxial_table(moments, m0, lam, q0=None, rate=True):
     --------
     >>> table, flat = triaxial_table(np.array([[0.25, 0.5, 0.75]]), np.array([[0.3, 0.2, 1.0]]),
     ...                              np.array([False]))
-    >>> table.shape, round(float(table[0, 55]) * 4, 10), flat.tolist()  # time scales as I
+    >>> table.shape, round(float(table[0, PERIOD]) * 4, 10), flat.tolist()  # time scales as I
     ((1, 58), 20.2049347381, [False])
     """
     n = moments.shape[0]
-    out = np.zeros((n, _ROWS))
+    out = np.zeros((n, NCOLUMNS))
     q = np.zeros((0, 4)) if q0 is None else np.ascontiguousarray(q0, dtype=np.float64)
     _all(
         np.ascontiguousarray(moments, dtype=np.float64),
@@ -339,7 +379,7 @@ def triaxial_table(moments, m0, lam, q0=None, rate=True):
         out,
         bool(rate or q0 is not None),
     )
-    flat = out[:, 57] > 0
+    flat = out[:, FLAT] > 0
     if np.any(flat):
         out = out[~flat]
     return out, flat
@@ -350,7 +390,8 @@ def as_triaxial(table):
 
     Parameters
     ----------
-    table : ndarray, shape (N, 58)
+    table : ndarray, shape (N, NCOLUMNS)
+        A table of :func:`triaxial_table` (columns: :mod:`andoyer.free.table`).
 
     Returns
     -------
@@ -364,31 +405,32 @@ def as_triaxial(table):
     (3, 1)
     """
     out = table.T
-    freq = lambda r: Frequency(out[r], out[r + 1], out[r + 2], out[r + 3])  # noqa: E731
+    freq = lambda r: Frequency(out[r + HI], out[r + LO], out[r + HH], out[r + HL])  # noqa: E731
+    vec = lambda r, n=3: out[r : r + n]  # noqa: E731
     return Triaxial(
-        circular=out[0] > 0,
-        nu=freq(1),
-        frac0=out[5],
-        q=out[6],
-        c_sn=out[7],
-        c_cn=out[8],
-        c_dn=out[9],
-        kk=out[10],
-        mu_cn=out[11:14],
-        mu_sn=out[14:17],
-        mu_dn=out[17:20],
-        s=out[20],
-        nu_psi=freq(21),
-        wa=out[25:31],
-        wb=out[31:37],
-        slope=out[37],
-        psi0=out[38],
-        quat_u=out[39:43],
-        quat_v=out[43:47],
-        v_sn=out[47:50],
-        v_cn=out[50:53],
-        G=out[53],
-        a3=out[54],
-        period=out[55],
-        precession_rate=out[56],
+        circular=out[CIRCULAR] > 0,
+        nu=freq(NU),
+        frac0=out[FRAC0],
+        q=out[Q],
+        c_sn=out[C_SN],
+        c_cn=out[C_CN],
+        c_dn=out[C_DN],
+        kk=out[KK],
+        mu_cn=vec(MU_CN),
+        mu_sn=vec(MU_SN),
+        mu_dn=vec(MU_DN),
+        s=out[S],
+        nu_psi=freq(NU_PSI),
+        wa=vec(WA, NWA),
+        wb=vec(WB, NWA),
+        slope=out[SLOPE],
+        psi0=out[PSI0],
+        quat_u=vec(QUAT_U, 4),
+        quat_v=vec(QUAT_V, 4),
+        v_sn=vec(V_SN),
+        v_cn=vec(V_CN),
+        G=out[G],
+        a3=out[A3],
+        period=out[PERIOD],
+        precession_rate=out[PRECESSION_RATE],
     )
