@@ -139,7 +139,9 @@ def every(condition):
 if _numba is not None:
     from numba.extending import overload
 
-    @overload(select, inline="always")
+    # not inline="always": numba's IR inlining of a conditional expression, twice in one
+    # kernel, trips its NumbaIRAssumptionWarning (numba 0.6x); LLVM inlines the call anyway
+    @overload(select)
     def _select_compiled(condition, if_true, if_false):  # noqa: ARG001 - numba's overload signature
         def conditional(condition, if_true, if_false):
             return if_true if condition else if_false
