@@ -72,6 +72,7 @@ from andoyer.free.table import (
     S,
 )
 from andoyer.free.triaxial import Triaxial
+from andoyer.special.theta import nome, quotient_constants
 
 __all__ = ["as_triaxial", "triaxial_table"]
 
@@ -83,14 +84,6 @@ def _inv_diff(s, Ii, Ij):
     dh, dl = two_sum(Ij, -Ii)
     ph, pl = two_prod(Ii, Ij)
     return dd_div(s * dh, s * dl, ph, pl)
-
-
-@jit
-def _nome(p, pc):
-    kc = math.sqrt(pc)
-    eps = p / (2.0 * (1.0 + kc) * (1.0 + math.sqrt(kc)) ** 2)
-    e4 = eps**4
-    return eps * (1.0 + e4 * (2.0 + e4 * (15.0 + e4 * (150.0 + e4 * (1707.0 + e4 * 20910.0)))))
 
 
 @jit
@@ -219,22 +212,14 @@ def _body(Ib, mb, lam, q0, out, i, full):
         p3h = p3l = 0.0
         Kh, Kl = ellipk_dd(mch, mcl)
     circ = m <= 0.5
-    q = _nome(min(m, 0.5), max(mch, 0.5)) if circ else _nome(min(mch, 0.5), max(m, 0.5))
+    q = nome(min(m, 0.5), max(mch, 0.5)) if circ else nome(min(mch, 0.5), max(m, 0.5))
     # K' from the nome q = exp(−πK'/K) (circular) or q' = exp(−πK/K') (hyperbolic), no
     # second AGM: K' enters only reduced phases
     if circ:
         Kp = -Kh * math.log(q) / math.pi
     else:  # (K' = K(m') → π/2 (1 + m'/4) where q' would underflow)
         Kp = -math.pi * Kh / math.log(q) if q > 1e-300 else 0.5 * math.pi * (1.0 + 0.25 * mch)
-    q2 = q * q
-    q4 = q2 * q2
-    q9 = q4 * q4 * q
-    t2 = 1.0 + q2 * (1.0 + q4 * (1.0 + q2 * q4))
-    th3 = 1.0 + 2.0 * (q + q4 + q9)
-    th4 = 1.0 - 2.0 * (q - q4 + q9)
-    c_sn = th3 / t2 if circ else th3 / th4
-    c_cn = th4 / t2 if circ else 2.0 * t2 / th4
-    c_dn = th4 / th3 if circ else 2.0 * t2 / th3
+    c_sn, c_cn, c_dn = quotient_constants(q, circ)
     nuh, nul = dd_div(*dd_sqrt(dnh, dnl), 4.0 * Kh, 4.0 * Kl)
     # initial phase τ₀ = F(am τ₀ | m) from the measured cn, sn, dn
     cn0, sn0, dn0 = mw[0] / a1, mw[1] / (s * a2), mw[2] / a3
@@ -273,6 +258,7 @@ def _body(Ib, mb, lam, q0, out, i, full):
     wa = out[i, WA : WA + NWA]  # views into the table: no allocation per body
     wb = out[i, WB : WB + NWA]
     if circ:
+        q2 = q * q
         eta = math.exp(-math.pi * v1 / Kh)
         head, tail = 1.0, q2 / eta  # q^{2n²} ηⁿ and q^{2(n+1)²} η^{−n−1}
         up, down = q2, q2 * q2 * q2  # their ratios q^{2(2n+1)}, q^{2(2n+3)} (but η)
