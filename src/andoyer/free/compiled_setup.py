@@ -24,7 +24,16 @@ import numpy as np
 
 from andoyer._jit import jit
 from andoyer.free.compiled_eval import _count
-from andoyer.free.kernels.elliptic import carlson_rf
+from andoyer.free.kernels.triaxial import (
+    amplitudes,
+    initial_phase,
+    modulus,
+    pole_offset,
+    polhode_frequency,
+    polhode_scales,
+    psi_constants,
+    secular_rate,
+)
 from andoyer.free.phase import Frequency
 from andoyer.free.scalar_dd import (
     dd_add,
@@ -76,7 +85,6 @@ from andoyer.special.theta import nome, quotient_constants
 
 __all__ = ["as_triaxial", "triaxial_table"]
 
-_PI_HI, _PI_LO = 3.141592653589793, 1.2246467991473532e-16
 
 
 @jit
@@ -200,11 +208,11 @@ def _body(Ib, mb, lam, q0, out, i, full):
     P2h, P2l = dd_add(*dd_mul(x2h, x2l, e23h, e23l), -th, -tl)
     Gh, Gl = dd_sqrt(*dd_add(*dd_add(x0h, x0l, x1h, x1l), x2h, x2l))
     w3h, w3l = dd_div(1.0, 0.0, I3, 0.0)
-    # amplitudes, modulus, K, Π (andoyer.free.triaxial)
-    a1, a2, a3 = math.sqrt(P1h / e13h), math.sqrt(P1h / e23h), math.sqrt(P3h / e13h)
-    dnh, dnl = dd_mul(e23h, e23l, P3h, P3l)
-    m = dd_div(*dd_mul(e12h, e12l, P1h, P1l), dnh, dnl)[0]
-    mch, mcl = dd_div(*dd_mul(e13h, e13l, P2h, P2l), dnh, dnl)
+    # amplitudes, modulus, K, Π (the kernels of andoyer.free.kernels.triaxial)
+    e12, e13, e23 = (e12h, e12l), (e13h, e13l), (e23h, e23l)
+    P1, P3 = (P1h, P1l), (P3h, P3l)
+    a1, a2, a3 = amplitudes(e13h, e23h, P1h, P3h)
+    m, (mch, mcl), omega2 = modulus(e12, e13, e23, P1, (P2h, P2l), P3)
     if full:  # Π(−κ²|m) for the secular rate of ψ, and K from the same AGM
         k2h, k2l = dd_div(e12h, e12l, e23h, e23l)
         p3h, p3l, Kh, Kl = ellippi_dd(-k2h, -k2l, mch, mcl)
@@ -220,14 +228,9 @@ def _body(Ib, mb, lam, q0, out, i, full):
     else:  # (K' = K(m') → π/2 (1 + m'/4) where q' would underflow)
         Kp = -math.pi * Kh / math.log(q) if q > 1e-300 else 0.5 * math.pi * (1.0 + 0.25 * mch)
     c_sn, c_cn, c_dn = quotient_constants(q, circ)
-    nuh, nul = dd_div(*dd_sqrt(dnh, dnl), 4.0 * Kh, 4.0 * Kl)
-    # initial phase τ₀ = F(am τ₀ | m) from the measured cn, sn, dn
-    cn0, sn0, dn0 = mw[0] / a1, mw[1] / (s * a2), mw[2] / a3
-    rf = carlson_rf(cn0 * cn0, dn0 * dn0, 1.0)
-    tau0 = sn0 * rf if cn0 >= 0 else math.copysign(2.0 * Kh, sn0) - sn0 * rf
-    kk = 2.0 * math.pi * Kh / Kp
-    period = 1.0 / nuh
-    frac0 = tau0 / (4.0 * Kh)
+    nuh, nul = polhode_frequency(omega2, (Kh, Kl))
+    frac0 = initial_phase(mw[0], mw[1], mw[2], (a1, a2, a3), s, Kh)
+    period, kk = polhode_scales(nuh, Kh, Kp)
     nhh, nhl = split(nuh)
     out[i, CIRCULAR] = 1.0 if circ else 0.0
     out[i, NU + HI] = nuh
@@ -253,8 +256,7 @@ def _body(Ib, mb, lam, q0, out, i, full):
     if not full:
         out[i, PRECESSION_RATE] = math.nan  # the precession rate needs Π
         return
-    kappa2 = e12h / e23h
-    v1 = carlson_rf(kappa2, kappa2 + m, 1.0 + kappa2)
+    v1 = pole_offset(e12h / e23h, m)
     wa = out[i, WA : WA + NWA]  # views into the table: no allocation per body
     wb = out[i, WB : WB + NWA]
     if circ:
@@ -281,22 +283,15 @@ def _body(Ib, mb, lam, q0, out, i, full):
             sn, cs = sn * c2 + cs * s2, cs * c2 - sn * s2
             step *= q
             amp *= -step
-    # secular rate of ψ (andoyer.free.triaxial._secular_rate)
-    ch, cl = dd_div(*dd_sqrt(*dd_div(P3h, P3l, e13h, e13l)), Gh, Gl)
-    rh, rl = dd_sqrt(*dd_div(e23h, e23l, e13h, e13l))
-    th, tl = dd_mul(*dd_mul(ch, cl, rh, rl), 0.5 * _PI_HI, 0.5 * _PI_LO)
-    bh, bl = dd_add(p3h, p3l, -th, -tl)
-    crh, crl = dd_div(*dd_mul(*dd_mul(Gh, Gl, e13h, e13l), bh, bl), Kh, Kl)
-    rate_h, rate_l = dd_add(*dd_mul(Gh, Gl, w3h, w3l), s * crh, s * crl)
-    psh, psl = dd_div(rate_h, rate_l, 2.0 * _PI_HI, 2.0 * _PI_LO)
-    slope = s if circ else s * 0.5 * v1 / Kp
+    rate, (psh, psl) = secular_rate(e13, e23, P3, (Gh, Gl), (w3h, w3l), s, (p3h, p3l), (Kh, Kl))
+    slope, precession_rate = psi_constants(circ, s, Kp, v1, rate[0], period)
     phh, phl = split(psh)
     out[i, NU_PSI + HI] = psh
     out[i, NU_PSI + LO] = psl
     out[i, NU_PSI + HH] = phh
     out[i, NU_PSI + HL] = phl
     out[i, SLOPE] = slope
-    out[i, PRECESSION_RATE] = rate_h + 2.0 * math.pi * s / period
+    out[i, PRECESSION_RATE] = precession_rate
     if q0.shape[0] == 0:
         return
     out[i, PSI0] = _psi_offset(circ, frac0, q, wa, wb, kk, slope)
