@@ -33,6 +33,8 @@ from andoyer.free.kernels.triaxial import (
     polhode_scales,
     psi_constants,
     secular_rate,
+    theta_circular,
+    theta_hyperbolic,
 )
 from andoyer.free.phase import Frequency
 from andoyer.free.scalar_dd import (
@@ -260,29 +262,9 @@ def _body(Ib, mb, lam, q0, out, i, full):
     wa = out[i, WA : WA + NWA]  # views into the table: no allocation per body
     wb = out[i, WB : WB + NWA]
     if circ:
-        q2 = q * q
-        eta = math.exp(-math.pi * v1 / Kh)
-        head, tail = 1.0, q2 / eta  # q^{2n²} ηⁿ and q^{2(n+1)²} η^{−n−1}
-        up, down = q2, q2 * q2 * q2  # their ratios q^{2(2n+1)}, q^{2(2n+3)} (but η)
-        for n in range(3):
-            sgn = 1.0 - 2.0 * (n % 2)
-            wa[n] = sgn * (head + tail)
-            wb[n] = sgn * (head - tail) * s
-            head *= up * eta
-            tail *= down / eta
-            up *= q2 * q2
-            down *= q2 * q2
+        theta_circular(q, v1, Kh, s, wa, wb)
     else:
-        ang = -0.5 * math.pi + 0.25 * math.pi * v1 / Kp
-        sn, cs = math.sin(ang), math.cos(ang)
-        s2, c2 = 2.0 * sn * cs, (cs - sn) * (cs + sn)
-        amp, step = 1.0, 1.0  # (−1)ⁿ q*^{n² + n}; ratio q*^{2n+2} = q^{n+1}
-        for n in range(6):  # (−1)ⁿ q*^{n²+n} times sin, cos((2n+1)a), by turns of 2a
-            wa[n] = amp * sn
-            wb[n] = amp * cs * s
-            sn, cs = sn * c2 + cs * s2, cs * c2 - sn * s2
-            step *= q
-            amp *= -step
+        theta_hyperbolic(q, v1, Kp, s, wa, wb)
     rate, (psh, psl) = secular_rate(e13, e23, P3, (Gh, Gl), (w3h, w3l), s, (p3h, p3l), (Kh, Kl))
     slope, precession_rate = psi_constants(circ, s, Kp, v1, rate[0], period)
     phh, phl = split(psh)

@@ -63,6 +63,8 @@ from andoyer.free.kernels.triaxial import (
     polhode_scales,
     psi_constants,
     secular_rate,
+    theta_circular,
+    theta_hyperbolic,
 )
 from andoyer.free.phase import Frequency, frequency
 from andoyer.free.regime import PolhodeFrame, attitude_anchor, working_axes
@@ -140,41 +142,6 @@ class Triaxial(NamedTuple):
     precession_rate: np.ndarray
 
 
-def _theta_circular(q, v1, K):
-    """Coefficients of ``ϑ₁(x + iy₀ | q²)`` scaled by ``e^{−y₀} q^{−1/2}/2`` (circular case).
-
-    ``e^{2y₀} = η/q²`` with ``η = e^{−πv₁/K}``; the ``n``-th terms are
-    ``(−1)ⁿ(q^{2n²}ηⁿ ± q^{2(n+1)²}η^{−n−1})``, three of them reach ``q^{18} < 10⁻²⁴``.
-    """
-    qt = q * q
-    eta = np.exp(-np.pi * v1 / K)
-    wa = np.zeros((6, q.size))
-    wb = np.zeros((6, q.size))
-    for n in range(3):
-        head = qt ** (n * n) * eta**n
-        tail = qt ** ((n + 1) ** 2) * eta ** (-(n + 1))
-        sgn = (-1.0) ** n
-        wa[n] = sgn * (head + tail)
-        wb[n] = sgn * (head - tail)
-    return wa, wb
-
-
-def _theta_hyperbolic(q, v1, Kp):
-    """Coefficients of ``ϑ₁(a + ib | q*)``, ``q* = √q'``, ``a = −πv₀/(4K')`` (hyperbolic case).
-
-    Six terms reach ``q*^{25} < 10⁻¹⁷`` at the worst nome ``q* = e^{−π/2}`` (``m = 1/2``).
-    """
-    qs = np.sqrt(q)
-    a = -0.5 * np.pi + 0.25 * np.pi * v1 / Kp
-    wa = np.zeros((6, q.size))
-    wb = np.zeros((6, q.size))
-    for n in range(6):
-        amp = (-1.0) ** n * qs ** (n * n + n)
-        wa[n] = amp * np.sin((2 * n + 1) * a)
-        wb[n] = amp * np.cos((2 * n + 1) * a)
-    return wa, wb
-
-
 def triaxial(frame: PolhodeFrame, q0=None):
     """Constants of the triaxial solution for states off the separatrix and off pure spin.
 
@@ -209,10 +176,11 @@ def triaxial(frame: PolhodeFrame, q0=None):
 
     v1 = pole_offset(e12 / e23, m)
     circ = lat.circular
-    wa, wb = _theta_circular(lat.q, v1, K)
-    wa_h, wb_h = _theta_hyperbolic(lat.q, v1, Kp)
+    wa, wb, wa_h, wb_h = np.zeros((4, 6, s.size))
+    theta_circular(lat.q, v1, K, s, wa, wb)
+    theta_hyperbolic(lat.q, v1, Kp, s, wa_h, wb_h)
     wa = np.where(circ, wa, wa_h)
-    wb = np.where(circ, wb, wb_h) * s
+    wb = np.where(circ, wb, wb_h)
     # Π(−κ²|k²) for the secular rate of ψ from the AGM in double-double (DLMF 19.8.6)
     kap2 = dd_div(*frame.e12, *frame.e23)
     pi3 = ellippi_dd(-kap2[0], -kap2[1], mc_hi, mc_lo)

@@ -27,6 +27,8 @@ __all__ = [
     "polhode_scales",
     "psi_constants",
     "secular_rate",
+    "theta_circular",
+    "theta_hyperbolic",
 ]
 
 _PI_HI, _PI_LO = 3.141592653589793, 1.2246467991473532e-16
@@ -249,3 +251,73 @@ def psi_constants(circular, s, Kp, v1, rate, period):
     [-0.25, 0.0]
     """
     return s * select(circular, 1.0, 0.5 * v1 / Kp), rate + 2.0 * np.pi * s / period
+
+
+@jitable
+def theta_circular(q, v1, K, s, wa, wb):
+    """Coefficients of the ``ϑ₁`` series of ``Φ``, circular case (``k² ≤ 1/2``), into ``wa, wb``.
+
+    ``ϑ₁(x + iy₀ | q²)`` scaled by ``e^{−y₀} q^{−1/2}/2``, with ``e^{2y₀} = η/q²`` and
+    ``η = e^{−πv₁/K}``: the ``n``-th terms are ``(−1)ⁿ(q^{2n²}ηⁿ ± q^{2(n+1)²}η^{−n−1})``
+    (``wb`` times ``s``), formed by their ratios; three of them reach ``q¹⁸ < 10⁻²⁴``.
+
+    Parameters
+    ----------
+    q, v1, K, s : float or ndarray, shape (...)
+        The nome, :func:`pole_offset`, ``K`` and ``±1``.
+    wa, wb : ndarray, shape (6, ...)
+        Filled in rows 0–2 (the rest untouched).
+
+    Examples
+    --------
+    >>> wa, wb = np.zeros(6), np.zeros(6)
+    >>> theta_circular(0.0, 1.0, 1.0, 1.0, wa, wb)  # q = 0: ϑ₁ is its first term
+    >>> wa.tolist()[:3], wb.tolist()[:3]
+    ([1.0, 0.0, 0.0], [1.0, 0.0, 0.0])
+    """
+    q2 = q * q
+    eta = np.exp(-np.pi * v1 / K)
+    head, tail = 1.0, q2 / eta  # q^{2n²} ηⁿ and q^{2(n+1)²} η^{−n−1}
+    up, down = q2, q2 * q2 * q2  # their ratios q^{2(2n+1)}, q^{2(2n+3)} (but η)
+    for n in range(3):
+        sgn = 1.0 - 2.0 * (n % 2)
+        wa[n] = sgn * (head + tail)
+        wb[n] = sgn * (head - tail) * s
+        head = head * (up * eta)
+        tail = tail * (down / eta)
+        up = up * (q2 * q2)
+        down = down * (q2 * q2)
+
+
+@jitable
+def theta_hyperbolic(q, v1, Kp, s, wa, wb):
+    """Coefficients of the ``ϑ₁`` series of ``Φ``, hyperbolic case (``k² > 1/2``), into ``wa, wb``.
+
+    ``ϑ₁(a + ib | q*)`` with ``q* = √q'`` and ``a = −πv₀/(4K')``: ``(−1)ⁿ q*^{n²+n}`` times
+    ``sin, cos((2n+1)a)`` (``wb`` times ``s``), the multiples of ``a`` by turns of ``2a``; six
+    terms reach ``q*^{25} < 10⁻¹⁷`` at the worst nome ``q* = e^{−π/2}`` (``k² = 1/2``).
+
+    Parameters
+    ----------
+    q, v1, Kp, s : float or ndarray, shape (...)
+        The complementary nome ``q'``, :func:`pole_offset`, ``K'`` and ``±1``.
+    wa, wb : ndarray, shape (6, ...)
+        Filled.
+
+    Examples
+    --------
+    >>> wa, wb = np.zeros(6), np.zeros(6)
+    >>> theta_hyperbolic(0.0, 0.0, 1.0, 1.0, wa, wb)  # q' = 0, a = −π/2: sin a = −1
+    >>> float(wa[0]), float(abs(wa[1])), bool(abs(wb[0]) < 1e-16)
+    (-1.0, 0.0, True)
+    """
+    ang = -0.5 * np.pi + 0.25 * np.pi * v1 / Kp
+    sn, cs = np.sin(ang), np.cos(ang)
+    s2, c2 = 2.0 * sn * cs, (cs - sn) * (cs + sn)
+    amp, step = 1.0, 1.0  # (−1)ⁿ q*^{n² + n}; ratio q*^{2n+2} = q^{n+1}
+    for n in range(6):
+        wa[n] = amp * sn
+        wb[n] = amp * cs * s
+        sn, cs = sn * c2 + cs * s2, cs * c2 - sn * s2
+        step = step * q
+        amp = -amp * step
