@@ -28,6 +28,7 @@ from andoyer.free.kernels.triaxial import (
     amplitudes,
     initial_phase,
     modulus,
+    momentum_coefficients,
     pole_offset,
     polhode_frequency,
     polhode_scales,
@@ -246,11 +247,12 @@ def _body(Ib, mb, lam, q0, out, i, full):
     out[i, C_DN] = c_dn
     out[i, KK] = kk
     # working axis j is sign[j] times body axis perm[j]
-    out[i, MU_CN + perm[0]] = a1 * c_cn
-    out[i, MU_SN + perm[1]] = s * a2 * c_sn * sign[1]
-    out[i, MU_DN + perm[2]] = a3 * c_dn * s3
-    out[i, V_SN + perm[0]] = s * a2
-    out[i, V_CN + perm[1]] = -a1 * sign[1]
+    mu_cn, mu_sn, mu_dn, v_sn, v_cn = momentum_coefficients((a1, a2, a3), s, c_sn, c_cn, c_dn)
+    out[i, MU_CN + perm[0]] = mu_cn
+    out[i, MU_SN + perm[1]] = mu_sn * sign[1]
+    out[i, MU_DN + perm[2]] = mu_dn * s3
+    out[i, V_SN + perm[0]] = v_sn
+    out[i, V_CN + perm[1]] = v_cn * sign[1]
     out[i, G] = Gh
     out[i, A3] = a3
     out[i, PERIOD] = period

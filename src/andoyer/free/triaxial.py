@@ -58,6 +58,7 @@ from andoyer.free.kernels.triaxial import (
     amplitudes,
     initial_phase,
     modulus,
+    momentum_coefficients,
     pole_offset,
     polhode_frequency,
     polhode_scales,
@@ -190,6 +191,7 @@ def triaxial(frame: PolhodeFrame, q0=None):
     slope, precession_rate = psi_constants(circ, s, Kp, v1, rate[0], period)
 
     cols = working_axes(frame)
+    mu_cn, mu_sn, mu_dn, v_sn, v_cn = momentum_coefficients((a1, a2, a3), s, lat.c_sn, lat.c_cn, lat.c_dn)
     const = Triaxial(
         circular=circ,
         nu=frequency(*nu),
@@ -199,9 +201,9 @@ def triaxial(frame: PolhodeFrame, q0=None):
         c_cn=lat.c_cn,
         c_dn=lat.c_dn,
         kk=kk,
-        mu_cn=a1 * lat.c_cn * cols[0],
-        mu_sn=s * a2 * lat.c_sn * cols[1],
-        mu_dn=a3 * lat.c_dn * cols[2],
+        mu_cn=mu_cn * cols[0],
+        mu_sn=mu_sn * cols[1],
+        mu_dn=mu_dn * cols[2],
         s=s,
         nu_psi=frequency(*nu_psi),
         wa=wa,
@@ -210,8 +212,8 @@ def triaxial(frame: PolhodeFrame, q0=None):
         psi0=np.zeros_like(s),
         quat_u=np.zeros((4, s.size)),
         quat_v=np.zeros((4, s.size)),
-        v_sn=s * a2 * cols[0],
-        v_cn=-a1 * cols[1],
+        v_sn=v_sn * cols[0],
+        v_cn=v_cn * cols[1],
         G=G,
         a3=a3,
         period=period,

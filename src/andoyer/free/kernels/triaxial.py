@@ -22,6 +22,7 @@ __all__ = [
     "amplitudes",
     "initial_phase",
     "modulus",
+    "momentum_coefficients",
     "pole_offset",
     "polhode_frequency",
     "polhode_scales",
@@ -84,6 +85,34 @@ def amplitudes(e13, e23, P1, P3):
     [2.0, 1.0, 3.0]
     """
     return np.sqrt(P1 / e13), np.sqrt(P1 / e23), np.sqrt(P3 / e13)
+
+
+@jitable
+def momentum_coefficients(amp, s, c_sn, c_cn, c_dn):
+    """Working-frame coefficients of ``m`` in theta quotients and of the shortest-arc factor.
+
+    ``m = (μ_cn ϑ_cn + μ_sn ϑ_sn + μ_dn ϑ_dn)/ϑ₄`` with ``μ_cn = a₁c_cn e₁``, ``μ_sn =
+    s a₂ c_sn e₂``, ``μ_dn = a₃ c_dn e₃``, and the vector part of the shortest arc is
+    ``v_sn sn τ + v_cn cn τ`` with ``v_sn = s a₂ e₁``, ``v_cn = −a₁ e₂`` (``e_j`` the working
+    axes; each path places these magnitudes along its axes).
+
+    Parameters
+    ----------
+    amp : tuple
+        ``(a₁, a₂, a₃)`` of :func:`amplitudes`.
+    s, c_sn, c_cn, c_dn : float or ndarray, shape (...)
+        ``±1`` and :func:`andoyer.special.theta.quotient_constants`.
+
+    Returns
+    -------
+    mu_cn, mu_sn, mu_dn, v_sn, v_cn : float or ndarray, shape (...)
+
+    Examples
+    --------
+    >>> momentum_coefficients((1.0, 2.0, 3.0), -1.0, 1.0, 1.0, 1.0)
+    (1.0, -2.0, 3.0, -2.0, -1.0)
+    """
+    return amp[0] * c_cn, s * amp[1] * c_sn, amp[2] * c_dn, s * amp[1], -amp[0]
 
 
 @jitable
