@@ -133,10 +133,10 @@ def quotient_constants(q, circular):
     t2 = 1.0 + q2 * (1.0 + q4 * (1.0 + q2 * q4))  # 1 + q² + q⁶ + q¹²
     th3 = 1.0 + 2.0 * (q + q4 + q9)
     th4 = 1.0 - 2.0 * (q - q4 + q9)
-    c_sn = select(circular, th3 / t2, th3 / th4)
-    c_cn = select(circular, th4 / t2, 2.0 * t2 / th4)
-    c_dn = select(circular, th4 / th3, 2.0 * t2 / th3)
-    return c_sn, c_cn, c_dn
+    # choose the operands, then divide: three divisions, not six
+    den = select(circular, t2, th4)
+    num = select(circular, th4, 2.0 * t2)
+    return th3 / den, num / den, num / th3
 
 
 def lattice(m, mc, mc_lo=0.0):
