@@ -3,9 +3,12 @@
 :func:`andoyer.free.triaxial.triaxial` forms the constants of many bodies with numpy:
 a few hundred passes over the arrays, most of them double-double arithmetic (the working
 frame and invariants of :func:`andoyer.free.regime.polhode_frame`, ``K`` and ``Π`` by the
-AGM, the frequencies), 6–10 µs a body.  Here the same formulas in the same double-double
-arithmetic (:mod:`andoyer.free.scalar_dd`: error-free products by fused multiply-add,
-one-correction division) run per body in a numba kernel, about 1 µs a body: ``K`` is
+AGM, the frequencies), 6–10 µs a body.  Here the same formulas run per body in a numba
+kernel, about 1 µs a body: most of them are the very kernels the numpy set-up calls
+(:mod:`andoyer.free.kernels.triaxial`, :func:`andoyer.special.theta.quotient_constants`),
+run on floats in the double-double arithmetic of :mod:`andoyer.free.scalar_dd` (error-free
+products by fused multiply-add, one-correction division); the working frame and its
+invariants, ``K'`` and the attitude anchor are still written here for one body.  ``K`` is
 taken from the AGM sequence of ``Π`` (the same sequence), ``K'`` from the nome, the ``ψ``
 offset from the series at ``τ₀`` directly, and without an attitude the quantities only
 the attitude needs (``Π``, the ``ϑ₁`` series) can be skipped.  The constants agree with
