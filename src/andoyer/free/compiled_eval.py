@@ -7,7 +7,8 @@ polynomial ``sin``/``cos`` of the reduced phases, Chebyshev multiples, the theta
 at a time and looped over a block of states × epochs: no array temporaries, the circular
 and hyperbolic series chosen per state, the number of series terms per state (terms
 below 1e-18 dropped, as there).  The constants are the table of
-:func:`andoyer.free.compiled_setup.triaxial_table`.
+:func:`andoyer.free.compiled_setup.triaxial_table`, its columns named in
+:mod:`andoyer.free.table`.
 """
 
 from __future__ import annotations
@@ -19,6 +20,32 @@ import numpy as np
 from andoyer._jit import jit, jitable
 from andoyer._quaternion import product
 from andoyer.free.phase import _COS, _SIN
+from andoyer.free.table import (
+    A3,
+    C_CN,
+    C_DN,
+    C_SN,
+    CIRCULAR,
+    FRAC0,
+    HI,
+    KK,
+    LO,
+    MU_CN,
+    MU_DN,
+    MU_SN,
+    NU,
+    NU_PSI,
+    PSI0,
+    QUAT_U,
+    QUAT_V,
+    SLOPE,
+    V_CN,
+    V_SN,
+    WA,
+    WB,
+    G,
+    Q,
+)
 from andoyer.special.compensated import two_prod
 
 __all__ = ["evaluate", "fill"]
@@ -39,10 +66,10 @@ def _count(powers):
 
 
 @jit
-def _cycles(c, r, row, t):
-    """``offset + ν t`` reduced to ``[-1/2, 1/2]`` cycles, ``ν`` the double-double at ``row``."""
-    p, e = two_prod(c[r, row], t)
-    e += c[r, row + 1] * t
+def _cycles(c, r, col, t):
+    """``ν t`` reduced to ``[-1/2, 1/2]`` cycles, ``ν`` the double-double at column ``col``."""
+    p, e = two_prod(c[r, col + HI], t)
+    e += c[r, col + LO] * t
     f = p - np.rint(p)
     return f + e
 
@@ -67,7 +94,7 @@ def _circular(c, r, f, out_m):
     All terms up to ``q¹⁶`` (``< 10⁻²¹`` at ``k² = 1/2``) and three of ``ϑ₁``, unrolled:
     those the numpy kernel drops below 1e-18 change nothing at double precision.
     """
-    q = c[r, 6]
+    q = c[r, Q]
     s1, c1 = _sincos(f)
     q2 = q * q
     q4 = q2 * q2
@@ -89,10 +116,10 @@ def _circular(c, r, f, out_m):
     inv = 1.0 / (1.0 + 2.0 * (even - odd))
     th3 = 1.0 + 2.0 * (even + odd)
     for k in range(3):
-        out_m[k] = inv * (c[r, 11 + k] * num_c + c[r, 14 + k] * num_s + c[r, 17 + k] * th3)
-    x = c[r, 25] * s1 + c[r, 26] * s3 + c[r, 27] * s5
-    y = c[r, 31] * c1 + c[r, 32] * c3 + c[r, 33] * c5
-    return c[r, 7] * inv * num_s, c[r, 8] * inv * num_c, c[r, 9] * inv * th3, f, x, y
+        out_m[k] = inv * (c[r, MU_CN + k] * num_c + c[r, MU_SN + k] * num_s + c[r, MU_DN + k] * th3)
+    x = c[r, WA] * s1 + c[r, WA + 1] * s3 + c[r, WA + 2] * s5
+    y = c[r, WB] * c1 + c[r, WB + 1] * c3 + c[r, WB + 2] * c5
+    return c[r, C_SN] * inv * num_s, c[r, C_CN] * inv * num_c, c[r, C_DN] * inv * th3, f, x, y
 
 
 @jit
@@ -103,10 +130,10 @@ def _hyperbolic(c, r, f, out_m, attitude):
     bounded), unrolled; the ``ϑ₁`` series grows like ``e^{2ny}`` and is cut where its
     coefficients ``q*^{n²+n}`` fall below 1e-18, as in the numpy kernel.
     """
-    q = c[r, 6]
+    q = c[r, Q]
     j = np.rint(2.0 * f)
     fw = f - 0.5 * j
-    zi = math.exp(-c[r, 10] * abs(fw))
+    zi = math.exp(-c[r, KK] * abs(fw))
     rho = zi * zi
     z = q / rho
     q2 = q * q
@@ -132,52 +159,52 @@ def _hyperbolic(c, r, f, out_m, attitude):
     t4 *= sgn * inv * zi
     t3 *= inv * zi
     for k in range(3):
-        out_m[k] = c[r, 11 + k] * t4 + c[r, 14 + k] * sh + c[r, 17 + k] * t3
+        out_m[k] = c[r, MU_CN + k] * t4 + c[r, MU_SN + k] * sh + c[r, MU_DN + k] * t3
     if not attitude:
         return 0.0, 0.0, 0.0, fw, 0.0, 0.0
     n_w = _count((1.0, q, q3, q6, q10, q12 * q3))  # q*^{n² + n}, q* = √q
     up, down = 1.0, zi
-    x = c[r, 25] * (1.0 + zi)
-    y = c[r, 31] * (1.0 - zi)
+    x = c[r, WA] * (1.0 + zi)
+    y = c[r, WB] * (1.0 - zi)
     for n in range(1, n_w):
         up /= zi
         down *= zi
-        x += c[r, 25 + n] * (up + down)
-        y += c[r, 31 + n] * (up - down)
-    return c[r, 7] * sh, c[r, 8] * t4, c[r, 9] * t3, fw, x, -y if fw < 0 else y
+        x += c[r, WA + n] * (up + down)
+        y += c[r, WB + n] * (up - down)
+    return c[r, C_SN] * sh, c[r, C_CN] * t4, c[r, C_DN] * t3, fw, x, -y if fw < 0 else y
 
 
 @jit
 def _state(c, r, t, out_m, out_q, attitude):
-    """Momentum (and attitude) of the state in column ``r`` at the scaled time ``t``."""
-    f = _cycles(c, r, 1, t) + c[r, 5]
+    """Momentum (and attitude) of the state in row ``r`` at the scaled time ``t``."""
+    f = _cycles(c, r, NU, t) + c[r, FRAC0]
     f -= np.rint(f)
-    if c[r, 0] > 0:
+    if c[r, CIRCULAR] > 0:
         sn, cn, dn, f_lin, x, y = _circular(c, r, f, out_m)
     else:
         sn, cn, dn, f_lin, x, y = _hyperbolic(c, r, f, out_m, attitude)
     if not attitude:
         return
-    g = _cycles(c, r, 21, t) + c[r, 38]
-    g = 0.5 * (g - np.rint(g)) + c[r, 37] * f_lin
+    g = _cycles(c, r, NU_PSI, t) + c[r, PSI0]
+    g = 0.5 * (g - np.rint(g)) + c[r, SLOPE] * f_lin
     g -= np.rint(g)
     sb, cb = _sincos(g)
     inv = 1.0 / math.sqrt(x * x + y * y)
     x *= inv
     y *= inv
     cz, sz = cb * x - sb * y, cb * y + sb * x
-    G = c[r, 53]
-    w = c[r, 54] * dn + G
-    inv = 1.0 / math.sqrt(2.0 * G * w)
+    m_norm = c[r, G]
+    w = c[r, A3] * dn + m_norm
+    inv = 1.0 / math.sqrt(2.0 * m_norm * w)
     xa, xb = sn * inv, cn * inv
-    bx = c[r, 47] * xa + c[r, 50] * xb
-    by = c[r, 48] * xa + c[r, 51] * xb
-    bz = c[r, 49] * xa + c[r, 52] * xb
+    bx = c[r, V_SN] * xa + c[r, V_CN] * xb
+    by = c[r, V_SN + 1] * xa + c[r, V_CN + 1] * xb
+    bz = c[r, V_SN + 2] * xa + c[r, V_CN + 2] * xb
     bw = w * inv
-    ax = c[r, 39] * cz + c[r, 43] * sz
-    ay = c[r, 40] * cz + c[r, 44] * sz
-    az = c[r, 41] * cz + c[r, 45] * sz
-    aw = c[r, 42] * cz + c[r, 46] * sz
+    ax = c[r, QUAT_U] * cz + c[r, QUAT_V] * sz
+    ay = c[r, QUAT_U + 1] * cz + c[r, QUAT_V + 1] * sz
+    az = c[r, QUAT_U + 2] * cz + c[r, QUAT_V + 2] * sz
+    aw = c[r, QUAT_U + 3] * cz + c[r, QUAT_V + 3] * sz
     out_q[0], out_q[1], out_q[2], out_q[3] = product(ax, ay, az, aw, bx, by, bz, bw)
 
 
@@ -221,7 +248,7 @@ def fill(c, pos, rows, t, scale, outs):
 
     Parameters
     ----------
-    c : ndarray, shape (N, 58)
+    c : ndarray, shape (N, NCOLUMNS)
         The table of :func:`andoyer.free.compiled_setup.triaxial_table`.
     pos, rows : ndarray of int, shape (r,)
         Rows of ``c`` and the output rows they fill.
@@ -266,7 +293,7 @@ def evaluate(c, rows, t, attitude=True):
 
     Parameters
     ----------
-    c : ndarray, shape (N, 58)
+    c : ndarray, shape (N, NCOLUMNS)
         The table of :func:`andoyer.free.compiled_setup.triaxial_table`.
     rows : ndarray of int, shape (r,)
         The states to evaluate (rows of ``c``).

@@ -3,14 +3,18 @@
 :func:`andoyer.free.triaxial.triaxial` forms the constants of many bodies with numpy:
 a few hundred passes over the arrays, most of them double-double arithmetic (the working
 frame and invariants of :func:`andoyer.free.regime.polhode_frame`, ``K`` and ``Π`` by the
-AGM, the frequencies), 6–10 µs a body.  Here the same formulas in the same double-double
-arithmetic (:mod:`andoyer.special.compensated`: error-free products by fused multiply-add,
-one-correction division) run per body in a numba kernel, about 1 µs a body: ``K`` is
+AGM, the frequencies), 6–10 µs a body.  Here the same formulas run per body in a numba
+kernel, about 1 µs a body: most of them are the very kernels the numpy set-up calls
+(:mod:`andoyer.free.kernels.triaxial`, :func:`andoyer.special.theta.quotient_constants`),
+run on floats in the double-double arithmetic of :mod:`andoyer.special.compensated` (error-free
+products by fused multiply-add, one-correction division); the working frame and its
+invariants, ``K'`` and the attitude anchor are still written here for one body.  ``K`` is
 taken from the AGM sequence of ``Π`` (the same sequence), ``K'`` from the nome, the ``ψ``
 offset from the series at ``τ₀`` directly, and without an attitude the quantities only
 the attitude needs (``Π``, the ``ϑ₁`` series) can be skipped.  The constants agree with
 the numpy ones to a few ulps (``tests/free/test_free_compiled.py``); they are stored one
-row per body, as :mod:`andoyer.free.compiled_eval` reads them.
+row per body, as :mod:`andoyer.free.compiled_eval` reads them, in the columns named by
+:mod:`andoyer.free.table`.
 :class:`andoyer.free.FreeMotion` uses both when numba is installed
 (:data:`andoyer._jit.NUMBA`).
 """
@@ -24,19 +28,64 @@ import numpy as np
 from andoyer._jit import jit, jitable
 from andoyer._quaternion import product
 from andoyer.free.compiled_eval import _count
-from andoyer.free.kernels.elliptic import carlson_rf
+from andoyer.free.kernels.triaxial import (
+    amplitudes,
+    initial_phase,
+    modulus,
+    momentum_coefficients,
+    pole_offset,
+    polhode_frequency,
+    polhode_scales,
+    psi_constants,
+    secular_rate,
+    theta_circular,
+    theta_hyperbolic,
+)
 from andoyer.free.phase import Frequency
+from andoyer.free.table import (
+    A3,
+    C_CN,
+    C_DN,
+    C_SN,
+    CIRCULAR,
+    FLAT,
+    FRAC0,
+    HH,
+    HI,
+    HL,
+    KK,
+    LO,
+    MU_CN,
+    MU_DN,
+    MU_SN,
+    NCOLUMNS,
+    NU,
+    NU_PSI,
+    NWA,
+    PERIOD,
+    PRECESSION_RATE,
+    PSI0,
+    QUAT_U,
+    QUAT_V,
+    SLOPE,
+    V_CN,
+    V_SN,
+    WA,
+    WB,
+    G,
+    Q,
+    S,
+)
 from andoyer.free.triaxial import Triaxial
 from andoyer.special.agm import ellipk_dd, ellippi_k_dd
 from andoyer.special.compensated import dd_add, dd_div, dd_mul, dd_sqrt, split, two_prod, two_sum
+from andoyer.special.theta import nome, quotient_constants
 
 __all__ = ["as_triaxial", "triaxial_table"]
 
 # the one Hamilton product, compiled inline into the kernels below
 jitable(product)
 
-_PI_HI, _PI_LO = 3.141592653589793, 1.2246467991473532e-16
-_ROWS = 58  # rows of the output table, laid out in triaxial_table
 
 
 @jit
@@ -44,14 +93,6 @@ def _inv_diff(s, Ii, Ij):
     dh, dl = two_sum(Ij, -Ii)
     ph, pl = two_prod(Ii, Ij)
     return dd_div(s * dh, s * dl, ph, pl)
-
-
-@jit
-def _nome(p, pc):
-    kc = math.sqrt(pc)
-    eps = p / (2.0 * (1.0 + kc) * (1.0 + math.sqrt(kc)) ** 2)
-    e4 = eps**4
-    return eps * (1.0 + e4 * (2.0 + e4 * (15.0 + e4 * (150.0 + e4 * (1707.0 + e4 * 20910.0)))))
 
 
 @jit
@@ -124,7 +165,7 @@ def _psi_offset(circ, f0, q, wa, wb, kk, slope):
 
 @jit
 def _body(Ib, mb, lam, q0, out, i, full):
-    """Constants of body ``i`` into column ``i`` of ``out`` (see :func:`triaxial_table`)."""
+    """Constants of body ``i`` into row ``i`` of ``out`` (columns: :mod:`andoyer.free.table`)."""
     # working frame: axis 3 the polhode axis (C for SAM, A for LAM), axis 2 the middle one
     o0, o1, o2 = 0, 1, 2  # stable sort of three moments
     if Ib[o1] < Ib[o0]:
@@ -148,7 +189,7 @@ def _body(Ib, mb, lam, q0, out, i, full):
     x1h, x1l = two_prod(mw[1], mw[1])
     x2h, x2l = two_prod(mw[2], mw[2])
     P1h, P1l = dd_add(*dd_mul(x0h, x0l, e13h, e13l), *dd_mul(x1h, x1l, e23h, e23l))
-    out[i, 57] = 1.0 if P1h == 0.0 else 0.0
+    out[i, FLAT] = 1.0 if P1h == 0.0 else 0.0
     if P1h == 0.0:  # a steady spin: FreeMotion routes it elsewhere
         return
     P3h, P3l = dd_add(*dd_mul(x1h, x1l, e12h, e12l), *dd_mul(x2h, x2l, e13h, e13l))
@@ -156,11 +197,11 @@ def _body(Ib, mb, lam, q0, out, i, full):
     P2h, P2l = dd_add(*dd_mul(x2h, x2l, e23h, e23l), -th, -tl)
     Gh, Gl = dd_sqrt(*dd_add(*dd_add(x0h, x0l, x1h, x1l), x2h, x2l))
     w3h, w3l = dd_div(1.0, 0.0, I3, 0.0)
-    # amplitudes, modulus, K, Π (andoyer.free.triaxial)
-    a1, a2, a3 = math.sqrt(P1h / e13h), math.sqrt(P1h / e23h), math.sqrt(P3h / e13h)
-    dnh, dnl = dd_mul(e23h, e23l, P3h, P3l)
-    m = dd_div(*dd_mul(e12h, e12l, P1h, P1l), dnh, dnl)[0]
-    mch, mcl = dd_div(*dd_mul(e13h, e13l, P2h, P2l), dnh, dnl)
+    # amplitudes, modulus, K, Π (the kernels of andoyer.free.kernels.triaxial)
+    e12, e13, e23 = (e12h, e12l), (e13h, e13l), (e23h, e23l)
+    P1, P3 = (P1h, P1l), (P3h, P3l)
+    a1, a2, a3 = amplitudes(e13h, e23h, P1h, P3h)
+    m, (mch, mcl), omega2 = modulus(e12, e13, e23, P1, (P2h, P2l), P3)
     if full:  # Π(−κ²|m) for the secular rate of ψ, and K from the same AGM
         k2h, k2l = dd_div(e12h, e12l, e23h, e23l)
         p3h, p3l, Kh, Kl = ellippi_k_dd(-k2h, -k2l, mch, mcl)
@@ -168,92 +209,62 @@ def _body(Ib, mb, lam, q0, out, i, full):
         p3h = p3l = 0.0
         Kh, Kl = ellipk_dd(mch, mcl)
     circ = m <= 0.5
-    q = _nome(min(m, 0.5), max(mch, 0.5)) if circ else _nome(min(mch, 0.5), max(m, 0.5))
+    q = nome(min(m, 0.5), max(mch, 0.5)) if circ else nome(min(mch, 0.5), max(m, 0.5))
     # K' from the nome q = exp(−πK'/K) (circular) or q' = exp(−πK/K') (hyperbolic), no
     # second AGM: K' enters only reduced phases
     if circ:
         Kp = -Kh * math.log(q) / math.pi
     else:  # (K' = K(m') → π/2 (1 + m'/4) where q' would underflow)
         Kp = -math.pi * Kh / math.log(q) if q > 1e-300 else 0.5 * math.pi * (1.0 + 0.25 * mch)
-    q2 = q * q
-    q4 = q2 * q2
-    q9 = q4 * q4 * q
-    t2 = 1.0 + q2 * (1.0 + q4 * (1.0 + q2 * q4))
-    th3 = 1.0 + 2.0 * (q + q4 + q9)
-    th4 = 1.0 - 2.0 * (q - q4 + q9)
-    c_sn = th3 / t2 if circ else th3 / th4
-    c_cn = th4 / t2 if circ else 2.0 * t2 / th4
-    c_dn = th4 / th3 if circ else 2.0 * t2 / th3
-    nuh, nul = dd_div(*dd_sqrt(dnh, dnl), 4.0 * Kh, 4.0 * Kl)
-    # initial phase τ₀ = F(am τ₀ | m) from the measured cn, sn, dn
-    cn0, sn0, dn0 = mw[0] / a1, mw[1] / (s * a2), mw[2] / a3
-    rf = carlson_rf(cn0 * cn0, dn0 * dn0, 1.0)
-    tau0 = sn0 * rf if cn0 >= 0 else math.copysign(2.0 * Kh, sn0) - sn0 * rf
-    kk = 2.0 * math.pi * Kh / Kp
-    period = 1.0 / nuh
-    frac0 = tau0 / (4.0 * Kh)
+    c_sn, c_cn, c_dn = quotient_constants(q, circ)
+    nuh, nul = polhode_frequency(omega2, (Kh, Kl))
+    frac0 = initial_phase(mw[0], mw[1], mw[2], (a1, a2, a3), s, Kh)
+    period, kk = polhode_scales(nuh, Kh, Kp)
     nhh, nhl = split(nuh)
-    row = (1.0 if circ else 0.0, nuh, nul, nhh, nhl, frac0, q, c_sn, c_cn, c_dn, kk)
-    for r in range(11):
-        out[i, r] = row[r]
+    out[i, CIRCULAR] = 1.0 if circ else 0.0
+    out[i, NU + HI] = nuh
+    out[i, NU + LO] = nul
+    out[i, NU + HH] = nhh
+    out[i, NU + HL] = nhl
+    out[i, FRAC0] = frac0
+    out[i, Q] = q
+    out[i, C_SN] = c_sn
+    out[i, C_CN] = c_cn
+    out[i, C_DN] = c_dn
+    out[i, KK] = kk
     # working axis j is sign[j] times body axis perm[j]
-    out[i, 11 + perm[0]] = a1 * c_cn
-    out[i, 14 + perm[1]] = s * a2 * c_sn * sign[1]
-    out[i, 17 + perm[2]] = a3 * c_dn * s3
-    out[i, 47 + perm[0]] = s * a2
-    out[i, 50 + perm[1]] = -a1 * sign[1]
-    out[i, 53] = Gh
-    out[i, 54] = a3
-    out[i, 55] = period
-    out[i, 20] = s
+    mu_cn, mu_sn, mu_dn, v_sn, v_cn = momentum_coefficients((a1, a2, a3), s, c_sn, c_cn, c_dn)
+    out[i, MU_CN + perm[0]] = mu_cn
+    out[i, MU_SN + perm[1]] = mu_sn * sign[1]
+    out[i, MU_DN + perm[2]] = mu_dn * s3
+    out[i, V_SN + perm[0]] = v_sn
+    out[i, V_CN + perm[1]] = v_cn * sign[1]
+    out[i, G] = Gh
+    out[i, A3] = a3
+    out[i, PERIOD] = period
+    out[i, S] = s
     if not full:
-        out[i, 56] = math.nan  # the precession rate needs Π
+        out[i, PRECESSION_RATE] = math.nan  # the precession rate needs Π
         return
-    kappa2 = e12h / e23h
-    v1 = carlson_rf(kappa2, kappa2 + m, 1.0 + kappa2)
-    wa = out[i, 25:31]  # views into the table: no allocation per body
-    wb = out[i, 31:37]
+    v1 = pole_offset(e12h / e23h, m)
+    wa = out[i, WA : WA + NWA]  # views into the table: no allocation per body
+    wb = out[i, WB : WB + NWA]
     if circ:
-        eta = math.exp(-math.pi * v1 / Kh)
-        head, tail = 1.0, q2 / eta  # q^{2n²} ηⁿ and q^{2(n+1)²} η^{−n−1}
-        up, down = q2, q2 * q2 * q2  # their ratios q^{2(2n+1)}, q^{2(2n+3)} (but η)
-        for n in range(3):
-            sgn = 1.0 - 2.0 * (n % 2)
-            wa[n] = sgn * (head + tail)
-            wb[n] = sgn * (head - tail) * s
-            head *= up * eta
-            tail *= down / eta
-            up *= q2 * q2
-            down *= q2 * q2
+        theta_circular(q, v1, Kh, s, wa, wb)
     else:
-        ang = -0.5 * math.pi + 0.25 * math.pi * v1 / Kp
-        sn, cs = math.sin(ang), math.cos(ang)
-        s2, c2 = 2.0 * sn * cs, (cs - sn) * (cs + sn)
-        amp, step = 1.0, 1.0  # (−1)ⁿ q*^{n² + n}; ratio q*^{2n+2} = q^{n+1}
-        for n in range(6):  # (−1)ⁿ q*^{n²+n} times sin, cos((2n+1)a), by turns of 2a
-            wa[n] = amp * sn
-            wb[n] = amp * cs * s
-            sn, cs = sn * c2 + cs * s2, cs * c2 - sn * s2
-            step *= q
-            amp *= -step
-    # secular rate of ψ (andoyer.free.triaxial._secular_rate)
-    ch, cl = dd_div(*dd_sqrt(*dd_div(P3h, P3l, e13h, e13l)), Gh, Gl)
-    rh, rl = dd_sqrt(*dd_div(e23h, e23l, e13h, e13l))
-    th, tl = dd_mul(*dd_mul(ch, cl, rh, rl), 0.5 * _PI_HI, 0.5 * _PI_LO)
-    bh, bl = dd_add(p3h, p3l, -th, -tl)
-    crh, crl = dd_div(*dd_mul(*dd_mul(Gh, Gl, e13h, e13l), bh, bl), Kh, Kl)
-    rate_h, rate_l = dd_add(*dd_mul(Gh, Gl, w3h, w3l), s * crh, s * crl)
-    psh, psl = dd_div(rate_h, rate_l, 2.0 * _PI_HI, 2.0 * _PI_LO)
-    slope = s if circ else s * 0.5 * v1 / Kp
+        theta_hyperbolic(q, v1, Kp, s, wa, wb)
+    rate, (psh, psl) = secular_rate(e13, e23, P3, (Gh, Gl), (w3h, w3l), s, (p3h, p3l), (Kh, Kl))
+    slope, precession_rate = psi_constants(circ, s, Kp, v1, rate[0], period)
     phh, phl = split(psh)
-    row4 = (psh, psl, phh, phl)
-    for r in range(4):
-        out[i, 21 + r] = row4[r]
-    out[i, 37] = slope
-    out[i, 56] = rate_h + 2.0 * math.pi * s / period
+    out[i, NU_PSI + HI] = psh
+    out[i, NU_PSI + LO] = psl
+    out[i, NU_PSI + HH] = phh
+    out[i, NU_PSI + HL] = phl
+    out[i, SLOPE] = slope
+    out[i, PRECESSION_RATE] = precession_rate
     if q0.shape[0] == 0:
         return
-    out[i, 38] = _psi_offset(circ, frac0, q, wa, wb, kk, slope)
+    out[i, PSI0] = _psi_offset(circ, frac0, q, wa, wb, kk, slope)
     # U = Q₀ ⊗ P, V = Q₀ ⊗ e_z ⊗ P (andoyer.free.regime.attitude_anchor)
     pq = _perm_quat(perm, sign)
     q_rw = product(q0[i, 0], q0[i, 1], q0[i, 2], q0[i, 3], -pq[0], -pq[1], -pq[2], pq[3])
@@ -263,8 +274,8 @@ def _body(Ib, mb, lam, q0, out, i, full):
     U = product(*q_0, *pq)
     V = product(*product(*q_0, 0.0, 0.0, 1.0, 0.0), *pq)
     for k in range(4):
-        out[i, 39 + k] = U[k]
-        out[i, 43 + k] = V[k]
+        out[i, QUAT_U + k] = U[k]
+        out[i, QUAT_V + k] = V[k]
 
 
 @jit
@@ -293,13 +304,10 @@ def triaxial_table(moments, m0, lam, q0=None, rate=True):
 
     Returns
     -------
-    table : ndarray, shape (M, 58)
+    table : ndarray, shape (M, NCOLUMNS)
         One row per state that is not a steady spin (the constants of a state lie
-        together in memory, as the compiled evaluation reads them); columns: ``circular`` (1 or 0),
-        ``nu`` (hi, lo, hh, hl), ``frac0``, ``q``, ``c_sn``, ``c_cn``, ``c_dn``, ``kk``,
-        ``mu_cn``, ``mu_sn``, ``mu_dn`` (3 each), ``s``, ``nu_psi`` (4), ``wa``, ``wb``
-        (6 each), ``slope``, ``psi0``, ``quat_u``, ``quat_v`` (4 each), ``v_sn``, ``v_cn``
-        (3 each), ``G``, ``a3``, ``period``, ``precession_rate``, and a last column of zeros.
+        together in memory, as the compiled evaluation reads them); the columns are named
+        in :mod:`andoyer.free.table` (``FLAT`` is zero in every row kept).
     flat : ndarray of bool, shape (N,)
         States whose wobble ``P₁`` underflows to zero: steady spins about the polhode
         axis, which have no column.
@@ -308,11 +316,11 @@ def triaxial_table(moments, m0, lam, q0=None, rate=True):
     --------
     >>> table, flat = triaxial_table(np.array([[0.25, 0.5, 0.75]]), np.array([[0.3, 0.2, 1.0]]),
     ...                              np.array([False]))
-    >>> table.shape, round(float(table[0, 55]) * 4, 10), flat.tolist()  # time scales as I
+    >>> table.shape, round(float(table[0, PERIOD]) * 4, 10), flat.tolist()  # time scales as I
     ((1, 58), 20.2049347381, [False])
     """
     n = moments.shape[0]
-    out = np.zeros((n, _ROWS))
+    out = np.zeros((n, NCOLUMNS))
     q = np.zeros((0, 4)) if q0 is None else np.ascontiguousarray(q0, dtype=np.float64)
     _all(
         np.ascontiguousarray(moments, dtype=np.float64),
@@ -322,7 +330,7 @@ def triaxial_table(moments, m0, lam, q0=None, rate=True):
         out,
         bool(rate or q0 is not None),
     )
-    flat = out[:, 57] > 0
+    flat = out[:, FLAT] > 0
     if np.any(flat):
         out = out[~flat]
     return out, flat
@@ -333,7 +341,8 @@ def as_triaxial(table):
 
     Parameters
     ----------
-    table : ndarray, shape (N, 58)
+    table : ndarray, shape (N, NCOLUMNS)
+        A table of :func:`triaxial_table` (columns: :mod:`andoyer.free.table`).
 
     Returns
     -------
@@ -347,31 +356,32 @@ def as_triaxial(table):
     (3, 1)
     """
     out = table.T
-    freq = lambda r: Frequency(out[r], out[r + 1], out[r + 2], out[r + 3])  # noqa: E731
+    freq = lambda r: Frequency(out[r + HI], out[r + LO], out[r + HH], out[r + HL])  # noqa: E731
+    vec = lambda r, n=3: out[r : r + n]  # noqa: E731
     return Triaxial(
-        circular=out[0] > 0,
-        nu=freq(1),
-        frac0=out[5],
-        q=out[6],
-        c_sn=out[7],
-        c_cn=out[8],
-        c_dn=out[9],
-        kk=out[10],
-        mu_cn=out[11:14],
-        mu_sn=out[14:17],
-        mu_dn=out[17:20],
-        s=out[20],
-        nu_psi=freq(21),
-        wa=out[25:31],
-        wb=out[31:37],
-        slope=out[37],
-        psi0=out[38],
-        quat_u=out[39:43],
-        quat_v=out[43:47],
-        v_sn=out[47:50],
-        v_cn=out[50:53],
-        G=out[53],
-        a3=out[54],
-        period=out[55],
-        precession_rate=out[56],
+        circular=out[CIRCULAR] > 0,
+        nu=freq(NU),
+        frac0=out[FRAC0],
+        q=out[Q],
+        c_sn=out[C_SN],
+        c_cn=out[C_CN],
+        c_dn=out[C_DN],
+        kk=out[KK],
+        mu_cn=vec(MU_CN),
+        mu_sn=vec(MU_SN),
+        mu_dn=vec(MU_DN),
+        s=out[S],
+        nu_psi=freq(NU_PSI),
+        wa=vec(WA, NWA),
+        wb=vec(WB, NWA),
+        slope=out[SLOPE],
+        psi0=out[PSI0],
+        quat_u=vec(QUAT_U, 4),
+        quat_v=vec(QUAT_V, 4),
+        v_sn=vec(V_SN),
+        v_cn=vec(V_CN),
+        G=out[G],
+        a3=out[A3],
+        period=out[PERIOD],
+        precession_rate=out[PRECESSION_RATE],
     )

@@ -50,6 +50,7 @@ from andoyer.free.blocks import Group, evaluate_blocks
 from andoyer.free.compiled_regime import classify_and_scale
 from andoyer.free.compiled_setup import as_triaxial, triaxial_table
 from andoyer.free.regime import normalise, polhode_frame
+from andoyer.free.table import PRECESSION_RATE
 from andoyer.regime import Regime, check_inputs, regime_codes
 
 __all__ = ["FreeMotion", "FreePeriods", "attitude", "momentum", "periods", "propagate"]
@@ -239,7 +240,7 @@ class FreeMotion:
             period, rate, tshift = self._scaled_periods
             if self._pending is not None:
                 idx, args = self._pending
-                rate[idx] = triaxial_table(*args, rate=True)[0][:, 56]
+                rate[idx] = triaxial_table(*args, rate=True)[0][:, PRECESSION_RATE]
                 self._pending = None
             period = np.ldexp(period, -tshift)
             rate = np.ldexp(rate, tshift)

@@ -41,6 +41,7 @@ from andoyer.free.compiled_eval import _sincos
 from andoyer.free.compiled_setup import as_triaxial
 from andoyer.free.kernels.piecewise import DEGREE, horner, locate
 from andoyer.free.phase import cycles, frequency, sincos_cycles
+from andoyer.free.table import FRAC0, NU, NU_PSI, PSI0
 from andoyer.special.compensated import two_prod
 
 __all__ = ["DEGREE", "MAX_PIECES", "Periodic", "build", "evaluate", "fill", "fill_numpy"]
@@ -105,10 +106,10 @@ def _node_group(group, g0):
     const = group.const
     if group.kernel is _ceval.evaluate:
         table = np.array(const, copy=True)
-        table[:, 1:5] = (1.0, 0.0, 1.0, 0.0)
-        table[:, 5] = 0.0
-        table[:, 21:25] = 0.0
-        table[:, 38] = g0
+        table[:, NU : NU + 4] = (1.0, 0.0, 1.0, 0.0)  # hi, lo, hh, hl
+        table[:, FRAC0] = 0.0
+        table[:, NU_PSI : NU_PSI + 4] = 0.0
+        table[:, PSI0] = g0
         const = table
     else:
         one = np.ones_like(const.frac0)

@@ -38,8 +38,8 @@ integral of the third kind of the classical solution,
 (the characteristic of Sadov's ``Π(κ², λ)``, Gurfil eq. 143, in the other sign
 convention), by a few series terms per epoch, and avoids its cancellation near pure spin.
 The secular rate needs the complete ``Π(−κ²|m)``: it is taken from the AGM in
-double-double arithmetic (:func:`_secular_rate`), because ``Ω_ψ t`` reaches 10⁶ rad at
-100 periods of a fast spinner.
+double-double arithmetic (:func:`andoyer.free.kernels.triaxial.secular_rate`), because
+``Ω_ψ t`` reaches 10⁶ rad at 100 periods of a fast spinner.
 
 Numbers are carried so that the phase stays exact over long times: the polhode frequency
 ``ω/4K`` and ``Ω_ψ/2π`` are double-doubles (``K`` from the AGM on ``1 − k²`` formed without
@@ -51,20 +51,29 @@ from __future__ import annotations
 from typing import NamedTuple
 
 import numpy as np
-from scipy import special as sc
 
 from andoyer.free import series
 from andoyer.free.constants import rows
+from andoyer.free.kernels.triaxial import (
+    amplitudes,
+    initial_phase,
+    modulus,
+    momentum_coefficients,
+    pole_offset,
+    polhode_frequency,
+    polhode_scales,
+    psi_constants,
+    secular_rate,
+    theta_circular,
+    theta_hyperbolic,
+)
 from andoyer.free.phase import Frequency, frequency
 from andoyer.free.regime import PolhodeFrame, attitude_anchor, working_axes
 from andoyer.special.agm import ellippi_dd
-from andoyer.special.compensated import PI_DD, dd_add, dd_div, dd_mul, dd_sqrt, split
+from andoyer.special.compensated import dd_div, split
 from andoyer.special.theta import lattice
 
 __all__ = ["Triaxial", "triaxial"]
-
-_TWO_PI = (2.0 * PI_DD[0], 2.0 * PI_DD[1])
-
 
 class Triaxial(NamedTuple):
     """Per-state constants of the triaxial solution (arrays; vectors are ``(3, N)``).
@@ -134,70 +143,6 @@ class Triaxial(NamedTuple):
     precession_rate: np.ndarray
 
 
-def _initial_tau(mw, amplitudes, s, K):
-    """``τ₀ = F(am τ₀ | m)`` from the measured ``cn, sn, dn`` (Carlson, no cancellation)."""
-    a1, a2, a3 = amplitudes
-    cn0 = mw[:, 0] / a1
-    sn0 = mw[:, 1] / (s * a2)
-    dn0 = mw[:, 2] / a3
-    rf = sc.elliprf(cn0 * cn0, dn0 * dn0, 1.0)
-    return np.where(cn0 >= 0, sn0 * rf, np.copysign(2.0 * K, sn0) - sn0 * rf)
-
-
-def _theta_circular(q, v1, K):
-    """Coefficients of ``ϑ₁(x + iy₀ | q²)`` scaled by ``e^{−y₀} q^{−1/2}/2`` (circular case).
-
-    ``e^{2y₀} = η/q²`` with ``η = e^{−πv₁/K}``; the ``n``-th terms are
-    ``(−1)ⁿ(q^{2n²}ηⁿ ± q^{2(n+1)²}η^{−n−1})``, three of them reach ``q^{18} < 10⁻²⁴``.
-    """
-    qt = q * q
-    eta = np.exp(-np.pi * v1 / K)
-    wa = np.zeros((6, q.size))
-    wb = np.zeros((6, q.size))
-    for n in range(3):
-        head = qt ** (n * n) * eta**n
-        tail = qt ** ((n + 1) ** 2) * eta ** (-(n + 1))
-        sgn = (-1.0) ** n
-        wa[n] = sgn * (head + tail)
-        wb[n] = sgn * (head - tail)
-    return wa, wb
-
-
-def _theta_hyperbolic(q, v1, Kp):
-    """Coefficients of ``ϑ₁(a + ib | q*)``, ``q* = √q'``, ``a = −πv₀/(4K')`` (hyperbolic case).
-
-    Six terms reach ``q*^{25} < 10⁻¹⁷`` at the worst nome ``q* = e^{−π/2}`` (``m = 1/2``).
-    """
-    qs = np.sqrt(q)
-    a = -0.5 * np.pi + 0.25 * np.pi * v1 / Kp
-    wa = np.zeros((6, q.size))
-    wb = np.zeros((6, q.size))
-    for n in range(6):
-        amp = (-1.0) ** n * qs ** (n * n + n)
-        wa[n] = amp * np.sin((2 * n + 1) * a)
-        wb[n] = amp * np.cos((2 * n + 1) * a)
-    return wa, wb
-
-
-def _secular_rate(frame: PolhodeFrame, mc_dd, K_dd):
-    """``Ω_ψ = G w₃ + s G e₁₃ [Π(−κ²|m) − cπ/(2√(1+κ²))]/K`` in double-double.
-
-    This is ``G w₃ + (sP₁/G)⟨1/(1 + c dn)⟩`` with ``⟨·⟩`` written through the complete
-    integral of the third kind (``(sP₁/G)/(K(1 − c²)) = sGe₁₃/K``).  Both terms can be
-    large and of opposite signs (a LAM body turns about its polhode axis far more
-    slowly than ``G/I₃``), so the mean is needed beyond double precision: at 100 periods
-    ``Ω_ψ t`` may be 10⁶ rad.  Π comes from the AGM (DLMF 19.8.6) in double-double.
-    """
-    kap2 = dd_div(*frame.e12, *frame.e23)
-    pi3 = ellippi_dd(-kap2[0], -kap2[1], *mc_dd)
-    c = dd_div(*dd_sqrt(*dd_div(*frame.P3, *frame.e13)), *frame.G)
-    root = dd_sqrt(*dd_div(*frame.e23, *frame.e13))  # 1/√(1 + κ²)
-    t = dd_mul(*dd_mul(*c, *root), 0.5 * PI_DD[0], 0.5 * PI_DD[1])
-    bracket = dd_add(*pi3, -t[0], -t[1])
-    corr = dd_div(*dd_mul(*dd_mul(*frame.G, *frame.e13), *bracket), *K_dd)
-    return dd_add(*dd_mul(*frame.G, *frame.w3), frame.s * corr[0], frame.s * corr[1])
-
-
 def triaxial(frame: PolhodeFrame, q0=None):
     """Constants of the triaxial solution for states off the separatrix and off pure spin.
 
@@ -223,31 +168,30 @@ def triaxial(frame: PolhodeFrame, q0=None):
     hi = lambda p: p[0]  # noqa: E731
     e12, e13, e23, P1, P3, G = (hi(x) for x in (frame.e12, frame.e13, frame.e23, frame.P1, frame.P3, frame.G))
     s = frame.s
-    a1 = np.sqrt(P1 / e13)
-    a2 = np.sqrt(P1 / e23)
-    a3 = np.sqrt(P3 / e13)
-    den = dd_mul(*frame.e23, *frame.P3)
-    m = dd_div(*dd_mul(*frame.e12, *frame.P1), *den)[0]
-    mc_hi, mc_lo = dd_div(*dd_mul(*frame.e13, *frame.P2), *den)
+    a1, a2, a3 = amplitudes(e13, e23, P1, P3)
+    m, (mc_hi, mc_lo), omega2 = modulus(frame.e12, frame.e13, frame.e23, frame.P1, frame.P2, frame.P3)
     lat = lattice(m, mc_hi, mc_lo)
     K, Kp = lat.K_hi, lat.Kp
-    om = dd_sqrt(*den)
-    nu = dd_div(*om, 4.0 * lat.K_hi, 4.0 * lat.K_lo)
-    frac0 = _initial_tau(frame.mw, (a1, a2, a3), s, K) / (4.0 * K)
+    nu = polhode_frequency(omega2, (lat.K_hi, lat.K_lo))  # ν = ω/(4K)
+    frac0 = initial_phase(frame.mw[:, 0], frame.mw[:, 1], frame.mw[:, 2], (a1, a2, a3), s, K)
 
-    kappa2 = e12 / e23
-    v1 = sc.elliprf(kappa2, kappa2 + m, 1.0 + kappa2)
+    v1 = pole_offset(e12 / e23, m)
     circ = lat.circular
-    wa, wb = _theta_circular(lat.q, v1, K)
-    wa_h, wb_h = _theta_hyperbolic(lat.q, v1, Kp)
+    wa, wb, wa_h, wb_h = np.zeros((4, 6, s.size))
+    theta_circular(lat.q, v1, K, s, wa, wb)
+    theta_hyperbolic(lat.q, v1, Kp, s, wa_h, wb_h)
     wa = np.where(circ, wa, wa_h)
-    wb = np.where(circ, wb, wb_h) * s
-    rate = _secular_rate(frame, (mc_hi, mc_lo), (lat.K_hi, lat.K_lo))
-    nu_psi = dd_div(*rate, *_TWO_PI)
-    slope = s * np.where(circ, 1.0, 0.5 * v1 / Kp)
+    wb = np.where(circ, wb, wb_h)
+    # Π(−κ²|k²) for the secular rate of ψ from the AGM in double-double (DLMF 19.8.6)
+    kap2 = dd_div(*frame.e12, *frame.e23)
+    pi3 = ellippi_dd(-kap2[0], -kap2[1], mc_hi, mc_lo)
+    K_dd = (lat.K_hi, lat.K_lo)
+    rate, nu_psi = secular_rate(frame.e13, frame.e23, frame.P3, frame.G, frame.w3, s, pi3, K_dd)
+    period, kk = polhode_scales(nu[0], K, Kp)
+    slope, precession_rate = psi_constants(circ, s, Kp, v1, rate[0], period)
 
     cols = working_axes(frame)
-    period = 1.0 / nu[0]
+    mu_cn, mu_sn, mu_dn, v_sn, v_cn = momentum_coefficients((a1, a2, a3), s, lat.c_sn, lat.c_cn, lat.c_dn)
     const = Triaxial(
         circular=circ,
         nu=frequency(*nu),
@@ -256,10 +200,10 @@ def triaxial(frame: PolhodeFrame, q0=None):
         c_sn=lat.c_sn,
         c_cn=lat.c_cn,
         c_dn=lat.c_dn,
-        kk=2.0 * np.pi * K / Kp,
-        mu_cn=a1 * lat.c_cn * cols[0],
-        mu_sn=s * a2 * lat.c_sn * cols[1],
-        mu_dn=a3 * lat.c_dn * cols[2],
+        kk=kk,
+        mu_cn=mu_cn * cols[0],
+        mu_sn=mu_sn * cols[1],
+        mu_dn=mu_dn * cols[2],
         s=s,
         nu_psi=frequency(*nu_psi),
         wa=wa,
@@ -268,12 +212,12 @@ def triaxial(frame: PolhodeFrame, q0=None):
         psi0=np.zeros_like(s),
         quat_u=np.zeros((4, s.size)),
         quat_v=np.zeros((4, s.size)),
-        v_sn=s * a2 * cols[0],
-        v_cn=-a1 * cols[1],
+        v_sn=v_sn * cols[0],
+        v_cn=v_cn * cols[1],
         G=G,
         a3=a3,
         period=period,
-        precession_rate=rate[0] + 2.0 * np.pi * s / period,
+        precession_rate=precession_rate,
     )
     if q0 is None:
         return const

@@ -29,9 +29,18 @@ from typing import NamedTuple
 
 import numpy as np
 
+from andoyer._jit import jitable, select
 from andoyer.special.agm import ellipk_dd
 
-__all__ = ["ThetaLattice", "lattice", "sncndn_circular", "sncndn_half", "sncndn_hyperbolic"]
+__all__ = [
+    "ThetaLattice",
+    "lattice",
+    "nome",
+    "quotient_constants",
+    "sncndn_circular",
+    "sncndn_half",
+    "sncndn_hyperbolic",
+]
 
 
 class ThetaLattice(NamedTuple):
@@ -67,12 +76,67 @@ class ThetaLattice(NamedTuple):
     kc: np.ndarray
 
 
-def _nome(p, pc):
-    """Nome for parameter ``p`` (``p ≤ 1/2``), from ``p`` and ``pc = 1 − p``."""
+@jitable
+def nome(p, pc):
+    """Nome ``e^{−πK(1−p)/K(p)}`` for a parameter ``p ≤ 1/2``, from ``p`` and ``pc = 1 − p`` (A&S 17.3.21).
+
+    One definition for floats (compiled callers, :mod:`andoyer.free.compiled_setup`) and
+    arrays (:func:`lattice`).
+
+    Parameters
+    ----------
+    p, pc : float or ndarray, shape (...)
+        The parameter ``0 ≤ p ≤ 1/2`` and its complement.
+
+    Returns
+    -------
+    float or ndarray, shape (...)
+
+    Examples
+    --------
+    >>> round(float(nome(0.5, 0.5)), 15)  # e^{−π}
+    0.043213918263772
+    """
     kc = np.sqrt(pc)
     eps = p / (2.0 * (1.0 + kc) * (1.0 + np.sqrt(kc)) ** 2)
     e4 = eps**4
     return eps * (1.0 + e4 * (2.0 + e4 * (15.0 + e4 * (150.0 + e4 * (1707.0 + e4 * 20910.0)))))
+
+
+@jitable
+def quotient_constants(q, circular):
+    """Normalising constants ``c_sn, c_cn, c_dn`` of the theta quotients for the active nome ``q``.
+
+    Circular (``m ≤ 1/2``, nome ``q``): ``ϑ₃/ϑ₂, ϑ₄/ϑ₂, ϑ₄/ϑ₃`` at zero (DLMF 22.2.4–6);
+    hyperbolic (nome ``q'``): ``ϑ₃/ϑ₄, 2ϑ̃₂/ϑ₄, 2ϑ̃₂/ϑ₃`` with ``ϑ̃₂ = ϑ₂/(2q^{1/4})``.  Terms
+    to ``q¹²`` (``q ≤ e^{−π}``).  One definition for floats (compiled callers) and arrays.
+
+    Parameters
+    ----------
+    q : float or ndarray, shape (...)
+        The active nome, ``0 ≤ q ≤ e^{−π}``.
+    circular : bool or ndarray of bool, shape (...)
+        Which series the nome belongs to.
+
+    Returns
+    -------
+    c_sn, c_cn, c_dn : float or ndarray, shape (...)
+
+    Examples
+    --------
+    >>> [float(c) for c in quotient_constants(0.0, True)]  # m = 0: sn = sin, cn = cos, dn = 1
+    [1.0, 1.0, 1.0]
+    """
+    q2 = q * q
+    q4 = q2 * q2
+    q9 = q4 * q4 * q
+    t2 = 1.0 + q2 * (1.0 + q4 * (1.0 + q2 * q4))  # 1 + q² + q⁶ + q¹²
+    th3 = 1.0 + 2.0 * (q + q4 + q9)
+    th4 = 1.0 - 2.0 * (q - q4 + q9)
+    # choose the operands, then divide: three divisions, not six
+    den = select(circular, t2, th4)
+    num = select(circular, th4, 2.0 * t2)
+    return th3 / den, num / den, num / th3
 
 
 def lattice(m, mc, mc_lo=0.0):
@@ -103,20 +167,12 @@ def lattice(m, mc, mc_lo=0.0):
     Kp, _ = ellipk_dd(m)
     q = np.where(
         circular,
-        _nome(np.minimum(m, 0.5), np.maximum(mc, 0.5)),
-        _nome(np.minimum(mc, 0.5), np.maximum(m, 0.5)),
+        nome(np.minimum(m, 0.5), np.maximum(mc, 0.5)),
+        nome(np.minimum(mc, 0.5), np.maximum(m, 0.5)),
     )
-    q2 = q * q
-    q4 = q2 * q2
-    q9 = q4 * q4 * q
-    t2 = 1.0 + q2 * (1.0 + q4 * (1.0 + q2 * q4))  # 1 + q² + q⁶ + q¹²
-    th3 = 1.0 + 2.0 * (q + q4 + q9)
-    th4 = 1.0 - 2.0 * (q - q4 + q9)
     with np.errstate(divide="ignore"):
         scale = np.where(circular, 0.5 * np.pi / K_hi, 0.5 * np.pi / Kp)
-    c_sn = np.where(circular, th3 / t2, th3 / th4)
-    c_cn = np.where(circular, th4 / t2, 2.0 * t2 / th4)
-    c_dn = np.where(circular, th4 / th3, 2.0 * t2 / th3)
+    c_sn, c_cn, c_dn = quotient_constants(q, circular)
     return ThetaLattice(circular, K_hi, K_lo, Kp, q, scale, c_sn, c_cn, c_dn, np.sqrt(mc))
 
 

@@ -13,10 +13,10 @@ from __future__ import annotations
 
 import math
 
-from andoyer._jit import jit, jitable
+from andoyer._jit import jit, jitable, when_compiled
 from andoyer.special.jacobi import amplitude
 
-__all__ = ["am", "carlson_rf", "carlson_rj", "third_minus_a_unwrapped"]
+__all__ = ["am", "carlson_rf", "carlson_rj", "elliprf", "third_minus_a_unwrapped"]
 
 #: The Jacobi amplitude ``am(u | m)`` given ``mc = 1 − m``: the one kernel
 #: :func:`andoyer.special.jacobi.amplitude`, registered so that compiled kernels call it.
@@ -131,3 +131,42 @@ def third_minus_a_unwrapped(phi, m, mc, kap2, c3, pi_full, a_full):
     root = math.sqrt(1.0 + kap2)
     a_r = math.atan2(root * s, c) / root
     return 2.0 * j * (pi_full - c3 * a_full) + pi_r - c3 * a_r
+
+
+def elliprf(x, y, z):
+    """Carlson's ``R_F(x, y, z)`` (DLMF 19.16.1) for kernels written once: scipy's on arrays, else ours.
+
+    Inside a compiled kernel it is :func:`carlson_rf`; called from Python with an array it is
+    :func:`scipy.special.elliprf` (vectorised, the same function to its last ulp or two).
+
+    Parameters
+    ----------
+    x, y, z : float or ndarray, shape (...)
+        Non-negative, at most one zero.
+
+    Returns
+    -------
+    float or ndarray, shape (...)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> round(float(elliprf(0.0, 1.0, 2.0)), 13)  # the lemniscate constant Γ(1/4)²/(4√(2π))
+    1.3110287771461
+    >>> elliprf(np.array([0.0]), 1.0, 2.0).round(13).tolist()
+    [1.3110287771461]
+    """
+    import numpy as np
+
+    if any(isinstance(a, np.ndarray) for a in (x, y, z)):
+        from scipy.special import elliprf as rf
+
+        return rf(x, y, z)
+    return carlson_rf(x, y, z)
+
+
+@when_compiled
+def _compiled_elliprf(overload):
+    @overload(elliprf)
+    def _elliprf_compiled(x, y, z):  # noqa: ARG001 - numba's overload signature
+        return lambda x, y, z: carlson_rf(x, y, z)  # noqa: PLW0108 - numba wants a Python implementation
