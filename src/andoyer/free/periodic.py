@@ -262,30 +262,168 @@ def _reduced(hi, lo, offset, t):
     return f - np.rint(f)
 
 
+_BLOCK = 512  # epochs per block of the compiled fill: its buffers stay in the L1 cache
+_LANES = 8  # runs of epochs on one piece are evaluated in whole vectors of this many epochs
+_SHORT = 2.0  # blocks whose runs are shorter on average are evaluated epoch by epoch
+
+
+@jit(inline=True)
+def _row(piece, j, k):
+    """Coefficients of ``uʲ`` of components ``k … k+3``."""
+    return piece[j, k], piece[j, k + 1], piece[j, k + 2], piece[j, k + 3]
+
+
+@jit(inline=True)
+def _coefficients(piece, k):
+    """Components ``k … k+3`` of a piece as a tuple of rows (values, so that loops keep them in registers).
+
+    Written out for ``DEGREE = 9`` (ten rows; ``tests/free/test_free_periodic.py`` checks it).
+    """
+    return (_row(piece, 0, k), _row(piece, 1, k), _row(piece, 2, k), _row(piece, 3, k), _row(piece, 4, k),
+            _row(piece, 5, k), _row(piece, 6, k), _row(piece, 7, k), _row(piece, 8, k), _row(piece, 9, k))
+
+
+@jit(inline=True)
+def _horner_rows(c, u):
+    """:func:`~andoyer.free.kernels.piecewise.horner` on rows of :func:`_coefficients` (same operations)."""
+    a0, a1, a2, a3 = c[DEGREE]
+    for j in range(DEGREE - 1, -1, -1):
+        r = c[j]
+        a0 = a0 * u + r[0]
+        a1 = a1 * u + r[1]
+        a2 = a2 * u + r[2]
+        a3 = a3 * u + r[3]
+    return a0, a1, a2, a3
+
+
+@jit(inline=True)
+def _phases(t, nu_hi, nu_lo, f0, n, x_out, u_out):
+    """Pieces and local variables of the reduced polhode phases at times ``t`` (two loops that vectorise)."""
+    for j in range(t.size):
+        u_out[j] = _reduced(nu_hi, nu_lo, f0, t[j])
+    for j in range(t.size):
+        x, u = locate(u_out[j], n)
+        x_out[j] = x
+        u_out[j] = u
+
+
+@jit(inline=True)
+def _half_angles(t, g_hi, g_lo, g0, s_out, c_out):
+    """``sin, cos(πg)`` of the reduced secular phases at times ``t``."""
+    for j in range(t.size):
+        s, c = _sincos(0.5 * _reduced(g_hi, g_lo, g0, t[j]))
+        s_out[j] = s
+        c_out[j] = c
+
+
+@jit(inline=True)
+def _runs(xs, nb):
+    """Whether the runs of equal pieces in ``xs[:nb]`` are long enough to evaluate in whole vectors."""
+    runs = 1
+    for j in range(1, nb):
+        runs += xs[j] != xs[j - 1]
+    return nb >= _SHORT * runs
+
+
+@jit(inline=True)
+def _run_end(xs, j, nb, whole):
+    """End of the run of epochs from ``j`` on one piece, and the number of lanes to evaluate."""
+    k = j + 1
+    while k < nb and xs[k] == xs[j]:
+        k += 1
+    return k, ((k - j + _LANES - 1) // _LANES * _LANES if whole else k - j)
+
+
+@jit
+def _momentum_block(piece_rows, base, xs, us, nb, whole, m_out, o, e0, ys):
+    """Momentum of one block: runs of epochs on one piece, from ``0`` (the loops vectorise)."""
+    y0, y1, y2 = ys[0], ys[1], ys[2]
+    j = 0
+    while j < nb:
+        k, m = _run_end(xs, j, nb, whole)
+        c = _coefficients(piece_rows[int(base + xs[j])], 0)
+        uu, z0, z1, z2 = us[j : j + m], y0[j : j + m], y1[j : j + m], y2[j : j + m]
+        for e in range(m):
+            a0, a1, a2, _ = _horner_rows(c, uu[e])
+            z0[e] = a0
+            z1[e] = a1
+            z2[e] = a2
+        j = k
+    for j in range(nb):
+        m_out[o, e0 + j, 0] = y0[j]
+        m_out[o, e0 + j, 1] = y1[j]
+        m_out[o, e0 + j, 2] = y2[j]
+
+
+@jit
+def _attitude_block(piece_rows, base, xs, us, sb, cb, nb, whole, q_out, o, e0, ys):
+    """Attitude of one block, ``cos(πg) A(f) + sin(πg) B(f)``, as :func:`_momentum_block`."""
+    y0, y1, y2, y3 = ys[0], ys[1], ys[2], ys[3]
+    j = 0
+    while j < nb and not whole:  # short runs: epoch by epoch (no vector set-up per epoch)
+        piece = piece_rows[int(base + xs[j])]
+        a0, a1, a2, a3 = horner(piece, 4, us[j])
+        b0, b1, b2, b3 = horner(piece, 8, us[j])
+        s, co = sb[j], cb[j]
+        y0[j] = co * a0 + s * b0
+        y1[j] = co * a1 + s * b1
+        y2[j] = co * a2 + s * b2
+        y3[j] = co * a3 + s * b3
+        j += 1
+    while j < nb:
+        k, m = _run_end(xs, j, nb, whole)
+        piece = piece_rows[int(base + xs[j])]
+        ca, cb_ = _coefficients(piece, 4), _coefficients(piece, 8)
+        uu, ss, cc = us[j : j + m], sb[j : j + m], cb[j : j + m]
+        z0, z1, z2, z3 = y0[j : j + m], y1[j : j + m], y2[j : j + m], y3[j : j + m]
+        for e in range(m):
+            a0, a1, a2, a3 = _horner_rows(ca, uu[e])
+            b0, b1, b2, b3 = _horner_rows(cb_, uu[e])
+            s, co = ss[e], cc[e]
+            z0[e] = co * a0 + s * b0
+            z1[e] = co * a1 + s * b1
+            z2[e] = co * a2 + s * b2
+            z3[e] = co * a3 + s * b3
+        j = k
+    for j in range(nb):
+        q_out[o, e0 + j, 0] = y0[j]
+        q_out[o, e0 + j, 1] = y1[j]
+        q_out[o, e0 + j, 2] = y2[j]
+        q_out[o, e0 + j, 3] = y3[j]
+
+
 @jit
 def _fill(params, coef, pos, rows, t, m_out, q_out, attitude):
+    """Blocks of :data:`_BLOCK` epochs per state: phases, then runs of epochs on one piece, then the outputs.
+
+    A run (consecutive epochs on the same piece: most of them when the epochs are sorted)
+    is evaluated with its coefficients held in registers, over a whole number of
+    :data:`_LANES` epochs; the excess lanes are overwritten by the next run (the buffers
+    are padded).  Every epoch gets the same operations as alone, so the values do not
+    depend on the other epochs.  The momentum and the attitude are separate compiled
+    functions, each with its own registers.
+    """
     per_row = t.shape[0] > 1
+    ne = t.shape[1]
+    size = _BLOCK + _LANES
+    xs, us = np.zeros(size), np.zeros(size)
+    sb, cb = np.zeros(size), np.zeros(size)
+    ys = np.empty((4, size))
     for i in range(rows.size):
         r, o = pos[i], rows[i]
         nu_hi, nu_lo, f0 = params[r, 0], params[r, 1], params[r, 2]
         g_hi, g_lo, g0 = params[r, 3], params[r, 4], params[r, 5]
         n, base = params[r, 6], params[r, 7]
-        for e in range(t.shape[1]):
-            tk = t[o if per_row else 0, e]
-            x, u = locate(_reduced(nu_hi, nu_lo, f0, tk), n)
-            piece = coef[int(base + x)]
-            m0, m1, m2, _ = horner(piece, 0, u)
-            m_out[o, e, 0] = m0
-            m_out[o, e, 1] = m1
-            m_out[o, e, 2] = m2
+        tr = o if per_row else 0
+        for e0 in range(0, ne, _BLOCK):
+            nb = min(_BLOCK, ne - e0)
+            tb = t[tr, e0 : e0 + nb]
+            _phases(tb, nu_hi, nu_lo, f0, n, xs[:nb], us[:nb])
+            whole = _runs(xs, nb)
+            _momentum_block(coef, base, xs, us, nb, whole, m_out, o, e0, ys)
             if attitude:
-                sb, cb = _sincos(0.5 * _reduced(g_hi, g_lo, g0, tk))
-                a0, a1, a2, a3 = horner(piece, 4, u)
-                b0, b1, b2, b3 = horner(piece, 8, u)
-                q_out[o, e, 0] = cb * a0 + sb * b0
-                q_out[o, e, 1] = cb * a1 + sb * b1
-                q_out[o, e, 2] = cb * a2 + sb * b2
-                q_out[o, e, 3] = cb * a3 + sb * b3
+                _half_angles(tb, g_hi, g_lo, g0, sb[:nb], cb[:nb])
+                _attitude_block(coef, base, xs, us, sb, cb, nb, whole, q_out, o, e0, ys)
 
 
 def fill(const, pos, rows, t, scale, outs):
