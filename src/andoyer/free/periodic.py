@@ -68,6 +68,7 @@ def _chebyshev_monomials(n):
 
 _TO_MONO = _chebyshev_monomials(_NODES)
 _CHECK = np.array([-1.0, -0.5, 0.0, 0.5, 1.0])  # where the pieces are compared with the kernels
+_POWERS = _CHECK[:, None] ** np.arange(_NODES)
 
 
 class Periodic(NamedTuple):
@@ -148,8 +149,8 @@ def _rows_of(const, sel, kernel):
 
 def _fit(values):
     """Monomial coefficients in ``u`` from values at the Chebyshev nodes (axis −2 of ``values``)."""
-    cheb = np.einsum("kj,...jc->...kc", _TO_CHEB, values)
-    return np.einsum("jk,...kc->...jc", _TO_MONO, cheb)
+    cheb = np.matmul(_TO_CHEB, values)  # (NODES, NODES) @ (..., NODES, c): one small product per piece
+    return np.matmul(_TO_MONO, cheb)
 
 
 def _pieces_for(group, attitude):
@@ -173,7 +174,7 @@ def _pieces_for(group, attitude):
             sel = todo[pieces[todo] == n]
             nodes, checks = _sample(group, sel, int(n), attitude)
             coef = _fit(nodes)  # (s, n, NODES, c)
-            approx = np.einsum("spjc,uj->spuc", coef, _CHECK[:, None] ** np.arange(_NODES))
+            approx = np.matmul(_POWERS, coef)  # (s, n, len(_CHECK), c)
             scale = np.max(np.abs(nodes), axis=(1, 2))  # (s, c)
             scale[:, 3:] = 1.0  # quaternion components: absolute (and the padding)
             err = np.max(np.abs(approx - checks) / scale[:, None, None], axis=(1, 2, 3))
