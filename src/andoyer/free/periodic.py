@@ -263,9 +263,11 @@ def _reduced(hi, lo, offset, t):
     return f - np.rint(f)
 
 
-_BLOCK = 512  # epochs per block of the compiled fill: its buffers stay in the L1 cache
-_LANES = 8  # runs of epochs on one piece are evaluated in whole vectors of this many epochs
-_SHORT = 2.0  # blocks whose runs are shorter on average are evaluated epoch by epoch
+_BLOCK = 4096  # epochs per block of the compiled fill (its buffers stay in the L2 cache)
+_LANES = 8  # epochs on one piece are evaluated in whole vectors of this many epochs
+_SHORT = 2.0  # blocks whose runs (consecutive epochs on one piece) are shorter are evaluated epoch by epoch
+_BUCKET = 16  # blocks with this many epochs per piece or more are sorted by piece
+_LONG = 8.0  # ... unless they are runs this long on average and only the momentum is asked (measured)
 
 
 @jit(inline=True)
@@ -317,99 +319,148 @@ def _half_angles(t, g_hi, g_lo, g0, s_out, c_out):
         c_out[j] = c
 
 
-@jit(inline=True)
-def _runs(xs, nb):
-    """Whether the runs of equal pieces in ``xs[:nb]`` are long enough to evaluate in whole vectors."""
-    runs = 1
+@jit
+def _span_momentum(piece, u, ys, j, m):
+    """Momentum on one piece at ``u[j : j+m]`` into ``ys[0:3, j : j+m]`` (loops from 0: they vectorise)."""
+    c = _coefficients(piece, 0)
+    uu, y0, y1, y2 = u[j : j + m], ys[0, j : j + m], ys[1, j : j + m], ys[2, j : j + m]
+    for e in range(m):
+        a0, a1, a2, _ = _horner_rows(c, uu[e])
+        y0[e] = a0
+        y1[e] = a1
+        y2[e] = a2
+
+
+@jit
+def _span_attitude(piece, u, sb, cb, ys, j, m):
+    """Attitude ``cos(πg) A(f) + sin(πg) B(f)`` on one piece into ``ys[3:7, j : j+m]`` (as the momentum)."""
+    ca, cb_ = _coefficients(piece, 4), _coefficients(piece, 8)
+    uu, ss, cc = u[j : j + m], sb[j : j + m], cb[j : j + m]
+    z0, z1, z2, z3 = ys[3, j : j + m], ys[4, j : j + m], ys[5, j : j + m], ys[6, j : j + m]
+    for e in range(m):
+        a0, a1, a2, a3 = _horner_rows(ca, uu[e])
+        b0, b1, b2, b3 = _horner_rows(cb_, uu[e])
+        s, co = ss[e], cc[e]
+        z0[e] = co * a0 + s * b0
+        z1[e] = co * a1 + s * b1
+        z2[e] = co * a2 + s * b2
+        z3[e] = co * a3 + s * b3
+
+
+@jit
+def _epochwise(coef, base, xs, us, sb, cb, nb, ys, attitude):
+    """Epoch by epoch (short runs): :func:`~andoyer.free.kernels.piecewise.horner`, the same operations."""
+    for j in range(nb):
+        piece = coef[int(base + xs[j])]
+        u = us[j]
+        ys[0, j], ys[1, j], ys[2, j], _ = horner(piece, 0, u)
+        if attitude:
+            a0, a1, a2, a3 = horner(piece, 4, u)
+            b0, b1, b2, b3 = horner(piece, 8, u)
+            s, co = sb[j], cb[j]
+            ys[3, j] = co * a0 + s * b0
+            ys[4, j] = co * a1 + s * b1
+            ys[5, j] = co * a2 + s * b2
+            ys[6, j] = co * a3 + s * b3
+
+
+@jit
+def _by_runs(coef, base, xs, us, sb, cb, nb, ys, attitude):
+    """Runs of consecutive epochs on one piece, each over a whole number of :data:`_LANES` epochs.
+
+    The excess lanes of a run are overwritten by the next run (the buffers are padded).
+    """
+    j = 0
+    while j < nb:
+        k = j + 1
+        while k < nb and xs[k] == xs[j]:
+            k += 1
+        m = (k - j + _LANES - 1) // _LANES * _LANES
+        piece = coef[int(base + xs[j])]
+        _span_momentum(piece, us, ys, j, m)
+        if attitude:
+            _span_attitude(piece, us, sb, cb, ys, j, m)
+        j = k
+
+
+@jit
+def _by_pieces(coef, base, n, xs, us, sb, cb, nb, ys, attitude, count, order, ub, sbb, cbb, starts):
+    """Epochs sorted by piece (a counting sort into ``order``, ``ub``, ``sbb``, ``cbb``), each piece as a run.
+
+    The sort counts runs of consecutive epochs on one piece (``starts``) where they are long
+    (sorted epochs: a count per epoch would wait on the previous one's store).
+    """
+    runs = 0
+    starts[0] = 0
     for j in range(1, nb):
-        runs += xs[j] != xs[j - 1]
-    return nb >= _SHORT * runs
-
-
-@jit(inline=True)
-def _run_end(xs, j, nb, whole):
-    """End of the run of epochs from ``j`` on one piece, and the number of lanes to evaluate."""
-    k = j + 1
-    while k < nb and xs[k] == xs[j]:
-        k += 1
-    return k, ((k - j + _LANES - 1) // _LANES * _LANES if whole else k - j)
-
-
-@jit
-def _momentum_block(piece_rows, base, xs, us, nb, whole, m_out, o, e0, ys):
-    """Momentum of one block: runs of epochs on one piece, from ``0`` (the loops vectorise)."""
-    y0, y1, y2 = ys[0], ys[1], ys[2]
-    j = 0
-    while j < nb:
-        k, m = _run_end(xs, j, nb, whole)
-        c = _coefficients(piece_rows[int(base + xs[j])], 0)
-        uu, z0, z1, z2 = us[j : j + m], y0[j : j + m], y1[j : j + m], y2[j : j + m]
-        for e in range(m):
-            a0, a1, a2, _ = _horner_rows(c, uu[e])
-            z0[e] = a0
-            z1[e] = a1
-            z2[e] = a2
-        j = k
-    for j in range(nb):
-        m_out[o, e0 + j, 0] = y0[j]
-        m_out[o, e0 + j, 1] = y1[j]
-        m_out[o, e0 + j, 2] = y2[j]
-
-
-@jit
-def _attitude_block(piece_rows, base, xs, us, sb, cb, nb, whole, q_out, o, e0, ys):
-    """Attitude of one block, ``cos(πg) A(f) + sin(πg) B(f)``, as :func:`_momentum_block`."""
-    y0, y1, y2, y3 = ys[0], ys[1], ys[2], ys[3]
-    j = 0
-    while j < nb and not whole:  # short runs: epoch by epoch (no vector set-up per epoch)
-        piece = piece_rows[int(base + xs[j])]
-        a0, a1, a2, a3 = horner(piece, 4, us[j])
-        b0, b1, b2, b3 = horner(piece, 8, us[j])
-        s, co = sb[j], cb[j]
-        y0[j] = co * a0 + s * b0
-        y1[j] = co * a1 + s * b1
-        y2[j] = co * a2 + s * b2
-        y3[j] = co * a3 + s * b3
-        j += 1
-    while j < nb:
-        k, m = _run_end(xs, j, nb, whole)
-        piece = piece_rows[int(base + xs[j])]
-        ca, cb_ = _coefficients(piece, 4), _coefficients(piece, 8)
-        uu, ss, cc = us[j : j + m], sb[j : j + m], cb[j : j + m]
-        z0, z1, z2, z3 = y0[j : j + m], y1[j : j + m], y2[j : j + m], y3[j : j + m]
-        for e in range(m):
-            a0, a1, a2, a3 = _horner_rows(ca, uu[e])
-            b0, b1, b2, b3 = _horner_rows(cb_, uu[e])
-            s, co = ss[e], cc[e]
-            z0[e] = co * a0 + s * b0
-            z1[e] = co * a1 + s * b1
-            z2[e] = co * a2 + s * b2
-            z3[e] = co * a3 + s * b3
-        j = k
-    for j in range(nb):
-        q_out[o, e0 + j, 0] = y0[j]
-        q_out[o, e0 + j, 1] = y1[j]
-        q_out[o, e0 + j, 2] = y2[j]
-        q_out[o, e0 + j, 3] = y3[j]
+        if xs[j] != xs[j - 1]:
+            runs += 1
+            starts[runs] = j
+    runs += 1
+    starts[runs] = nb
+    count[: n + 1] = 0
+    if _SHORT * runs <= nb:
+        for r in range(runs):
+            count[int(xs[starts[r]]) + 1] += starts[r + 1] - starts[r]
+    else:
+        for j in range(nb):
+            count[int(xs[j]) + 1] += 1
+    for p in range(n):
+        count[p + 1] += count[p]
+    if _SHORT * runs <= nb:
+        for r in range(runs):
+            j, k = starts[r], starts[r + 1]
+            x = int(xs[j])
+            d = count[x]
+            count[x] = d + (k - j)
+            for e in range(k - j):
+                order[d + e] = j + e
+                ub[d + e] = us[j + e]
+                sbb[d + e] = sb[j + e]
+                cbb[d + e] = cb[j + e]
+    else:
+        for j in range(nb):
+            x = int(xs[j])
+            d = count[x]
+            count[x] = d + 1
+            order[d] = j
+            ub[d] = us[j]
+            sbb[d] = sb[j]
+            cbb[d] = cb[j]
+    start = 0
+    for p in range(n):  # count[p] is now the end of piece p
+        end = count[p]
+        if end > start:
+            m = (end - start + _LANES - 1) // _LANES * _LANES
+            piece = coef[int(base) + p]
+            _span_momentum(piece, ub, ys, start, m)
+            if attitude:
+                _span_attitude(piece, ub, sbb, cbb, ys, start, m)
+        start = end
 
 
 @jit
 def _fill(params, coef, pos, rows, t, m_out, q_out, attitude):
-    """Blocks of :data:`_BLOCK` epochs per state: phases, then runs of epochs on one piece, then the outputs.
+    """Blocks of :data:`_BLOCK` epochs per state: phases, then the polynomials piece by piece, then outputs.
 
-    A run (consecutive epochs on the same piece: most of them when the epochs are sorted)
-    is evaluated with its coefficients held in registers, over a whole number of
-    :data:`_LANES` epochs; the excess lanes are overwritten by the next run (the buffers
-    are padded).  Every epoch gets the same operations as alone, so the values do not
-    depend on the other epochs.  The momentum and the attitude are separate compiled
-    functions, each with its own registers.
+    Epochs on one piece are evaluated together as vectors, their coefficients held in
+    registers: the block sorted by piece when it holds :data:`_BUCKET` epochs a piece or
+    more (unless the epochs come in long runs on one piece and only the momentum is
+    asked: then the runs are evaluated in place), else its runs of consecutive epochs on
+    one piece, else (short runs) epoch by epoch.  Every epoch gets the same operations as
+    alone, so the values do not depend on the other epochs nor on their order.
     """
     per_row = t.shape[0] > 1
     ne = t.shape[1]
     size = _BLOCK + _LANES
-    xs, us = np.zeros(size), np.zeros(size)
-    sb, cb = np.zeros(size), np.zeros(size)
-    ys = np.empty((4, size))
+    xs, us, ub = np.zeros(size), np.zeros(size), np.zeros(size)
+    sb, cb, sbb, cbb = np.zeros(size), np.zeros(size), np.zeros(size), np.zeros(size)
+    order, starts = np.arange(size), np.zeros(size + 1, dtype=np.int64)
+    ys = np.empty((7, size))
+    most = 1
+    for i in range(rows.size):
+        most = max(most, int(params[pos[i], 6]))
+    count = np.zeros(most + 1, dtype=np.int64)
     for i in range(rows.size):
         r, o = pos[i], rows[i]
         nu_hi, nu_lo, f0 = params[r, 0], params[r, 1], params[r, 2]
@@ -420,11 +471,40 @@ def _fill(params, coef, pos, rows, t, m_out, q_out, attitude):
             nb = min(_BLOCK, ne - e0)
             tb = t[tr, e0 : e0 + nb]
             _phases(tb, nu_hi, nu_lo, f0, n, xs[:nb], us[:nb])
-            whole = _runs(xs, nb)
-            _momentum_block(coef, base, xs, us, nb, whole, m_out, o, e0, ys)
             if attitude:
                 _half_angles(tb, g_hi, g_lo, g0, sb[:nb], cb[:nb])
-                _attitude_block(coef, base, xs, us, sb, cb, nb, whole, q_out, o, e0, ys)
+            runs = 1
+            for j in range(1, nb):
+                runs += xs[j] != xs[j - 1]
+            long_runs = nb >= _LONG * runs and not attitude  # sorted momenta: no sort needed
+            if not long_runs and nb >= _BUCKET * n:
+                _by_pieces(coef, base, int(n), xs, us, sb, cb, nb, ys, attitude, count, order, ub, sbb, cbb,
+                           starts)
+                for d in range(nb):
+                    e = e0 + order[d]
+                    m_out[o, e, 0] = ys[0, d]
+                    m_out[o, e, 1] = ys[1, d]
+                    m_out[o, e, 2] = ys[2, d]
+                    if attitude:
+                        q_out[o, e, 0] = ys[3, d]
+                        q_out[o, e, 1] = ys[4, d]
+                        q_out[o, e, 2] = ys[5, d]
+                        q_out[o, e, 3] = ys[6, d]
+                continue
+            if nb >= _SHORT * runs:
+                _by_runs(coef, base, xs, us, sb, cb, nb, ys, attitude)
+            else:
+                _epochwise(coef, base, xs, us, sb, cb, nb, ys, attitude)
+            for j in range(nb):
+                m_out[o, e0 + j, 0] = ys[0, j]
+                m_out[o, e0 + j, 1] = ys[1, j]
+                m_out[o, e0 + j, 2] = ys[2, j]
+            if attitude:
+                for j in range(nb):
+                    q_out[o, e0 + j, 0] = ys[3, j]
+                    q_out[o, e0 + j, 1] = ys[4, j]
+                    q_out[o, e0 + j, 2] = ys[5, j]
+                    q_out[o, e0 + j, 3] = ys[6, j]
 
 
 def fill(const, pos, rows, t, scale, outs):
