@@ -20,9 +20,12 @@ between the nodes of every piece to 32 ulps, or until doubling stops helping (th
 own rounding, up to ~40 ulps near the separatrix); a body that would need more than
 :data:`MAX_PIECES` keeps the direct evaluation.
 
-Per epoch the evaluation then costs the two reduced phases, ``4`` (momentum and a
-padding) or ``12`` (with ``A``, ``B``) polynomials and one ``sincos`` (:func:`fill`, compiled, and
+Per epoch the evaluation then costs the two reduced phases, ``3`` (momentum) or ``11``
+(with ``A``, ``B``) polynomials and one ``sincos`` (:func:`fill`, compiled, and
 :func:`fill_numpy`, vectorised; both call :mod:`andoyer.free.kernels.piecewise`).  The
+compiled fill evaluates the epochs that fall on one piece together, in blocks sorted by
+piece (a counting sort), so that the polynomials run as vectors over epochs with their
+coefficients in registers; each epoch still gets the same operations as alone.  The
 pieces break at ``f = 0, ±1/4, ±1/2`` (``n`` is a power of two ``≥ 4``), where the
 hyperbolic series of the kernels switch branch.
 """
