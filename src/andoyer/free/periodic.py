@@ -419,8 +419,10 @@ def _by_pieces(coef, base, n, xs, us, sb, cb, nb, ys, attitude, count, order, ub
             for e in range(k - j):
                 order[d + e] = j + e
                 ub[d + e] = us[j + e]
-                sbb[d + e] = sb[j + e]
-                cbb[d + e] = cb[j + e]
+            if attitude:
+                for e in range(k - j):
+                    sbb[d + e] = sb[j + e]
+                    cbb[d + e] = cb[j + e]
     else:
         for j in range(nb):
             x = int(xs[j])
@@ -428,8 +430,10 @@ def _by_pieces(coef, base, n, xs, us, sb, cb, nb, ys, attitude, count, order, ub
             count[x] = d + 1
             order[d] = j
             ub[d] = us[j]
-            sbb[d] = sb[j]
-            cbb[d] = cb[j]
+        if attitude:
+            for d in range(nb):
+                sbb[d] = sb[order[d]]
+                cbb[d] = cb[order[d]]
     start = 0
     for p in range(n):  # count[p] is now the end of piece p
         end = count[p]
@@ -440,6 +444,38 @@ def _by_pieces(coef, base, n, xs, us, sb, cb, nb, ys, attitude, count, order, ub
             if attitude:
                 _span_attitude(piece, ub, sbb, cbb, ys, start, m)
         start = end
+
+
+@jit(inline=True)
+def _copy_out(ys, nb, m_out, q_out, o, e0, attitude):
+    """``ys[:, :nb]`` into the outputs' row ``o`` from epoch ``e0``."""
+    for j in range(nb):
+        m_out[o, e0 + j, 0] = ys[0, j]
+        m_out[o, e0 + j, 1] = ys[1, j]
+        m_out[o, e0 + j, 2] = ys[2, j]
+    if attitude:
+        for j in range(nb):
+            q_out[o, e0 + j, 0] = ys[3, j]
+            q_out[o, e0 + j, 1] = ys[4, j]
+            q_out[o, e0 + j, 2] = ys[5, j]
+            q_out[o, e0 + j, 3] = ys[6, j]
+
+
+@jit(inline=True)
+def _scatter_out(ys, order, nb, m_out, q_out, o, e0, attitude):
+    """``ys[:, d]`` into the outputs' row ``o`` at epoch ``e0 + order[d]``."""
+    for d in range(nb):
+        e = e0 + order[d]
+        m_out[o, e, 0] = ys[0, d]
+        m_out[o, e, 1] = ys[1, d]
+        m_out[o, e, 2] = ys[2, d]
+    if attitude:
+        for d in range(nb):
+            e = e0 + order[d]
+            q_out[o, e, 0] = ys[3, d]
+            q_out[o, e, 1] = ys[4, d]
+            q_out[o, e, 2] = ys[5, d]
+            q_out[o, e, 3] = ys[6, d]
 
 
 @jit
@@ -459,7 +495,7 @@ def _fill(params, coef, pos, rows, t, m_out, q_out, attitude):
     xs, us, ub = np.zeros(size), np.zeros(size), np.zeros(size)
     sb, cb, sbb, cbb = np.zeros(size), np.zeros(size), np.zeros(size), np.zeros(size)
     order, starts = np.arange(size), np.zeros(size + 1, dtype=np.int64)
-    ys = np.empty((7, size))
+    ys, yo = np.empty((7, size)), np.empty((7, size))
     most = 1
     for i in range(rows.size):
         most = max(most, int(params[pos[i], 6]))
@@ -483,31 +519,21 @@ def _fill(params, coef, pos, rows, t, m_out, q_out, attitude):
             if not long_runs and nb >= _BUCKET * n:
                 _by_pieces(coef, base, int(n), xs, us, sb, cb, nb, ys, attitude, count, order, ub, sbb, cbb,
                            starts)
-                for d in range(nb):
-                    e = e0 + order[d]
-                    m_out[o, e, 0] = ys[0, d]
-                    m_out[o, e, 1] = ys[1, d]
-                    m_out[o, e, 2] = ys[2, d]
-                    if attitude:
-                        q_out[o, e, 0] = ys[3, d]
-                        q_out[o, e, 1] = ys[4, d]
-                        q_out[o, e, 2] = ys[5, d]
-                        q_out[o, e, 3] = ys[6, d]
+                if nb >= _SHORT * runs:  # runs: the outputs are written run by run, nearly in sequence
+                    _scatter_out(ys, order, nb, m_out, q_out, o, e0, attitude)
+                    continue
+                # scattered epochs: back to their order in the cache, then written in sequence (measured)
+                for c in range(7 if attitude else 3):
+                    yc, zc = ys[c], yo[c]
+                    for d in range(nb):
+                        zc[order[d]] = yc[d]
+                _copy_out(yo, nb, m_out, q_out, o, e0, attitude)
                 continue
             if nb >= _SHORT * runs:
                 _by_runs(coef, base, xs, us, sb, cb, nb, ys, attitude)
             else:
                 _epochwise(coef, base, xs, us, sb, cb, nb, ys, attitude)
-            for j in range(nb):
-                m_out[o, e0 + j, 0] = ys[0, j]
-                m_out[o, e0 + j, 1] = ys[1, j]
-                m_out[o, e0 + j, 2] = ys[2, j]
-            if attitude:
-                for j in range(nb):
-                    q_out[o, e0 + j, 0] = ys[3, j]
-                    q_out[o, e0 + j, 1] = ys[4, j]
-                    q_out[o, e0 + j, 2] = ys[5, j]
-                    q_out[o, e0 + j, 3] = ys[6, j]
+            _copy_out(ys, nb, m_out, q_out, o, e0, attitude)
 
 
 def fill(const, pos, rows, t, scale, outs):
