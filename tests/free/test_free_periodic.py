@@ -198,7 +198,7 @@ def test_periodic_fill_matches_direct_in_every_evaluation_order(case):
     fm = FreeMotion(moments, m0, q0)
     per, rest = periodic.build(fm._groups[0], attitude=True)
     assert rest is None
-    assert per.const.params[0, 6] == 64.0  # the pieces the cases above were sized for
+    assert per.const.params[0, 6] == 32.0  # the pieces the cases above were sized for
     t = _epochs(case, float(fm.periods.period), np.random.default_rng(FILL_CASES.index(case)))
     if not periodic.NUMBA and t.size > periodic._BLOCK:
         t = t[::7]  # the interpreted loop: a sample of the same epochs

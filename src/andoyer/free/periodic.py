@@ -92,7 +92,7 @@ class Periodic(NamedTuple):
 
 
 def _first_pieces(const):
-    """Initial number of pieces from the nome: ``n ≈ 64/ρ`` with ``ρ = K'/(4K)``, a power of 2 ≥ 8.
+    """Initial number of pieces from the nome: ``n ≈ 8/ρ`` with ``ρ = K'/(4K)``, a power of 2 ≥ 8.
 
     ``−ln q = πK'/K`` for the circular nome; the hyperbolic series carry the
     complementary nome ``q'``, with ``ln q ln q' = π²``.
@@ -100,7 +100,7 @@ def _first_pieces(const):
     lq = -np.log(np.asarray(const.q, dtype=np.float64))
     lq = np.where(np.asarray(const.circular), lq, np.pi**2 / lq)
     rho = lq / (4.0 * np.pi)
-    want = np.clip(16.0 / rho, 8.0, MAX_PIECES)
+    want = np.clip(8.0 / rho, 8.0, MAX_PIECES)  # most bodies pass at once (16/ρ: twice the pieces needed)
     return np.exp2(np.ceil(np.log2(want)))
 
 
