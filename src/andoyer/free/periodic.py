@@ -368,39 +368,14 @@ def _epochwise(coef, base, xs, us, sb, cb, nb, ys, attitude):
 
 
 @jit
-def _by_runs(coef, base, xs, us, sb, cb, nb, ys, attitude):
-    """Runs of consecutive epochs on one piece, each over a whole number of :data:`_LANES` epochs.
+def _sort_by_piece(xs, us, sb, cb, nb, n, attitude, starts, runs, count, order, ub, sbb, cbb):
+    """Counting sort of a block's epochs by piece into ``order``, ``ub`` (``sbb``, ``cbb``).
 
-    The excess lanes of a run are overwritten by the next run (the buffers are padded).
+    Leaves ``count[p]`` at the end of piece ``p`` in the sorted order.
+
+    Counted per run of equal pieces (``starts``) where the runs are long (sorted epochs: a
+    count per epoch would wait on the previous one's store to the same counter).
     """
-    j = 0
-    while j < nb:
-        k = j + 1
-        while k < nb and xs[k] == xs[j]:
-            k += 1
-        m = (k - j + _LANES - 1) // _LANES * _LANES
-        piece = coef[int(base + xs[j])]
-        _span_momentum(piece, us, ys, j, m)
-        if attitude:
-            _span_attitude(piece, us, sb, cb, ys, j, m)
-        j = k
-
-
-@jit
-def _by_pieces(coef, base, n, xs, us, sb, cb, nb, ys, attitude, count, order, ub, sbb, cbb, starts):
-    """Epochs sorted by piece (a counting sort into ``order``, ``ub``, ``sbb``, ``cbb``), each piece as a run.
-
-    The sort counts runs of consecutive epochs on one piece (``starts``) where they are long
-    (sorted epochs: a count per epoch would wait on the previous one's store).
-    """
-    runs = 0
-    starts[0] = 0
-    for j in range(1, nb):
-        if xs[j] != xs[j - 1]:
-            runs += 1
-            starts[runs] = j
-    runs += 1
-    starts[runs] = nb
     count[: n + 1] = 0
     if _SHORT * runs <= nb:
         for r in range(runs):
@@ -434,16 +409,6 @@ def _by_pieces(coef, base, n, xs, us, sb, cb, nb, ys, attitude, count, order, ub
             for d in range(nb):
                 sbb[d] = sb[order[d]]
                 cbb[d] = cb[order[d]]
-    start = 0
-    for p in range(n):  # count[p] is now the end of piece p
-        end = count[p]
-        if end > start:
-            m = (end - start + _LANES - 1) // _LANES * _LANES
-            piece = coef[int(base) + p]
-            _span_momentum(piece, ub, ys, start, m)
-            if attitude:
-                _span_attitude(piece, ub, sbb, cbb, ys, start, m)
-        start = end
 
 
 @jit(inline=True)
@@ -482,12 +447,15 @@ def _scatter_out(ys, order, nb, m_out, q_out, o, e0, attitude):
 def _fill(params, coef, pos, rows, t, m_out, q_out, attitude):
     """Blocks of :data:`_BLOCK` epochs per state: phases, then the polynomials piece by piece, then outputs.
 
-    Epochs on one piece are evaluated together as vectors, their coefficients held in
-    registers: the block sorted by piece when it holds :data:`_BUCKET` epochs a piece or
+    Epochs on one piece are evaluated together as vectors (spans), their coefficients held
+    in registers: the block sorted by piece when it holds :data:`_BUCKET` epochs a piece or
     more (unless the epochs come in long runs on one piece and only the momentum is
     asked: then the runs are evaluated in place), else its runs of consecutive epochs on
-    one piece, else (short runs) epoch by epoch.  Every epoch gets the same operations as
-    alone, so the values do not depend on the other epochs nor on their order.
+    one piece, else (short runs) epoch by epoch.  Each span covers a whole number of
+    :data:`_LANES` epochs; the excess is overwritten by the next span (the buffers are
+    padded).  Every epoch gets the same operations as alone, so the values do not depend
+    on the other epochs nor on their order.  (The spans are evaluated here only, so that
+    their code is compiled once.)
     """
     per_row = t.shape[0] > 1
     ne = t.shape[1]
@@ -495,6 +463,8 @@ def _fill(params, coef, pos, rows, t, m_out, q_out, attitude):
     xs, us, ub = np.zeros(size), np.zeros(size), np.zeros(size)
     sb, cb, sbb, cbb = np.zeros(size), np.zeros(size), np.zeros(size), np.zeros(size)
     order, starts = np.arange(size), np.zeros(size + 1, dtype=np.int64)
+    span_piece, span_start, span_end = (np.zeros(size, dtype=np.int64), np.zeros(size, dtype=np.int64),
+                                        np.zeros(size, dtype=np.int64))
     ys, yo = np.empty((7, size)), np.empty((7, size))
     most = 1
     for i in range(rows.size):
@@ -512,28 +482,50 @@ def _fill(params, coef, pos, rows, t, m_out, q_out, attitude):
             _phases(tb, nu_hi, nu_lo, f0, n, xs[:nb], us[:nb])
             if attitude:
                 _half_angles(tb, g_hi, g_lo, g0, sb[:nb], cb[:nb])
-            runs = 1
+            runs = 0
             for j in range(1, nb):
-                runs += xs[j] != xs[j - 1]
+                if xs[j] != xs[j - 1]:
+                    runs += 1
+                    starts[runs] = j
+            runs += 1
+            starts[runs] = nb
             long_runs = nb >= _LONG * runs and not attitude  # sorted momenta: no sort needed
-            if not long_runs and nb >= _BUCKET * n:
-                _by_pieces(coef, base, int(n), xs, us, sb, cb, nb, ys, attitude, count, order, ub, sbb, cbb,
-                           starts)
-                if nb >= _SHORT * runs:  # runs: the outputs are written run by run, nearly in sequence
-                    _scatter_out(ys, order, nb, m_out, q_out, o, e0, attitude)
-                    continue
-                # scattered epochs: back to their order in the cache, then written in sequence (measured)
-                for c in range(7 if attitude else 3):
-                    yc, zc = ys[c], yo[c]
-                    for d in range(nb):
-                        zc[order[d]] = yc[d]
-                _copy_out(yo, nb, m_out, q_out, o, e0, attitude)
-                continue
-            if nb >= _SHORT * runs:
-                _by_runs(coef, base, xs, us, sb, cb, nb, ys, attitude)
+            sorted_ = not long_runs and nb >= _BUCKET * n
+            if sorted_:
+                _sort_by_piece(xs, us, sb, cb, nb, int(n), attitude, starts, runs, count, order, ub, sbb, cbb)
+                spans, start = 0, 0
+                for p in range(int(n)):
+                    if count[p] > start:
+                        span_piece[spans], span_start[spans], span_end[spans] = p, start, count[p]
+                        spans += 1
+                    start = count[p]
+                u, s, c = ub, sbb, cbb
+            elif nb >= _SHORT * runs:
+                spans = runs
+                for k in range(runs):
+                    span_piece[k], span_start[k], span_end[k] = int(xs[starts[k]]), starts[k], starts[k + 1]
+                u, s, c = us, sb, cb
             else:
                 _epochwise(coef, base, xs, us, sb, cb, nb, ys, attitude)
-            _copy_out(ys, nb, m_out, q_out, o, e0, attitude)
+                _copy_out(ys, nb, m_out, q_out, o, e0, attitude)
+                continue
+            for k in range(spans):
+                j = span_start[k]
+                m = (span_end[k] - j + _LANES - 1) // _LANES * _LANES
+                piece = coef[int(base) + span_piece[k]]
+                _span_momentum(piece, u, ys, j, m)
+                if attitude:
+                    _span_attitude(piece, u, s, c, ys, j, m)
+            if not sorted_:
+                _copy_out(ys, nb, m_out, q_out, o, e0, attitude)
+            elif nb >= _SHORT * runs:  # runs: the outputs are written run by run, nearly in sequence
+                _scatter_out(ys, order, nb, m_out, q_out, o, e0, attitude)
+            else:  # scattered epochs: back to their order in the cache, then written in sequence (measured)
+                for k in range(7 if attitude else 3):
+                    yk, zk = ys[k], yo[k]
+                    for d in range(nb):
+                        zk[order[d]] = yk[d]
+                _copy_out(yo, nb, m_out, q_out, o, e0, attitude)
 
 
 def fill(const, pos, rows, t, scale, outs):
