@@ -119,7 +119,7 @@ class FreeMotion:
         Epochs per state from which triaxial states are evaluated through a
         piecewise-polynomial representation of one period, built once
         (:mod:`andoyer.free.periodic`: same accuracy, several times faster per epoch);
-        below it, directly.  A class default (16384 with numba, ``inf`` without, where the
+        below it, directly.  A class default (4096 with numba, ``inf`` without, where the
         vectorised direct path is faster; ``inf`` too for the numpy backend with numba),
         settable per instance (``0``: always, ``inf``: never).
 
@@ -136,10 +136,11 @@ class FreeMotion:
     ('numpy', True)
     """
 
-    # measured break-even (bench_free.py --epochs and 50 bodies at 2^11 … 2^15 epochs): the
-    # build costs ~0.4 ms a state (0.8 with the attitude), about 10⁴ direct epochs; without
-    # numba the vectorised direct kernels beat the per-epoch gathers of the pieces
-    periodic_epochs = 16384.0 if NUMBA else np.inf
+    # measured break-even (50 random triaxial bodies at 2^11 … 2^13 epochs, build included):
+    # ~1300 epochs a state for the momentum, ~4096 with the attitude (at 4096: 0.44× and 1.0×
+    # the direct path's time); without numba the vectorised direct kernels beat the
+    # per-epoch gathers of the pieces
+    periodic_epochs = 4096.0 if NUMBA else np.inf
 
     def __init__(self, moments, m0, q0=None, *, backend=None):
         self.backend = resolve(backend)

@@ -20,9 +20,12 @@ between the nodes of every piece to 32 ulps, or until doubling stops helping (th
 own rounding, up to ~40 ulps near the separatrix); a body that would need more than
 :data:`MAX_PIECES` keeps the direct evaluation.
 
-Per epoch the evaluation then costs the two reduced phases, ``4`` (momentum and a
-padding) or ``12`` (with ``A``, ``B``) polynomials and one ``sincos`` (:func:`fill`, compiled, and
+Per epoch the evaluation then costs the two reduced phases, ``3`` (momentum) or ``11``
+(with ``A``, ``B``) polynomials and one ``sincos`` (:func:`fill`, compiled, and
 :func:`fill_numpy`, vectorised; both call :mod:`andoyer.free.kernels.piecewise`).  The
+compiled fill evaluates the epochs that fall on one piece together, in blocks sorted by
+piece (a counting sort), so that the polynomials run as vectors over epochs with their
+coefficients in registers; each epoch still gets the same operations as alone.  The
 pieces break at ``f = 0, ±1/4, ±1/2`` (``n`` is a power of two ``≥ 4``), where the
 hyperbolic series of the kernels switch branch.
 """
@@ -69,6 +72,7 @@ def _chebyshev_monomials(n):
 
 _TO_MONO = _chebyshev_monomials(_NODES)
 _CHECK = np.array([-1.0, -0.5, 0.0, 0.5, 1.0])  # where the pieces are compared with the kernels
+_POWERS = _CHECK[:, None] ** np.arange(_NODES)
 
 
 class Periodic(NamedTuple):
@@ -89,7 +93,7 @@ class Periodic(NamedTuple):
 
 
 def _first_pieces(const):
-    """Initial number of pieces from the nome: ``n ≈ 64/ρ`` with ``ρ = K'/(4K)``, a power of 2 ≥ 8.
+    """Initial number of pieces from the nome: ``n ≈ 8/ρ`` with ``ρ = K'/(4K)``, a power of 2 ≥ 8.
 
     ``−ln q = πK'/K`` for the circular nome; the hyperbolic series carry the
     complementary nome ``q'``, with ``ln q ln q' = π²``.
@@ -97,7 +101,7 @@ def _first_pieces(const):
     lq = -np.log(np.asarray(const.q, dtype=np.float64))
     lq = np.where(np.asarray(const.circular), lq, np.pi**2 / lq)
     rho = lq / (4.0 * np.pi)
-    want = np.clip(16.0 / rho, 8.0, MAX_PIECES)
+    want = np.clip(8.0 / rho, 8.0, MAX_PIECES)  # most bodies pass at once (16/ρ: twice the pieces needed)
     return np.exp2(np.ceil(np.log2(want)))
 
 
@@ -149,8 +153,8 @@ def _rows_of(const, sel, kernel):
 
 def _fit(values):
     """Monomial coefficients in ``u`` from values at the Chebyshev nodes (axis −2 of ``values``)."""
-    cheb = np.einsum("kj,...jc->...kc", _TO_CHEB, values)
-    return np.einsum("jk,...kc->...jc", _TO_MONO, cheb)
+    cheb = np.matmul(_TO_CHEB, values)  # (NODES, NODES) @ (..., NODES, c): one small product per piece
+    return np.matmul(_TO_MONO, cheb)
 
 
 def _pieces_for(group, attitude):
@@ -174,7 +178,7 @@ def _pieces_for(group, attitude):
             sel = todo[pieces[todo] == n]
             nodes, checks = _sample(group, sel, int(n), attitude)
             coef = _fit(nodes)  # (s, n, NODES, c)
-            approx = np.einsum("spjc,uj->spuc", coef, _CHECK[:, None] ** np.arange(_NODES))
+            approx = np.matmul(_POWERS, coef)  # (s, n, len(_CHECK), c)
             scale = np.max(np.abs(nodes), axis=(1, 2))  # (s, c)
             scale[:, 3:] = 1.0  # quaternion components: absolute (and the padding)
             err = np.max(np.abs(approx - checks) / scale[:, None, None], axis=(1, 2, 3))
@@ -263,30 +267,266 @@ def _reduced(hi, lo, offset, t):
     return f - np.rint(f)
 
 
+_BLOCK = 4096  # epochs per block of the compiled fill (its buffers stay in the L2 cache)
+_LANES = 8  # epochs on one piece are evaluated in whole vectors of this many epochs
+_SHORT = 2.0  # blocks whose runs (consecutive epochs on one piece) are shorter are evaluated epoch by epoch
+_BUCKET = 16  # blocks with this many epochs per piece or more are sorted by piece
+_LONG = 8.0  # ... unless they are runs this long on average and only the momentum is asked (measured)
+
+
+@jit(inline=True)
+def _row(piece, j, k):
+    """Coefficients of ``uʲ`` of components ``k … k+3``."""
+    return piece[j, k], piece[j, k + 1], piece[j, k + 2], piece[j, k + 3]
+
+
+@jit(inline=True)
+def _coefficients(piece, k):
+    """Components ``k … k+3`` of a piece as a tuple of rows (values, so that loops keep them in registers).
+
+    Written out for ``DEGREE = 9`` (ten rows; ``tests/free/test_free_periodic.py`` checks it).
+    """
+    return (_row(piece, 0, k), _row(piece, 1, k), _row(piece, 2, k), _row(piece, 3, k), _row(piece, 4, k),
+            _row(piece, 5, k), _row(piece, 6, k), _row(piece, 7, k), _row(piece, 8, k), _row(piece, 9, k))
+
+
+@jit(inline=True)
+def _horner_rows(c, u):
+    """:func:`~andoyer.free.kernels.piecewise.horner` on rows of :func:`_coefficients` (same operations)."""
+    a0, a1, a2, a3 = c[DEGREE]
+    for j in range(DEGREE - 1, -1, -1):
+        r = c[j]
+        a0 = a0 * u + r[0]
+        a1 = a1 * u + r[1]
+        a2 = a2 * u + r[2]
+        a3 = a3 * u + r[3]
+    return a0, a1, a2, a3
+
+
+@jit(inline=True)
+def _phases(t, nu_hi, nu_lo, f0, n, x_out, u_out):
+    """Pieces and local variables of the reduced polhode phases at times ``t`` (two loops that vectorise)."""
+    for j in range(t.size):
+        u_out[j] = _reduced(nu_hi, nu_lo, f0, t[j])
+    for j in range(t.size):
+        x, u = locate(u_out[j], n)
+        x_out[j] = x
+        u_out[j] = u
+
+
+@jit(inline=True)
+def _half_angles(t, g_hi, g_lo, g0, s_out, c_out):
+    """``sin, cos(πg)`` of the reduced secular phases at times ``t``."""
+    for j in range(t.size):
+        s, c = _sincos(0.5 * _reduced(g_hi, g_lo, g0, t[j]))
+        s_out[j] = s
+        c_out[j] = c
+
+
+@jit
+def _span_momentum(piece, u, ys, j, m):
+    """Momentum on one piece at ``u[j : j+m]`` into ``ys[0:3, j : j+m]`` (loops from 0: they vectorise)."""
+    c = _coefficients(piece, 0)
+    uu, y0, y1, y2 = u[j : j + m], ys[0, j : j + m], ys[1, j : j + m], ys[2, j : j + m]
+    for e in range(m):
+        a0, a1, a2, _ = _horner_rows(c, uu[e])
+        y0[e] = a0
+        y1[e] = a1
+        y2[e] = a2
+
+
+@jit
+def _span_attitude(piece, u, sb, cb, ys, j, m):
+    """Attitude ``cos(πg) A(f) + sin(πg) B(f)`` on one piece into ``ys[3:7, j : j+m]`` (as the momentum)."""
+    ca, cb_ = _coefficients(piece, 4), _coefficients(piece, 8)
+    uu, ss, cc = u[j : j + m], sb[j : j + m], cb[j : j + m]
+    z0, z1, z2, z3 = ys[3, j : j + m], ys[4, j : j + m], ys[5, j : j + m], ys[6, j : j + m]
+    for e in range(m):
+        a0, a1, a2, a3 = _horner_rows(ca, uu[e])
+        b0, b1, b2, b3 = _horner_rows(cb_, uu[e])
+        s, co = ss[e], cc[e]
+        z0[e] = co * a0 + s * b0
+        z1[e] = co * a1 + s * b1
+        z2[e] = co * a2 + s * b2
+        z3[e] = co * a3 + s * b3
+
+
+@jit
+def _epochwise(coef, base, xs, us, sb, cb, nb, ys, attitude):
+    """Epoch by epoch (short runs): :func:`~andoyer.free.kernels.piecewise.horner`, the same operations."""
+    for j in range(nb):
+        piece = coef[int(base + xs[j])]
+        u = us[j]
+        ys[0, j], ys[1, j], ys[2, j], _ = horner(piece, 0, u)
+        if attitude:
+            a0, a1, a2, a3 = horner(piece, 4, u)
+            b0, b1, b2, b3 = horner(piece, 8, u)
+            s, co = sb[j], cb[j]
+            ys[3, j] = co * a0 + s * b0
+            ys[4, j] = co * a1 + s * b1
+            ys[5, j] = co * a2 + s * b2
+            ys[6, j] = co * a3 + s * b3
+
+
+@jit
+def _sort_by_piece(xs, us, sb, cb, nb, n, attitude, starts, runs, count, order, ub, sbb, cbb):
+    """Counting sort of a block's epochs by piece into ``order``, ``ub`` (``sbb``, ``cbb``).
+
+    Leaves ``count[p]`` at the end of piece ``p`` in the sorted order.
+
+    Counted per run of equal pieces (``starts``) where the runs are long (sorted epochs: a
+    count per epoch would wait on the previous one's store to the same counter).
+    """
+    count[: n + 1] = 0
+    if _SHORT * runs <= nb:
+        for r in range(runs):
+            count[int(xs[starts[r]]) + 1] += starts[r + 1] - starts[r]
+    else:
+        for j in range(nb):
+            count[int(xs[j]) + 1] += 1
+    for p in range(n):
+        count[p + 1] += count[p]
+    if _SHORT * runs <= nb:
+        for r in range(runs):
+            j, k = starts[r], starts[r + 1]
+            x = int(xs[j])
+            d = count[x]
+            count[x] = d + (k - j)
+            for e in range(k - j):
+                order[d + e] = j + e
+                ub[d + e] = us[j + e]
+            if attitude:
+                for e in range(k - j):
+                    sbb[d + e] = sb[j + e]
+                    cbb[d + e] = cb[j + e]
+    else:
+        for j in range(nb):
+            x = int(xs[j])
+            d = count[x]
+            count[x] = d + 1
+            order[d] = j
+            ub[d] = us[j]
+        if attitude:
+            for d in range(nb):
+                sbb[d] = sb[order[d]]
+                cbb[d] = cb[order[d]]
+
+
+@jit(inline=True)
+def _copy_out(ys, nb, m_out, q_out, o, e0, attitude):
+    """``ys[:, :nb]`` into the outputs' row ``o`` from epoch ``e0``."""
+    for j in range(nb):
+        m_out[o, e0 + j, 0] = ys[0, j]
+        m_out[o, e0 + j, 1] = ys[1, j]
+        m_out[o, e0 + j, 2] = ys[2, j]
+    if attitude:
+        for j in range(nb):
+            q_out[o, e0 + j, 0] = ys[3, j]
+            q_out[o, e0 + j, 1] = ys[4, j]
+            q_out[o, e0 + j, 2] = ys[5, j]
+            q_out[o, e0 + j, 3] = ys[6, j]
+
+
+@jit(inline=True)
+def _scatter_out(ys, order, nb, m_out, q_out, o, e0, attitude):
+    """``ys[:, d]`` into the outputs' row ``o`` at epoch ``e0 + order[d]``."""
+    for d in range(nb):
+        e = e0 + order[d]
+        m_out[o, e, 0] = ys[0, d]
+        m_out[o, e, 1] = ys[1, d]
+        m_out[o, e, 2] = ys[2, d]
+    if attitude:
+        for d in range(nb):
+            e = e0 + order[d]
+            q_out[o, e, 0] = ys[3, d]
+            q_out[o, e, 1] = ys[4, d]
+            q_out[o, e, 2] = ys[5, d]
+            q_out[o, e, 3] = ys[6, d]
+
+
 @jit
 def _fill(params, coef, pos, rows, t, m_out, q_out, attitude):
+    """Blocks of :data:`_BLOCK` epochs per state: phases, then the polynomials piece by piece, then outputs.
+
+    Epochs on one piece are evaluated together as vectors (spans), their coefficients held
+    in registers: the block sorted by piece when it holds :data:`_BUCKET` epochs a piece or
+    more (unless the epochs come in long runs on one piece and only the momentum is
+    asked: then the runs are evaluated in place), else its runs of consecutive epochs on
+    one piece, else (short runs) epoch by epoch.  Each span covers a whole number of
+    :data:`_LANES` epochs; the excess is overwritten by the next span (the buffers are
+    padded).  Every epoch gets the same operations as alone, so the values do not depend
+    on the other epochs nor on their order.  (The spans are evaluated here only, so that
+    their code is compiled once.)
+    """
     per_row = t.shape[0] > 1
+    ne = t.shape[1]
+    size = _BLOCK + _LANES
+    xs, us, ub = np.zeros(size), np.zeros(size), np.zeros(size)
+    sb, cb, sbb, cbb = np.zeros(size), np.zeros(size), np.zeros(size), np.zeros(size)
+    order, starts = np.arange(size), np.zeros(size + 1, dtype=np.int64)
+    span_piece, span_start, span_end = (np.zeros(size, dtype=np.int64), np.zeros(size, dtype=np.int64),
+                                        np.zeros(size, dtype=np.int64))
+    ys, yo = np.empty((7, size)), np.empty((7, size))
+    most = 1
+    for i in range(rows.size):
+        most = max(most, int(params[pos[i], 6]))
+    count = np.zeros(most + 1, dtype=np.int64)
     for i in range(rows.size):
         r, o = pos[i], rows[i]
         nu_hi, nu_lo, f0 = params[r, 0], params[r, 1], params[r, 2]
         g_hi, g_lo, g0 = params[r, 3], params[r, 4], params[r, 5]
         n, base = params[r, 6], params[r, 7]
-        for e in range(t.shape[1]):
-            tk = t[o if per_row else 0, e]
-            x, u = locate(_reduced(nu_hi, nu_lo, f0, tk), n)
-            piece = coef[int(base + x)]
-            m0, m1, m2, _ = horner(piece, 0, u)
-            m_out[o, e, 0] = m0
-            m_out[o, e, 1] = m1
-            m_out[o, e, 2] = m2
+        tr = o if per_row else 0
+        for e0 in range(0, ne, _BLOCK):
+            nb = min(_BLOCK, ne - e0)
+            tb = t[tr, e0 : e0 + nb]
+            _phases(tb, nu_hi, nu_lo, f0, n, xs[:nb], us[:nb])
             if attitude:
-                sb, cb = _sincos(0.5 * _reduced(g_hi, g_lo, g0, tk))
-                a0, a1, a2, a3 = horner(piece, 4, u)
-                b0, b1, b2, b3 = horner(piece, 8, u)
-                q_out[o, e, 0] = cb * a0 + sb * b0
-                q_out[o, e, 1] = cb * a1 + sb * b1
-                q_out[o, e, 2] = cb * a2 + sb * b2
-                q_out[o, e, 3] = cb * a3 + sb * b3
+                _half_angles(tb, g_hi, g_lo, g0, sb[:nb], cb[:nb])
+            runs = 0
+            for j in range(1, nb):
+                if xs[j] != xs[j - 1]:
+                    runs += 1
+                    starts[runs] = j
+            runs += 1
+            starts[runs] = nb
+            long_runs = nb >= _LONG * runs and not attitude  # sorted momenta: no sort needed
+            sorted_ = not long_runs and nb >= _BUCKET * n
+            if sorted_:
+                _sort_by_piece(xs, us, sb, cb, nb, int(n), attitude, starts, runs, count, order, ub, sbb, cbb)
+                spans, start = 0, 0
+                for p in range(int(n)):
+                    if count[p] > start:
+                        span_piece[spans], span_start[spans], span_end[spans] = p, start, count[p]
+                        spans += 1
+                    start = count[p]
+                u, s, c = ub, sbb, cbb
+            elif nb >= _SHORT * runs:
+                spans = runs
+                for k in range(runs):
+                    span_piece[k], span_start[k], span_end[k] = int(xs[starts[k]]), starts[k], starts[k + 1]
+                u, s, c = us, sb, cb
+            else:
+                _epochwise(coef, base, xs, us, sb, cb, nb, ys, attitude)
+                _copy_out(ys, nb, m_out, q_out, o, e0, attitude)
+                continue
+            for k in range(spans):
+                j = span_start[k]
+                m = (span_end[k] - j + _LANES - 1) // _LANES * _LANES
+                piece = coef[int(base) + span_piece[k]]
+                _span_momentum(piece, u, ys, j, m)
+                if attitude:
+                    _span_attitude(piece, u, s, c, ys, j, m)
+            if not sorted_:
+                _copy_out(ys, nb, m_out, q_out, o, e0, attitude)
+            elif nb >= _SHORT * runs:  # runs: the outputs are written run by run, nearly in sequence
+                _scatter_out(ys, order, nb, m_out, q_out, o, e0, attitude)
+            else:  # scattered epochs: back to their order in the cache, then written in sequence (measured)
+                for k in range(7 if attitude else 3):
+                    yk, zk = ys[k], yo[k]
+                    for d in range(nb):
+                        zk[order[d]] = yk[d]
+                _copy_out(yo, nb, m_out, q_out, o, e0, attitude)
 
 
 def fill(const, pos, rows, t, scale, outs):
