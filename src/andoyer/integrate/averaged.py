@@ -45,8 +45,9 @@ from andoyer.integrate.secular import propagate_checked
 from andoyer.perturbations.model import Model
 from andoyer.state import State
 
-# the one Hamilton product, compiled inline into the attitude turn below
+# the one Hamilton product and Euler-angle quaternion, compiled inline into the attitude turn below
 jitable(quat.product)
+jitable(quat.from_zxz_one)
 
 __all__ = ["integrate_secular", "secular_parts"]
 
@@ -104,10 +105,13 @@ def _check_secular_size(averages: list[Any], unique: Array, t0: float, rtol: flo
     check_size("a secular run", steps=steps, step_seconds=_SECONDS_PER_STEP)
 
 
-def _node_and_inclination(M: Array) -> tuple[Array, Array]:
-    h = np.arctan2(M[..., 0], -M[..., 1])
-    inclination = np.arctan2(np.hypot(M[..., 0], M[..., 1]), M[..., 2])
-    return h, inclination
+@jitable
+def _node_and_inclination(x, y, z):
+    """Node ``h = atan2(x, −y)`` and inclination ``I = atan2(√(x² + y²), z)`` of the vector ``(x, y, z)``.
+
+    A kernel written once: components as floats (compiled) or arrays of shape (...).
+    """
+    return np.arctan2(x, -y), np.arctan2(np.hypot(x, y), z)
 
 
 def _turned(M0: Array, M: Array, q_free: Array) -> Array:
@@ -117,8 +121,8 @@ def _turned(M0: Array, M: Array, q_free: Array) -> Array:
     mean state of one body is otherwise a few dozen numpy calls on single numbers), else numpy.
     """
     if not NUMBA:
-        h0, I0 = _node_and_inclination(M0)
-        h, inclination = _node_and_inclination(M)
+        h0, I0 = _node_and_inclination(M0[..., 0], M0[..., 1], M0[..., 2])
+        h, inclination = _node_and_inclination(M[..., 0], M[..., 1], M[..., 2])
         return quat.multiply(quat.from_zxz(h, inclination - I0, -h0), q_free)
     out = np.empty(q_free.shape)
     _turned_compiled(M0, M, q_free, out)
@@ -128,17 +132,10 @@ def _turned(M0: Array, M: Array, q_free: Array) -> Array:
 @jit
 def _turned_compiled(M0, M, q_free, out):
     for i in range(M0.shape[0]):
-        h0 = np.arctan2(M0[i, 0], -M0[i, 1])
-        I0 = np.arctan2(np.hypot(M0[i, 0], M0[i, 1]), M0[i, 2])
+        h0, I0 = _node_and_inclination(M0[i, 0], M0[i, 1], M0[i, 2])
         for k in range(M.shape[0]):
-            x, y, z = M[k, i, 0], M[k, i, 1], M[k, i, 2]
-            h = np.arctan2(x, -y)
-            # quaternion of Rz(a) Rx(b) Rz(c), as andoyer._quaternion.from_zxz
-            a, b, c = h, np.arctan2(np.hypot(x, y), z) - I0, -h0
-            half_sum, half_diff = 0.5 * (a + c), 0.5 * (a - c)
-            cb, sb = np.cos(0.5 * b), np.sin(0.5 * b)
-            px, py = sb * np.cos(half_diff), sb * np.sin(half_diff)
-            pz, pw = cb * np.sin(half_sum), cb * np.cos(half_sum)
+            h, inclination = _node_and_inclination(M[k, i, 0], M[k, i, 1], M[k, i, 2])
+            px, py, pz, pw = quat.from_zxz_one(h, inclination - I0, -h0)
             q = q_free[k, i]
             out[k, i, 0], out[k, i, 1], out[k, i, 2], out[k, i, 3] = quat.product(
                 px, py, pz, pw, q[0], q[1], q[2], q[3]
