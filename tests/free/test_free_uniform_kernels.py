@@ -152,4 +152,4 @@ def test_uniform_kernels_evaluate_numpy_equals_compiled(case, rng):
     m_np, q_np = uni.evaluate(per_row, t)
     m_c, q_c = cuni.evaluate(table, t)
     for a, b in zip(m_np + q_np, m_c + q_c, strict=True):
-        assert np.array_equal(a, b)  # equal values (the phase of numpy adds +0.0: the sign of a zero may differ)
+        assert np.array_equal(a, b)  # equal values (numpy's phase adds +0.0: a zero's sign may differ)
