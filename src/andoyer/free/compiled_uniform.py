@@ -34,6 +34,7 @@ from andoyer.free.kernels.uniform import (
     quaternions,
     turn,
 )
+from andoyer.free.phase import phase
 from andoyer.regime import Regime
 from andoyer.special.compensated import dd_add, dd_div, dd_sqrt, two_prod, two_sum
 
@@ -130,24 +131,14 @@ def uniform_table(moments, m0, regime, q0=None):
     return UniformTable(out, period, rate)
 
 
-@jit
-def _cycles(hi, lo, t):
-    """``ν t`` reduced to ``[-1/2, 1/2]`` cycles (:func:`andoyer.free.phase.cycles`)."""
-    p, e = two_prod(hi, t)
-    e += lo * t
-    f = p - np.rint(p)
-    f += e
-    return f - np.rint(f)
-
-
 @jit(inline=True)  # per epoch of the loop below: a call costs as much as the state
 def _state(c, t, m, q, attitude_too):
     """Momentum (and attitude) of the state whose row is ``c`` at the scaled time ``t``."""
-    cb, sb = turn(_cycles(c[2], c[3], t))
+    cb, sb = turn(phase(c[2], c[3], t))
     m[0], m[1], m[2] = momentum(cb, sb, (c[4], c[5], c[6]), (c[7], c[8], c[9]), (c[10], c[11], c[12]))
     if not attitude_too:
         return
-    ca, sa = turn(_cycles(c[0], c[1], t))
+    ca, sa = turn(phase(c[0], c[1], t))
     q1, q2 = (c[13], c[14], c[15], c[16]), (c[17], c[18], c[19], c[20])
     q3, q4 = (c[21], c[22], c[23], c[24]), (c[25], c[26], c[27], c[28])
     q[0], q[1], q[2], q[3] = attitude(cb, sb, ca, sa, q1, q2, q3, q4)
