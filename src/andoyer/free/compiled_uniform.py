@@ -6,8 +6,8 @@ by applying the kernels of :mod:`andoyer.free.kernels.uniform` to whole arrays: 
 hundred array passes, which for a single body cost ~0.3 ms to set up and ~0.1 ms to
 evaluate. Here the same kernels (the same double-double arithmetic,
 :mod:`andoyer.special.compensated`) run per body in a compiled loop, a few µs in all, with
-the same bits (``tests/free/test_free_uniform_kernels.py``; the phases differ from numpy's
-by at most an ulp of a cycle, ``tests/free/test_free_compiled_uniform.py``).
+the same bits; the phases (:func:`andoyer.free.phase.phase` here, the pre-split
+:func:`andoyer.free.phase.cycles` there) the same values (``tests/free/test_free_uniform_kernels.py``).
 :class:`andoyer.free.FreeMotion` uses them with the compiled backend, as it does
 :mod:`andoyer.free.compiled_setup` for triaxial bodies.
 
