@@ -2,13 +2,13 @@
 
 :func:`andoyer.free.uniform.uniform` and :func:`andoyer.free.uniform.evaluate` form the
 constants and the motion of axisymmetric bodies, spheres, steady spins and bodies at rest
-with numpy double-double arithmetic on arrays: about a hundred array passes, which for a
-single body cost ~0.3 ms to set up and ~0.1 ms to evaluate. Here the same formulas in the
-same double-double arithmetic (:mod:`andoyer.special.compensated`: error-free products by fused
-multiply-add, one-correction division) run per body in a compiled loop, a few µs in all;
-the constants agree with the numpy ones to an ulp of their low parts, the motion to a few
-ulps (``tests/free/test_free_compiled_uniform.py``). :class:`andoyer.free.FreeMotion`
-uses them when numba is installed (:data:`andoyer._jit.NUMBA`), as it does
+by applying the kernels of :mod:`andoyer.free.kernels.uniform` to whole arrays: about a
+hundred array passes, which for a single body cost ~0.3 ms to set up and ~0.1 ms to
+evaluate. Here the same kernels (the same double-double arithmetic,
+:mod:`andoyer.special.compensated`) run per body in a compiled loop, a few µs in all, with
+the same bits; the phases (:func:`andoyer.free.phase.phase` here, the pre-split
+:func:`andoyer.free.phase.cycles` there) the same values (``tests/free/test_free_uniform_kernels.py``).
+:class:`andoyer.free.FreeMotion` uses them with the compiled backend, as it does
 :mod:`andoyer.free.compiled_setup` for triaxial bodies.
 
 The table has one row per state (columns in :data:`COLUMNS`): the double-double
@@ -23,17 +23,22 @@ from typing import NamedTuple
 
 import numpy as np
 
-from andoyer._jit import jit, jitable
-from andoyer._quaternion import product
+from andoyer._jit import jit
+from andoyer.free.kernels.uniform import (
+    attitude,
+    axes,
+    component,
+    decomposition,
+    frequencies,
+    momentum,
+    quaternions,
+    turn,
+)
+from andoyer.free.phase import phase
 from andoyer.regime import Regime
-from andoyer.special.compensated import dd_add, dd_div, dd_mul, dd_sqrt, two_prod, two_sum
+from andoyer.special.compensated import dd_add, dd_div, dd_sqrt, two_prod, two_sum
 
 __all__ = ["COLUMNS", "UniformTable", "evaluate", "fill", "polhode_limit", "uniform_table"]
-
-# the one Hamilton product, compiled inline into the kernels below
-jitable(product)
-
-_TWO_PI_HI, _TWO_PI_LO = 2.0 * 3.141592653589793, 2.0 * 1.2246467991473532e-16
 
 #: Columns of the table: ``spin`` (hi, lo), ``body`` (hi, lo), ``m_par``, ``m_perp``,
 #: ``m_cross`` (3 each, from column 4), ``q1 … q4`` (4 each, from column 13).
@@ -57,78 +62,26 @@ class UniformTable(NamedTuple):
 
 
 @jit
-def _axes(I, m, axisymmetric):
-    """:func:`andoyer.free.uniform.uniform_axes` of one state: the axis ``ŝ``, ``I_s`` and ``I_t``."""
-    o0, o1, o2 = 0, 1, 2  # a stable sort of the moments
-    if I[o1] < I[o0]:
-        o0, o1 = o1, o0
-    if I[o2] < I[o1]:
-        o1, o2 = o2, o1
-        if I[o1] < I[o0]:
-            o0, o1 = o1, o0
-    if axisymmetric:
-        if I[o0] == I[o1]:
-            return o2, I[o2], I[o0]
-        return o0, I[o0], I[o2]
-    k = 0  # the largest momentum component, the first of equals
-    for j in range(1, 3):
-        if abs(m[j]) > abs(m[k]):
-            k = j
-    return k, I[k], I[k]
-
-
-@jit
 def _setup(moments, m0, axisymmetric, q0, out, period, rate):
-    attitude = q0.shape[0] > 0
+    with_attitude = q0.shape[0] > 0
     for i in range(m0.shape[0]):
         m = m0[i]
-        k, I_s, I_t = _axes(moments[i], m, axisymmetric[i])
-        ms = m[k]
-        a0, a1 = two_prod(m[0], m[0])
-        b0, b1 = two_prod(m[1], m[1])
-        c0, c1 = two_prod(m[2], m[2])
-        gh, gl = dd_add(a0, a1, b0, b1)
-        gh, gl = dd_add(gh, gl, c0, c1)
-        gh, gl = dd_sqrt(gh, gl)
-        dh, dl = dd_mul(I_t, 0.0, _TWO_PI_HI, _TWO_PI_LO)
-        sh, sl = dd_div(gh, gl, dh, dl)  # Ω/2π = G/(2π I_t)
-        # λ = m_s (I_t − I_s)/(I_s I_t), the difference exact, then / 2π
-        xh, xl = two_sum(I_t, -I_s)
-        xh, xl = dd_mul(xh, xl, ms, 0.0)
-        ph, pl = two_prod(I_s, I_t)
-        lh, ll = dd_div(xh, xl, ph, pl)
-        lh, ll = dd_div(lh, ll, _TWO_PI_HI, _TWO_PI_LO)
+        k, I_s, I_t = axes(moments[i], m, axisymmetric[i])
+        m_s = component(m, k)
+        G, sh, sl, lh, ll, period[i], rate[i] = frequencies(m, m_s, I_s, I_t)
+        m_par, m_perp, m_cross = decomposition(m, k, m_s)
         row = out[i]
         row[0], row[1], row[2], row[3] = sh, sl, lh, ll
         for j in range(3):
-            par = ms if j == k else 0.0
-            row[4 + j] = par
-            row[7 + j] = m[j] - par
-        # ŝ × m₀ with ŝ the unit vector along axis k
-        i1, i2 = (k + 1) % 3, (k + 2) % 3
-        row[10 + k] = 0.0
-        row[10 + i2] = m[i1]
-        row[10 + i1] = -m[i2]
-        period[i] = abs(1.0 / lh) if lh != 0.0 else math.inf
-        rate[i] = 2.0 * np.pi * sh
-        if not attitude:
+            row[4 + j] = m_par[j]
+            row[7 + j] = m_perp[j]
+            row[10 + j] = m_cross[j]
+        if not with_attitude:
             continue
-        x, y, z, w = q0[i, 0], q0[i, 1], q0[i, 2], q0[i, 3]
-        # m_ref = rot(q₀) m₀, the rotation matrix of the unit quaternion q₀
-        xx, yy, zz, ww = x * x, y * y, z * z, w * w
-        r0 = (ww + xx - yy - zz) * m[0] + 2.0 * (x * y - z * w) * m[1] + 2.0 * (x * z + y * w) * m[2]
-        r1 = 2.0 * (x * y + z * w) * m[0] + (ww - xx + yy - zz) * m[1] + 2.0 * (y * z - x * w) * m[2]
-        r2 = 2.0 * (x * z - y * w) * m[0] + 2.0 * (y * z + x * w) * m[1] + (ww - xx - yy + zz) * m[2]
-        if gh > 0:
-            r0, r1, r2 = r0 / gh, r1 / gh, r2 / gh
-        else:
-            r0, r1, r2 = 0.0, 0.0, 0.0
-        s0, s1, s2 = (1.0 if k == 0 else 0.0), (1.0 if k == 1 else 0.0), (1.0 if k == 2 else 0.0)
-        q2 = product(x, y, z, w, s0, s1, s2, 0.0)
-        q3 = product(r0, r1, r2, 0.0, x, y, z, w)
-        q4 = product(r0, r1, r2, 0.0, q2[0], q2[1], q2[2], q2[3])
-        row[13], row[14], row[15], row[16] = x, y, z, w
+        q = q0[i]
+        q2, q3, q4 = quaternions(q, m, k, G)
         for j in range(4):
+            row[13 + j] = q[j]
             row[17 + j] = q2[j]
             row[21 + j] = q3[j]
             row[25 + j] = q4[j]
@@ -138,7 +91,8 @@ def uniform_table(moments, m0, regime, q0=None):
     """Constants of regular precession about a body axis (or steady spin), compiled.
 
     The axis and moments of :func:`andoyer.free.uniform.uniform_axes` and the constants of
-    :func:`andoyer.free.uniform.uniform`, in one loop.
+    :func:`andoyer.free.uniform.uniform`: the same kernels (:mod:`andoyer.free.kernels.uniform`)
+    per state, in one loop.
 
     Parameters
     ----------
@@ -177,32 +131,17 @@ def uniform_table(moments, m0, regime, q0=None):
     return UniformTable(out, period, rate)
 
 
-@jit
-def _cycles(hi, lo, t):
-    """``ν t`` reduced to ``[-1/2, 1/2]`` cycles (:func:`andoyer.free.phase.cycles`)."""
-    p, e = two_prod(hi, t)
-    e += lo * t
-    f = p - np.rint(p)
-    f += e
-    return f - np.rint(f)
-
-
-@jit
-def _state(c, t, m, q, attitude):
+@jit(inline=True)  # per epoch of the loop below: a call costs as much as the state
+def _state(c, t, m, q, attitude_too):
     """Momentum (and attitude) of the state whose row is ``c`` at the scaled time ``t``."""
-    beta = np.pi * _cycles(c[2], c[3], t)
-    cb, sb = math.cos(beta), math.sin(beta)
-    c2 = 1.0 - 2.0 * sb * sb
-    s2 = -2.0 * sb * cb  # sin(−λt)
-    for k in range(3):
-        m[k] = c[4 + k] + c[7 + k] * c2 + c[10 + k] * s2
-    if not attitude:
+    cb, sb = turn(phase(c[2], c[3], t))
+    m[0], m[1], m[2] = momentum(cb, sb, (c[4], c[5], c[6]), (c[7], c[8], c[9]), (c[10], c[11], c[12]))
+    if not attitude_too:
         return
-    alpha = np.pi * _cycles(c[0], c[1], t)
-    ca, sa = math.cos(alpha), math.sin(alpha)
-    w1, w2, w3, w4 = ca * cb, ca * sb, sa * cb, sa * sb
-    for k in range(4):
-        q[k] = w1 * c[13 + k] + w2 * c[17 + k] + w3 * c[21 + k] + w4 * c[25 + k]
+    ca, sa = turn(phase(c[0], c[1], t))
+    q1, q2 = (c[13], c[14], c[15], c[16]), (c[17], c[18], c[19], c[20])
+    q3, q4 = (c[21], c[22], c[23], c[24]), (c[25], c[26], c[27], c[28])
+    q[0], q[1], q[2], q[3] = attitude(cb, sb, ca, sa, q1, q2, q3, q4)
 
 
 @jit

@@ -22,7 +22,8 @@ closed-form solution written for scalars:
   the cancellation near pure spin costs only ``eps·|Δφ|`` in absolute angle), with
   Carlson's ``R_F``, ``R_J`` (DLMF 19.25.14–15, 19.36);
 * two equal moments (and the sphere): ``q(h) = q₀ ⊗ R_{m̂₀}(G h/I_t) ⊗ R_e(λ h)``,
-  ``λ = m_e (1/I_s − 1/I_t)``, ``m(h) = R_e(−λ h) m₀``;
+  ``λ = m_e (1/I_s − 1/I_t)``, ``m(h) = R_e(−λ h) m₀``: the kernels of
+  :mod:`andoyer.free.kernels.uniform` that :class:`~andoyer.free.FreeMotion` evaluates, at ``t = h``;
 * steady spin about the polhode axis: ``q(h) = q₀ ⊗ R_e(G w₃ h)``.
 
 States on (or within ``10⁻¹²`` relative of) the separatrix are flagged and left to
@@ -41,6 +42,16 @@ import numpy as np
 from andoyer._jit import NUMBA, jit, jitable
 from andoyer._quaternion import product
 from andoyer.free.kernels.elliptic import am, carlson_rf, carlson_rj, third_minus_a_unwrapped
+from andoyer.free.kernels.uniform import (
+    attitude,
+    component,
+    decomposition,
+    frequencies,
+    momentum,
+    quaternions,
+    turn,
+)
+from andoyer.free.phase import phase
 
 __all__ = ["NUMBA", "free_step", "jit"]
 
@@ -75,24 +86,19 @@ def _turn(q, axis, angle):
 
 @jit
 def _uniform(q, m, h, k, I_s, I_t):
-    """Two equal moments ``I_t`` (symmetry axis ``k``, moment ``I_s``) or a sphere (``k < 0``)."""
-    g = math.sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2])
-    if g == 0.0:
-        return
-    axis = np.empty(3)
-    axis[0], axis[1], axis[2] = m[0] / g, m[1] / g, m[2] / g
-    _turn(q, axis, g * h / I_t)
-    if k < 0:
-        return
-    lam = m[k] * (I_t - I_s) / (I_s * I_t)
-    e = np.zeros(3)
-    e[k] = 1.0
-    _turn(q, e, lam * h)
-    i, j = (k + 1) % 3, (k + 2) % 3
-    s, c = math.sin(lam * h), math.cos(lam * h)
-    mi, mj = m[i], m[j]
-    m[i] = c * mi + s * mj
-    m[j] = -s * mi + c * mj
+    """Two equal moments ``I_t`` (symmetry axis ``k``, moment ``I_s``) or a sphere (any ``k``, ``I_s = I_t``).
+
+    The kernels of :mod:`andoyer.free.kernels.uniform` at ``t = h``.
+    """
+    m_s = component(m, k)
+    G, sh, sl, lh, ll, _, _ = frequencies(m, m_s, I_s, I_t)
+    m_par, m_perp, m_cross = decomposition(m, k, m_s)
+    q1 = (q[0], q[1], q[2], q[3])
+    q2, q3, q4 = quaternions(q1, m, k, G)
+    cb, sb = turn(phase(lh, ll, h))
+    ca, sa = turn(phase(sh, sl, h))
+    m[0], m[1], m[2] = momentum(cb, sb, m_par, m_perp, m_cross)
+    q[0], q[1], q[2], q[3] = attitude(cb, sb, ca, sa, q1, q2, q3, q4)
 
 
 @jit
@@ -108,7 +114,7 @@ def _step_one(moments, q, m, h):
         ia, ib = ib, ia
     A, B, C = I[ia], I[ib], I[ic]
     if A == C:
-        _uniform(q, m, h, -1, A, A)
+        _uniform(q, m, h, 0, A, A)
         return True
     if A == B:
         _uniform(q, m, h, ic, C, A)

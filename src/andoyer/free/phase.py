@@ -18,9 +18,10 @@ from typing import NamedTuple
 
 import numpy as np
 
-from andoyer.special.compensated import split
+from andoyer._jit import jitable
+from andoyer.special.compensated import split, two_prod
 
-__all__ = ["Frequency", "cycles", "frequency", "sincos_cycles"]
+__all__ = ["Frequency", "cycles", "frequency", "phase", "sincos_cycles"]
 
 
 class Frequency(NamedTuple):
@@ -108,6 +109,38 @@ def cycles(freq: Frequency, t, tt=None, offset=0.0):
     np.round(f, out=p)
     f -= p
     return f
+
+
+@jitable
+def phase(hi, lo, t):
+    """``ν t`` reduced to ``[-1/2, 1/2]`` cycles, per state: the kernel form of :func:`cycles`.
+
+    The same value as :func:`cycles` (the error of ``ν_hi t`` is exact either way: a
+    fused multiply-add when compiled, Dekker's product here), without the pre-split
+    frequency that pays off only on arrays of epochs; compiled loops call it inline.
+
+    Parameters
+    ----------
+    hi, lo : float or ndarray, shape (...)
+        The double-double frequency ``ν`` in cycles per unit time.
+    t : float or ndarray, shape (...)
+        Times, broadcast with ``ν``.
+
+    Returns
+    -------
+    float or ndarray, shape (...)
+        The reduced phase in cycles.
+
+    Examples
+    --------
+    >>> float(phase(1.0 / 3.0, 1.850371707708594e-17, 3e15))  # 1/3 as a double-double
+    0.0
+    """
+    p, e = two_prod(hi, t)
+    e += lo * t
+    f = p - np.rint(p)
+    f += e
+    return f - np.rint(f)
 
 
 # Polynomials in f² for sin(πf)/f and cos(πf) on |f| ≤ 1/2: least-squares fits on

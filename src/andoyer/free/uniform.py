@@ -12,6 +12,10 @@ uniform rotation about the fixed angular momentum and one about the body axis ``
 motion of a sphere, of any steady spin about a principal axis (including the unstable
 one) and, with ``Ω = 0``, of a body at rest.  Both angles are carried as double-double
 phases (:mod:`andoyer.free.phase`).
+
+Here is the numpy path, on arrays of states: each formula is a kernel of
+:mod:`andoyer.free.kernels.uniform` applied to whole arrays, one per component, the same
+kernels that :mod:`andoyer.free.compiled_uniform` compiles per state.
 """
 
 from __future__ import annotations
@@ -19,26 +23,13 @@ from __future__ import annotations
 from typing import NamedTuple
 
 import numpy as np
-from scipy.spatial.transform import Rotation
 
-from andoyer._quaternion import product
+from andoyer.free.kernels import uniform as _k
 from andoyer.free.phase import Frequency, cycles, frequency
 from andoyer.regime import Regime
-from andoyer.special.compensated import (
-    PI_DD,
-    dd_add,
-    dd_div,
-    dd_mul,
-    dd_sqrt,
-    split,
-    two_prod,
-    two_sum,
-)
+from andoyer.special.compensated import split
 
 __all__ = ["Uniform", "evaluate", "uniform", "uniform_axes"]
-
-_TWO_PI = (2.0 * PI_DD[0], 2.0 * PI_DD[1])
-
 
 class Uniform(NamedTuple):
     """Per-state constants of uniform motions (vectors ``(3, N)``, quaternions ``(4, N)``).
@@ -95,46 +86,28 @@ def uniform(m0, axis, I_s, I_t, q0=None):
     (37.699111843078, 0.559016994375)
     """
     n = m0.shape[0]
-    rows = np.arange(n)
-    m_s = m0[rows, axis]
-    s_hat = np.zeros((n, 3))
-    s_hat[rows, axis] = 1.0
-    sq = [two_prod(m0[:, i], m0[:, i]) for i in range(3)]
-    G = dd_sqrt(*dd_add(*dd_add(*sq[0], *sq[1]), *sq[2]))
-    spin = dd_div(*G, *dd_mul(I_t, 0.0, *_TWO_PI))  # Ω/2π = G/(2π I_t)
-    # λ = m_s (I_t − I_s)/(I_s I_t), exact difference, then / 2π
-    lam = dd_div(*dd_mul(*two_sum(I_t, -I_s), m_s, 0.0), *two_prod(I_s, I_t))
-    lam = dd_div(*lam, *_TWO_PI)
-    m_par = s_hat * m_s[:, None]
-    m_perp = m0 - m_par
-    m_cross = np.cross(s_hat, m0)
-    with np.errstate(divide="ignore"):
-        period = np.abs(1.0 / lam[0])
+    m = np.ascontiguousarray(m0.T)  # one array per component
+    m_s = _k.component(m, axis)
+    G, sh, sl, lh, ll, period, rate = _k.frequencies(m, m_s, I_s, I_t)
+    m_par, m_perp, m_cross = _k.decomposition(m, axis, m_s)
     const = Uniform(
-        spin=frequency(*spin),
-        body=frequency(*lam),
-        m_par=m_par.T,
-        m_perp=m_perp.T,
-        m_cross=m_cross.T,
+        spin=frequency(sh, sl),
+        body=frequency(lh, ll),
+        m_par=np.stack(m_par),
+        m_perp=np.stack(m_perp),
+        m_cross=np.stack(m_cross),
         q1=np.zeros((4, n)),
         q2=np.zeros((4, n)),
         q3=np.zeros((4, n)),
         q4=np.zeros((4, n)),
         period=period,
-        precession_rate=2.0 * np.pi * spin[0],
+        precession_rate=rate,
     )
     if q0 is None:
         return const
-    g = G[0]
-    m_ref = Rotation.from_quat(q0).apply(m0)
-    m_hat = np.where(g[:, None] > 0, m_ref / np.where(g > 0, g, 1.0)[:, None], 0.0)
-    sq_ = (*s_hat.T, np.zeros(n))
-    mq = (*m_hat.T, np.zeros(n))
-    q1 = tuple(q0.T)
-    q2 = product(*q1, *sq_)
-    return const._replace(
-        q1=np.stack(q1), q2=np.stack(q2), q3=np.stack(product(*mq, *q1)), q4=np.stack(product(*mq, *q2))
-    )
+    q1 = np.ascontiguousarray(q0.T)
+    q2, q3, q4 = _k.quaternions(q1, m, axis, G)
+    return const._replace(q1=q1, q2=np.stack(q2), q3=np.stack(q3), q4=np.stack(q4))
 
 
 def uniform_axes(moments, m0, regime):
@@ -161,16 +134,7 @@ def uniform_axes(moments, m0, regime):
     >>> int(axis[0]), float(I_s[0]), float(I_t[0])
     (1, 3.0, 2.0)
     """
-    order = np.argsort(moments, axis=-1, kind="stable")
-    rows = np.arange(moments.shape[0])
-    s = moments[rows[:, None], order]
-    distinct = np.where(s[:, 0] == s[:, 1], order[:, 2], order[:, 0])
-    spin_axis = np.argmax(np.abs(m0), axis=-1)
-    axis = np.where(regime == Regime.AXISYMMETRIC, distinct, spin_axis)
-    I_s = moments[rows, axis]
-    transverse = np.where(s[:, 0] == s[:, 1], s[:, 0], s[:, 2])
-    I_t = np.where(regime == Regime.AXISYMMETRIC, transverse, I_s)
-    return axis, I_s, I_t
+    return _k.axes(moments.T, m0.T, regime == Regime.AXISYMMETRIC)
 
 
 def evaluate(c: Uniform, t, attitude=True):
@@ -198,15 +162,9 @@ def evaluate(c: Uniform, t, attitude=True):
     [0.0, 0.5, 1.0]
     """
     tt = split(t)
-    beta = np.pi * cycles(c.body, t, tt)
-    cb, sb = np.cos(beta), np.sin(beta)
-    c2 = 1.0 - 2.0 * sb * sb
-    s2 = -2.0 * sb * cb  # sin(−λt)
-    m = tuple(c.m_par[k] + c.m_perp[k] * c2 + c.m_cross[k] * s2 for k in range(3))
+    cb, sb = _k.turn(cycles(c.body, t, tt))
+    m = _k.momentum(cb, sb, c.m_par, c.m_perp, c.m_cross)
     if not attitude:
         return m, None
-    alpha = np.pi * cycles(c.spin, t, tt)
-    ca, sa = np.cos(alpha), np.sin(alpha)
-    w1, w2, w3, w4 = ca * cb, ca * sb, sa * cb, sa * sb
-    q = tuple(w1 * c.q1[k] + w2 * c.q2[k] + w3 * c.q3[k] + w4 * c.q4[k] for k in range(4))
-    return m, q
+    ca, sa = _k.turn(cycles(c.spin, t, tt))
+    return m, _k.attitude(cb, sb, ca, sa, c.q1, c.q2, c.q3, c.q4)
