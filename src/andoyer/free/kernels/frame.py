@@ -29,6 +29,7 @@ __all__ = [
     "invariants",
     "inverse_difference",
     "permutation_quaternion",
+    "shortest_arc",
     "sorted_axes",
     "working_axes",
 ]
@@ -246,11 +247,38 @@ def permutation_quaternion(p1, p2, p3, sigma2, sigma3):
 
 
 @jitable
+def shortest_arc(m1, m2, m3, g):
+    """Rotation taking the direction of ``m`` to ``+z`` by the shortest arc.
+
+    ``S(m) = (m₂, −m₁, 0, G + m₃)/√(2G(G + m₃))``: the rotation about ``m × z`` by the angle
+    between them; regular wherever ``m`` is not along ``−z``.
+
+    Parameters
+    ----------
+    m1, m2, m3, g : float or ndarray, shape (...)
+        The vector and its norm ``G`` (``m₃ > −G``).
+
+    Returns
+    -------
+    x, y, z, w : float or ndarray, shape (...)
+        Scalar last.
+
+    Examples
+    --------
+    >>> [round(float(x), 12) for x in shortest_arc(1.0, 2.0, 2.0, 3.0)]
+    [0.36514837167, -0.182574185835, 0.0, 0.912870929175]
+    """
+    w = g + m3
+    nrm = np.sqrt(2.0 * g * w)
+    return m2 / nrm, -m1 / nrm, 0.0, w / nrm
+
+
+@jitable
 def anchor(q0x, q0y, q0z, q0w, pq, m1, m2, m3, g):
     """Constant quaternions ``U = Q₀ ⊗ P`` and ``V = Q₀ ⊗ e_z ⊗ P`` of the attitude.
 
-    ``Q₀ = q₀ ⊗ P* ⊗ S(m_w)*`` with ``S(m) = (m₂, −m₁, 0, G + m₃)/√(2G(G + m₃))`` the
-    shortest arc taking ``m_w`` to ``+z`` (:func:`andoyer.free.regime.attitude_anchor`).
+    ``Q₀ = q₀ ⊗ P* ⊗ S(m_w)*`` with ``S`` the :func:`shortest_arc` taking ``m_w`` to ``+z``
+    (:func:`andoyer.free.regime.attitude_anchor`).
 
     Parameters
     ----------
@@ -271,10 +299,9 @@ def anchor(q0x, q0y, q0z, q0w, pq, m1, m2, m3, g):
     >>> [float(x) for x in u], [float(x) for x in v]
     ([0.0, 0.0, 0.0, 1.0], [0.0, 0.0, 1.0, 0.0])
     """
-    w = g + m3
-    nrm = np.sqrt(2.0 * g * w)
+    sx, sy, sz, sw = shortest_arc(m1, m2, m3, g)
     q_rw = product(q0x, q0y, q0z, q0w, -pq[0], -pq[1], -pq[2], pq[3])
-    q_0 = product(q_rw[0], q_rw[1], q_rw[2], q_rw[3], -m2 / nrm, m1 / nrm, 0.0, w / nrm)
+    q_0 = product(q_rw[0], q_rw[1], q_rw[2], q_rw[3], -sx, -sy, sz, sw)  # S* (its z is 0)
     u = product(q_0[0], q_0[1], q_0[2], q_0[3], pq[0], pq[1], pq[2], pq[3])
     z = product(q_0[0], q_0[1], q_0[2], q_0[3], 0.0, 0.0, 1.0, 0.0)
     return u, product(z[0], z[1], z[2], z[3], pq[0], pq[1], pq[2], pq[3])
