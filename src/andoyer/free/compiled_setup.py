@@ -4,15 +4,17 @@
 a few hundred passes over the arrays, most of them double-double arithmetic (the working
 frame and invariants of :func:`andoyer.free.regime.polhode_frame`, ``K`` and ``Π`` by the
 AGM, the frequencies), 6–10 µs a body.  Here the same formulas run per body in a numba
-kernel, about 1 µs a body: most of them are the very kernels the numpy set-up calls
-(:mod:`andoyer.free.kernels.triaxial`, :func:`andoyer.special.theta.quotient_constants`),
-run on floats in the double-double arithmetic of :mod:`andoyer.special.compensated` (error-free
-products by fused multiply-add, one-correction division); the working frame and its
-invariants, ``K'`` and the attitude anchor are still written here for one body.  ``K`` is
-taken from the AGM sequence of ``Π`` (the same sequence), ``K'`` from the nome, the ``ψ``
-offset from the series at ``τ₀`` directly, and without an attitude the quantities only
-the attitude needs (``Π``, the ``ϑ₁`` series) can be skipped.  The constants agree with
-the numpy ones to a few ulps (``tests/free/test_free_compiled.py``); they are stored one
+kernel, about 1 µs a body: most of them are the very kernels the numpy set-up calls (the
+working frame, its invariants and the attitude anchor of :mod:`andoyer.free.kernels.frame`,
+the formulas of :mod:`andoyer.free.kernels.triaxial`,
+:func:`andoyer.special.theta.quotient_constants`), run on floats in the double-double
+arithmetic of :mod:`andoyer.special.compensated` (error-free products by fused multiply-add,
+one-correction division).  Written here for one body: ``K`` is taken from the AGM sequence
+of ``Π`` (the same sequence), ``K'`` from the nome (the numpy set-up runs a second AGM), the
+``ψ`` offset from the series at ``τ₀`` directly (the numpy set-up evaluates its per-epoch
+series at ``t = 0``), and without an attitude the quantities only the attitude needs
+(``Π``, the ``ϑ₁`` series) can be skipped.  The constants agree with the numpy ones to a few
+ulps, the frame's and the anchor's bit for bit (``tests/free/test_free_compiled.py``); they are stored one
 row per body, as :mod:`andoyer.free.compiled_eval` reads them, in the columns named by
 :mod:`andoyer.free.table`.
 :class:`andoyer.free.FreeMotion` uses both when numba is installed

@@ -16,7 +16,9 @@ the separatrix, ``A`` for LAM), axis 2 is the middle axis ``B`` and ``m₃ > 0``
    P_3 = m_2^2 e_{12} + m_3^2 e_{13} = s(G^2 w_1 - D),\quad
    P_2 = m_3^2 e_{23} - m_1^2 e_{12} = s(G^2 w_2 - D)
 
-give every constant of the solution (:mod:`andoyer.free.triaxial`).
+give every constant of the solution (:mod:`andoyer.free.triaxial`).  Each formula of the frame
+is one kernel of :mod:`andoyer.free.kernels.frame`, run here on arrays and by the compiled
+set-up on floats.
 """
 
 from __future__ import annotations
