@@ -39,7 +39,7 @@ def _on_floats(moments, m0, lam, q0, ints, floats):
         i1, i2, i3 = moments[i, 0], moments[i, 1], moments[i, 2]
         x1, x2, x3 = m0[i, 0], m0[i, 1], m0[i, 2]
         a, b, c = kf.sorted_axes(i1, i2, i3)
-        p1, p2, p3, sigma2, sigma3 = kf.working_axes(a, b, c, lam[i], x1, x2, x3)
+        p1, p2, p3, sigma2, sigma3 = kf.polhode_axes(a, b, c, lam[i], x1, x2, x3)
         m1 = kf.component(x1, x2, x3, p1)
         m2 = kf.component(x1, x2, x3, p2) * sigma2
         m3 = kf.component(x1, x2, x3, p3) * sigma3
@@ -67,7 +67,7 @@ def _on_arrays(moments, m0, lam, q0):
     i1, i2, i3 = moments.T
     x1, x2, x3 = m0.T
     a, b, c = kf.sorted_axes(i1, i2, i3)
-    p1, p2, p3, sigma2, sigma3 = kf.working_axes(a, b, c, lam, x1, x2, x3)
+    p1, p2, p3, sigma2, sigma3 = kf.polhode_axes(a, b, c, lam, x1, x2, x3)
     m1 = kf.component(x1, x2, x3, p1)
     m2 = kf.component(x1, x2, x3, p2) * sigma2
     m3 = kf.component(x1, x2, x3, p3) * sigma3
@@ -105,7 +105,7 @@ def test_working_axes_give_a_proper_frame_around_the_polhode_axis(lam):
     moments, m0, _, _ = _states(7)
     flags = np.full(moments.shape[0], lam)
     a, b, c = kf.sorted_axes(*moments.T)
-    p1, p2, p3, sigma2, sigma3 = kf.working_axes(a, b, c, flags, *m0.T)
+    p1, p2, p3, sigma2, sigma3 = kf.polhode_axes(a, b, c, flags, *m0.T)
     matrix = np.zeros((moments.shape[0], 3, 3))  # rows: working axes in body components
     rows = np.arange(moments.shape[0])
     for j, (p, sigma) in enumerate(((p1, 1.0), (p2, sigma2), (p3, sigma3))):
@@ -169,7 +169,7 @@ def test_invariants_match_exact_rational_arithmetic(s):
 def test_anchor_reproduces_the_initial_attitude():
     moments, m0, lam, q0 = _states(17, n=50)
     a, b, c = kf.sorted_axes(*moments.T)
-    p1, p2, p3, sigma2, sigma3 = kf.working_axes(a, b, c, lam, *m0.T)
+    p1, p2, p3, sigma2, sigma3 = kf.polhode_axes(a, b, c, lam, *m0.T)
     x1, x2, x3 = m0.T
     mw = np.stack([kf.component(x1, x2, x3, p1), kf.component(x1, x2, x3, p2) * sigma2,
                    kf.component(x1, x2, x3, p3) * sigma3], axis=1)

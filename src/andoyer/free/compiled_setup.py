@@ -29,7 +29,7 @@ import numpy as np
 
 from andoyer._jit import jit
 from andoyer.free.compiled_eval import _count
-from andoyer.free.kernels.frame import anchor, invariants, permutation_quaternion, sorted_axes, working_axes
+from andoyer.free.kernels.frame import anchor, invariants, permutation_quaternion, polhode_axes, sorted_axes
 from andoyer.free.kernels.triaxial import (
     amplitudes,
     initial_phase,
@@ -123,7 +123,7 @@ def _body(Ib, mb, lam, q0, out, i, full):
     """Constants of body ``i`` into row ``i`` of ``out`` (columns: :mod:`andoyer.free.table`)."""
     # working frame: axis 3 the polhode axis (C for SAM, A for LAM), axis 2 the middle one
     # (the kernels of andoyer.free.kernels.frame, as andoyer.free.regime.polhode_frame)
-    p1, p2, p3, sigma2, sigma3 = working_axes(*sorted_axes(Ib[0], Ib[1], Ib[2]), lam, mb[0], mb[1], mb[2])
+    p1, p2, p3, sigma2, sigma3 = polhode_axes(*sorted_axes(Ib[0], Ib[1], Ib[2]), lam, mb[0], mb[1], mb[2])
     mw = (mb[p1], mb[p2] * sigma2, mb[p3] * sigma3)
     s = -1.0 if lam else 1.0
     e12, e13, e23, P1, P2, P3, g_dd, w3 = invariants(s, Ib[p1], Ib[p2], Ib[p3], mw[0], mw[1], mw[2])

@@ -41,7 +41,7 @@ import numpy as np
 from andoyer._jit import NUMBA, jit, jitable
 from andoyer._quaternion import product
 from andoyer.free.kernels.elliptic import am, carlson_rf, carlson_rj, third_minus_a_unwrapped
-from andoyer.free.kernels.frame import sorted_axes, working_axes
+from andoyer.free.kernels.frame import polhode_axes, sorted_axes
 
 __all__ = ["NUMBA", "free_step", "jit"]
 
@@ -120,7 +120,7 @@ def _step_one(moments, q, m, h):
         return False
     lam = t1 < t2
     # the working frame of andoyer.free.kernels.frame: working axis j is sigma_j times body axis
-    iu, ib, ip, s2, s3 = working_axes(ia, ib, ic, bool(lam), float(m[0]), float(m[1]), float(m[2]))
+    iu, ib, ip, s2, s3 = polhode_axes(ia, ib, ic, bool(lam), float(m[0]), float(m[1]), float(m[2]))
     s = -1.0 if lam else 1.0
     I1, I2, I3 = I[iu], I[ib], I[ip]
     m1, m2, m3 = m[iu], s2 * m[ib], s3 * m[ip]

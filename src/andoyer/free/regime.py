@@ -191,7 +191,7 @@ def polhode_frame(moments, m0, lam):
     i = [moments[:, k] for k in range(3)]
     m = [m0[:, k] for k in range(3)]
     a, b, c = kf.sorted_axes(*i)
-    p1, p2, p3, sigma2, sigma3 = kf.working_axes(a, b, c, lam, *m)
+    p1, p2, p3, sigma2, sigma3 = kf.polhode_axes(a, b, c, lam, *m)
     perm = np.stack([p1, p2, p3], axis=-1)
     sign = np.stack([np.ones_like(sigma3), sigma2, sigma3], axis=-1)
     Iw = np.take_along_axis(moments, perm, axis=-1)

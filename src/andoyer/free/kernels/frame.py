@@ -29,9 +29,9 @@ __all__ = [
     "invariants",
     "inverse_difference",
     "permutation_quaternion",
+    "polhode_axes",
     "shortest_arc",
     "sorted_axes",
-    "working_axes",
 ]
 
 # the one Hamilton product, compiled inline into the kernels below
@@ -91,7 +91,7 @@ def component(x0, x1, x2, k):
 
 
 @jitable
-def working_axes(a, b, c, lam, m1, m2, m3):
+def polhode_axes(a, b, c, lam, m1, m2, m3):
     """Body axes ``p₁, p₂, p₃`` and signs ``σ₂, σ₃`` of the working frame.
 
     ``p₃`` is the polhode axis (``c``, the axis of maximum moment, or ``a`` for LAM), ``p₂ = b``,
@@ -114,7 +114,7 @@ def working_axes(a, b, c, lam, m1, m2, m3):
 
     Examples
     --------
-    >>> working_axes(1, 2, 0, False, 1.0, 0.1, -0.2)
+    >>> polhode_axes(1, 2, 0, False, 1.0, 0.1, -0.2)
     (1, 2, 0, 1.0, 1.0)
     """
     p1, p3 = select(lam, c, a), select(lam, a, c)
@@ -204,7 +204,7 @@ def permutation_quaternion(p1, p2, p3, sigma2, sigma3):
     ----------
     p1, p2, p3 : int or ndarray of int, shape (...)
     sigma2, sigma3 : float or ndarray, shape (...)
-        From :func:`working_axes` (``σ₁ = +1``).
+        From :func:`polhode_axes` (``σ₁ = +1``).
 
     Returns
     -------
