@@ -71,11 +71,10 @@ def test_compiled_constants_equal_numpy_constants():
         diff = (got[f"{name}.hi"] - hi) + (got[f"{name}.lo"] - lo)
         assert np.all(np.abs(diff) <= 1e-28 * np.abs(hi)), name
         assert np.array_equal(got[f"{name}.hh"] + got[f"{name}.hl"], got[f"{name}.hi"])
-    # the sign of a quaternion is free: U and V share it
-    sign = np.sign(np.sum(got["quat_u"] * want["quat_u"], axis=0))
-    assert np.all(np.abs(sign) == 1)
-    for name in ("quat_u", "quat_v"):
-        np.testing.assert_allclose(got[name] * sign, want[name], rtol=0, atol=8 * EPS, err_msg=name)
+    # the working frame and the attitude anchor are the same kernels on both paths
+    # (andoyer.free.kernels.frame) on the same inputs: the same bits, sign included
+    for name in ("quat_u", "quat_v", "v_sn", "v_cn", "G", "s"):
+        assert np.array_equal(got[name], want[name]), name
     # coefficients and phases of order one: absolute; the rest relative
     absolute = {"wa": 8 * EPS, "wb": 8 * EPS, "frac0": 4 * EPS, "psi0": 8 * EPS, "slope": 4 * EPS}
     for name, value in want.items():

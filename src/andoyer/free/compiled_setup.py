@@ -4,15 +4,17 @@
 a few hundred passes over the arrays, most of them double-double arithmetic (the working
 frame and invariants of :func:`andoyer.free.regime.polhode_frame`, ``K`` and ``Π`` by the
 AGM, the frequencies), 6–10 µs a body.  Here the same formulas run per body in a numba
-kernel, about 1 µs a body: most of them are the very kernels the numpy set-up calls
-(:mod:`andoyer.free.kernels.triaxial`, :func:`andoyer.special.theta.quotient_constants`),
-run on floats in the double-double arithmetic of :mod:`andoyer.special.compensated` (error-free
-products by fused multiply-add, one-correction division); the working frame and its
-invariants, ``K'`` and the attitude anchor are still written here for one body.  ``K`` is
-taken from the AGM sequence of ``Π`` (the same sequence), ``K'`` from the nome, the ``ψ``
-offset from the series at ``τ₀`` directly, and without an attitude the quantities only
-the attitude needs (``Π``, the ``ϑ₁`` series) can be skipped.  The constants agree with
-the numpy ones to a few ulps (``tests/free/test_free_compiled.py``); they are stored one
+kernel, about 1 µs a body: most of them are the very kernels the numpy set-up calls (the
+working frame, its invariants and the attitude anchor of :mod:`andoyer.free.kernels.frame`,
+the formulas of :mod:`andoyer.free.kernels.triaxial`,
+:func:`andoyer.special.theta.quotient_constants`), run on floats in the double-double
+arithmetic of :mod:`andoyer.special.compensated` (error-free products by fused multiply-add,
+one-correction division).  Written here for one body: ``K`` is taken from the AGM sequence
+of ``Π`` (the same sequence), ``K'`` from the nome (the numpy set-up runs a second AGM), the
+``ψ`` offset from the series at ``τ₀`` directly (the numpy set-up evaluates its per-epoch
+series at ``t = 0``), and without an attitude the quantities only the attitude needs
+(``Π``, the ``ϑ₁`` series) can be skipped.  The constants agree with the numpy ones to a few
+ulps, the frame's and the anchor's bit for bit (``tests/free/test_free_compiled.py``); they are stored one
 row per body, as :mod:`andoyer.free.compiled_eval` reads them, in the columns named by
 :mod:`andoyer.free.table`.
 :class:`andoyer.free.FreeMotion` uses both when numba is installed
@@ -25,9 +27,9 @@ import math
 
 import numpy as np
 
-from andoyer._jit import jit, jitable
-from andoyer._quaternion import product
+from andoyer._jit import jit
 from andoyer.free.compiled_eval import _count
+from andoyer.free.kernels.frame import anchor, invariants, permutation_quaternion, polhode_axes, sorted_axes
 from andoyer.free.kernels.triaxial import (
     amplitudes,
     initial_phase,
@@ -78,57 +80,10 @@ from andoyer.free.table import (
 )
 from andoyer.free.triaxial import Triaxial
 from andoyer.special.agm import ellipk_dd, ellippi_k_dd
-from andoyer.special.compensated import dd_add, dd_div, dd_mul, dd_sqrt, split, two_prod, two_sum
+from andoyer.special.compensated import dd_div, split
 from andoyer.special.theta import nome, quotient_constants
 
 __all__ = ["as_triaxial", "triaxial_table"]
-
-# the one Hamilton product, compiled inline into the kernels below
-jitable(product)
-
-
-
-@jit
-def _inv_diff(s, Ii, Ij):
-    dh, dl = two_sum(Ij, -Ii)
-    ph, pl = two_prod(Ii, Ij)
-    return dd_div(s * dh, s * dl, ph, pl)
-
-
-@jit
-def _entry(perm, sign, a, b):
-    return sign[a] if perm[a] == b else 0.0
-
-
-@jit
-def _perm_quat(perm, sign):
-    """Quaternion of the rotation whose matrix has rows ``sign[j] e_{perm[j]}`` (Shepperd)."""
-    d0, d1, d2 = _entry(perm, sign, 0, 0), _entry(perm, sign, 1, 1), _entry(perm, sign, 2, 2)
-    tr = d0 + d1 + d2
-    big = max(d0, d1, d2)
-    if tr >= big:
-        q = (
-            _entry(perm, sign, 2, 1) - _entry(perm, sign, 1, 2),
-            _entry(perm, sign, 0, 2) - _entry(perm, sign, 2, 0),
-            _entry(perm, sign, 1, 0) - _entry(perm, sign, 0, 1),
-            1.0 + tr,
-        )
-    else:
-        i = 0 if d0 == big else (1 if d1 == big else 2)
-        j, k = (i + 1) % 3, (i + 2) % 3
-        vi = 1.0 - tr + 2.0 * big
-        vj = _entry(perm, sign, j, i) + _entry(perm, sign, i, j)
-        vk = _entry(perm, sign, k, i) + _entry(perm, sign, i, k)
-        w = _entry(perm, sign, k, j) - _entry(perm, sign, j, k)
-        if i == 0:
-            q = (vi, vj, vk, w)
-        elif i == 1:
-            q = (vk, vi, vj, w)
-        else:
-            q = (vj, vk, vi, w)
-    r = 1.0 / math.sqrt(q[0] ** 2 + q[1] ** 2 + q[2] ** 2 + q[3] ** 2)
-    return q[0] * r, q[1] * r, q[2] * r, q[3] * r
-
 
 @jit
 def _psi_offset(circ, f0, q, wa, wb, kk, slope):
@@ -167,43 +122,20 @@ def _psi_offset(circ, f0, q, wa, wb, kk, slope):
 def _body(Ib, mb, lam, q0, out, i, full):
     """Constants of body ``i`` into row ``i`` of ``out`` (columns: :mod:`andoyer.free.table`)."""
     # working frame: axis 3 the polhode axis (C for SAM, A for LAM), axis 2 the middle one
-    o0, o1, o2 = 0, 1, 2  # stable sort of three moments
-    if Ib[o1] < Ib[o0]:
-        o0, o1 = o1, o0
-    if Ib[o2] < Ib[o1]:
-        o1, o2 = o2, o1
-        if Ib[o1] < Ib[o0]:
-            o0, o1 = o1, o0
-    perm = (o2, o1, o0) if lam else (o0, o1, o2)
-    inv = int(perm[0] > perm[1]) + int(perm[0] > perm[2]) + int(perm[1] > perm[2])
-    parity = 1.0 - 2.0 * (inv % 2)
-    s3 = -1.0 if mb[perm[2]] < 0 else 1.0
-    sign = (1.0, parity * s3, s3)
-    I1, I2, I3 = Ib[perm[0]], Ib[perm[1]], Ib[perm[2]]
-    mw = (mb[perm[0]], mb[perm[1]] * sign[1], mb[perm[2]] * s3)
+    # (the kernels of andoyer.free.kernels.frame, as andoyer.free.regime.polhode_frame)
+    p1, p2, p3, sigma2, sigma3 = polhode_axes(*sorted_axes(Ib[0], Ib[1], Ib[2]), lam, mb[0], mb[1], mb[2])
+    mw = (mb[p1], mb[p2] * sigma2, mb[p3] * sigma3)
     s = -1.0 if lam else 1.0
-    e12h, e12l = _inv_diff(s, I1, I2)
-    e13h, e13l = _inv_diff(s, I1, I3)
-    e23h, e23l = _inv_diff(s, I2, I3)
-    x0h, x0l = two_prod(mw[0], mw[0])
-    x1h, x1l = two_prod(mw[1], mw[1])
-    x2h, x2l = two_prod(mw[2], mw[2])
-    P1h, P1l = dd_add(*dd_mul(x0h, x0l, e13h, e13l), *dd_mul(x1h, x1l, e23h, e23l))
-    out[i, FLAT] = 1.0 if P1h == 0.0 else 0.0
-    if P1h == 0.0:  # a steady spin: FreeMotion routes it elsewhere
+    e12, e13, e23, P1, P2, P3, g_dd, w3 = invariants(s, Ib[p1], Ib[p2], Ib[p3], mw[0], mw[1], mw[2])
+    out[i, FLAT] = 1.0 if P1[0] == 0.0 else 0.0
+    if P1[0] == 0.0:  # a steady spin: FreeMotion routes it elsewhere
         return
-    P3h, P3l = dd_add(*dd_mul(x1h, x1l, e12h, e12l), *dd_mul(x2h, x2l, e13h, e13l))
-    th, tl = dd_mul(x0h, x0l, e12h, e12l)
-    P2h, P2l = dd_add(*dd_mul(x2h, x2l, e23h, e23l), -th, -tl)
-    Gh, Gl = dd_sqrt(*dd_add(*dd_add(x0h, x0l, x1h, x1l), x2h, x2l))
-    w3h, w3l = dd_div(1.0, 0.0, I3, 0.0)
+    e12h, e13h, e23h, P1h, P3h, Gh = e12[0], e13[0], e23[0], P1[0], P3[0], g_dd[0]
     # amplitudes, modulus, K, Π (the kernels of andoyer.free.kernels.triaxial)
-    e12, e13, e23 = (e12h, e12l), (e13h, e13l), (e23h, e23l)
-    P1, P3 = (P1h, P1l), (P3h, P3l)
     a1, a2, a3 = amplitudes(e13h, e23h, P1h, P3h)
-    m, (mch, mcl), omega2 = modulus(e12, e13, e23, P1, (P2h, P2l), P3)
+    m, (mch, mcl), omega2 = modulus(e12, e13, e23, P1, P2, P3)
     if full:  # Π(−κ²|m) for the secular rate of ψ, and K from the same AGM
-        k2h, k2l = dd_div(e12h, e12l, e23h, e23l)
+        k2h, k2l = dd_div(*e12, *e23)
         p3h, p3l, Kh, Kl = ellippi_k_dd(-k2h, -k2l, mch, mcl)
     else:  # the momentum needs K only
         p3h = p3l = 0.0
@@ -232,13 +164,13 @@ def _body(Ib, mb, lam, q0, out, i, full):
     out[i, C_CN] = c_cn
     out[i, C_DN] = c_dn
     out[i, KK] = kk
-    # working axis j is sign[j] times body axis perm[j]
+    # working axis j is sigma_j times body axis p_j
     mu_cn, mu_sn, mu_dn, v_sn, v_cn = momentum_coefficients((a1, a2, a3), s, c_sn, c_cn, c_dn)
-    out[i, MU_CN + perm[0]] = mu_cn
-    out[i, MU_SN + perm[1]] = mu_sn * sign[1]
-    out[i, MU_DN + perm[2]] = mu_dn * s3
-    out[i, V_SN + perm[0]] = v_sn
-    out[i, V_CN + perm[1]] = v_cn * sign[1]
+    out[i, MU_CN + p1] = mu_cn
+    out[i, MU_SN + p2] = mu_sn * sigma2
+    out[i, MU_DN + p3] = mu_dn * sigma3
+    out[i, V_SN + p1] = v_sn
+    out[i, V_CN + p2] = v_cn * sigma2
     out[i, G] = Gh
     out[i, A3] = a3
     out[i, PERIOD] = period
@@ -253,7 +185,7 @@ def _body(Ib, mb, lam, q0, out, i, full):
         theta_circular(q, v1, Kh, s, wa, wb)
     else:
         theta_hyperbolic(q, v1, Kp, s, wa, wb)
-    rate, (psh, psl) = secular_rate(e13, e23, P3, (Gh, Gl), (w3h, w3l), s, (p3h, p3l), (Kh, Kl))
+    rate, (psh, psl) = secular_rate(e13, e23, P3, g_dd, w3, s, (p3h, p3l), (Kh, Kl))
     slope, precession_rate = psi_constants(circ, s, Kp, v1, rate[0], period)
     phh, phl = split(psh)
     out[i, NU_PSI + HI] = psh
@@ -266,13 +198,8 @@ def _body(Ib, mb, lam, q0, out, i, full):
         return
     out[i, PSI0] = _psi_offset(circ, frac0, q, wa, wb, kk, slope)
     # U = Q₀ ⊗ P, V = Q₀ ⊗ e_z ⊗ P (andoyer.free.regime.attitude_anchor)
-    pq = _perm_quat(perm, sign)
-    q_rw = product(q0[i, 0], q0[i, 1], q0[i, 2], q0[i, 3], -pq[0], -pq[1], -pq[2], pq[3])
-    w = Gh + mw[2]
-    nrm = math.sqrt(2.0 * Gh * w)
-    q_0 = product(*q_rw, -mw[1] / nrm, mw[0] / nrm, 0.0, w / nrm)
-    U = product(*q_0, *pq)
-    V = product(*product(*q_0, 0.0, 0.0, 1.0, 0.0), *pq)
+    pq = permutation_quaternion(p1, p2, p3, sigma2, sigma3)
+    U, V = anchor(q0[i, 0], q0[i, 1], q0[i, 2], q0[i, 3], pq, mw[0], mw[1], mw[2], Gh)
     for k in range(4):
         out[i, QUAT_U + k] = U[k]
         out[i, QUAT_V + k] = V[k]

@@ -24,6 +24,7 @@ from typing import NamedTuple
 import numpy as np
 
 from andoyer._jit import jit
+from andoyer.free.kernels.frame import invariants, polhode_axes, sorted_axes, steady_spin_limit
 from andoyer.free.kernels.uniform import (
     attitude,
     axes,
@@ -36,7 +37,6 @@ from andoyer.free.kernels.uniform import (
 )
 from andoyer.free.phase import phase
 from andoyer.regime import Regime
-from andoyer.special.compensated import dd_add, dd_div, dd_sqrt, two_prod, two_sum
 
 __all__ = ["COLUMNS", "UniformTable", "evaluate", "fill", "polhode_limit", "uniform_table"]
 
@@ -243,38 +243,16 @@ evaluate.fill = fill  # andoyer.free.blocks fills its outputs through this
 
 
 @jit
-def _inv_diff(s, Ii, Ij):
-    """``s (1/Iᵢ − 1/Iⱼ)`` as a double-double (:func:`andoyer.free.regime._inv_diff`)."""
-    dh, dl = two_sum(Ij, -Ii)
-    ph, pl = two_prod(Ii, Ij)
-    return dd_div(s * dh, s * dl, ph, pl)
-
-
-@jit
 def _limits(moments, m0, lam, period, rate):
     for i in range(moments.shape[0]):
-        I = moments[i]
-        ia, ib, ic = 0, 1, 2  # a stable sort of the three moments
-        if I[ib] < I[ia]:
-            ia, ib = ib, ia
-        if I[ic] < I[ib]:
-            ib, ic = ic, ib
-            if I[ib] < I[ia]:
-                ia, ib = ib, ia
-        p1, p3 = (ic, ia) if lam[i] else (ia, ic)
+        I, m = moments[i], m0[i]
+        a, b, c = sorted_axes(I[0], I[1], I[2])
+        p1, p2, p3, _, _ = polhode_axes(a, b, c, lam[i], m[0], m[1], m[2])
         s = -1.0 if lam[i] else 1.0
-        a0, a1 = two_prod(m0[i, p1], m0[i, p1])
-        b0, b1 = two_prod(m0[i, ib], m0[i, ib])
-        c0, c1 = two_prod(m0[i, p3], m0[i, p3])
-        gh, gl = dd_add(a0, a1, b0, b1)
-        gh, gl = dd_add(gh, gl, c0, c1)
-        G = dd_sqrt(gh, gl)[0]
-        e13 = _inv_diff(s, I[p1], I[p3])[0]
-        e23 = _inv_diff(s, I[ib], I[p3])[0]
-        w3 = dd_div(1.0, 0.0, I[p3], 0.0)[0]
-        om = G * np.sqrt(e13 * e23)
-        period[i] = 2.0 * np.pi / om
-        rate[i] = G * w3 + s * om
+        _, e13, e23, _, _, _, G, w3 = invariants(
+            s, I[p1], I[p2], I[p3], abs(m[p1]), abs(m[p2]), abs(m[p3])
+        )
+        period[i], rate[i] = steady_spin_limit(s, e13[0], e23[0], G[0], w3[0])
 
 
 def polhode_limit(moments, m0, lam):

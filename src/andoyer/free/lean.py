@@ -42,6 +42,7 @@ import numpy as np
 from andoyer._jit import NUMBA, jit, jitable
 from andoyer._quaternion import product
 from andoyer.free.kernels.elliptic import am, carlson_rf, carlson_rj, third_minus_a_unwrapped
+from andoyer.free.kernels.frame import polhode_axes, sorted_axes
 from andoyer.free.kernels.uniform import (
     attitude,
     component,
@@ -105,13 +106,9 @@ def _uniform(q, m, h, k, I_s, I_t):
 def _step_one(moments, q, m, h):
     """Advance one state in place; return ``False`` when it is left to ``FreeMotion``."""
     I = moments
-    ia, ib, ic = 0, 1, 2
-    if I[ia] > I[ib]:
-        ia, ib = ib, ia
-    if I[ib] > I[ic]:
-        ib, ic = ic, ib
-    if I[ia] > I[ib]:
-        ia, ib = ib, ia
+    # (Python floats and bools for the frame kernels: without numba their select then takes its
+    # conditional fast path instead of numpy.where on numpy scalars)
+    ia, ib, ic = sorted_axes(float(I[0]), float(I[1]), float(I[2]))
     A, B, C = I[ia], I[ib], I[ic]
     if A == C:
         _uniform(q, m, h, 0, A, A)
@@ -128,12 +125,11 @@ def _step_one(moments, q, m, h):
     if abs(t1 - t2) <= _SEPARATRIX * (t1 + t2):
         return False
     lam = t1 < t2
-    iu, ip = (ic, ia) if lam else (ia, ic)
+    # the working frame of andoyer.free.kernels.frame: working axis j is sigma_j times body axis
+    iu, ib, ip, s2, s3 = polhode_axes(ia, ib, ic, bool(lam), float(m[0]), float(m[1]), float(m[2]))
     s = -1.0 if lam else 1.0
-    parity = 1.0 if (ib - iu) % 3 == 1 else -1.0  # (iu, ib, ip) a cyclic shift of (0, 1, 2)
-    s3 = -1.0 if m[ip] < 0.0 else 1.0
     I1, I2, I3 = I[iu], I[ib], I[ip]
-    m1, m2, m3 = m[iu], parity * s3 * m[ib], s3 * m[ip]
+    m1, m2, m3 = m[iu], s2 * m[ib], s3 * m[ip]
     e12 = s * (I2 - I1) / (I1 * I2)
     e13 = s * (I3 - I1) / (I1 * I3)
     e23 = s * (I3 - I2) / (I2 * I3)
@@ -173,7 +169,7 @@ def _step_one(moments, q, m, h):
     s1, c1 = math.sin(phi1), math.cos(phi1)
     n1, n2, n3 = a1 * c1, s * a2 * s1, a3 * math.sqrt(mc + mm * c1 * c1)
     new = np.empty(3)
-    new[iu], new[ib], new[ip] = n1, parity * s3 * n2, s3 * n3
+    new[iu], new[ib], new[ip] = n1, s2 * n2, s3 * n3
     # q ⊗ S(m₀)* ⊗ R_e(Δψ) ⊗ S(m₁)
     a = _arc(m, e, G)
     r = product(q[0], q[1], q[2], q[3], -a[0], -a[1], -a[2], a[3])

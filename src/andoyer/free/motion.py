@@ -49,6 +49,7 @@ from andoyer.free.backends import resolve
 from andoyer.free.blocks import Group, evaluate_blocks
 from andoyer.free.compiled_regime import classify_and_scale
 from andoyer.free.compiled_setup import as_triaxial, triaxial_table
+from andoyer.free.kernels.frame import steady_spin_limit
 from andoyer.free.regime import normalise, polhode_frame
 from andoyer.free.table import PRECESSION_RATE
 from andoyer.regime import Regime, check_inputs, regime_codes
@@ -220,10 +221,9 @@ class FreeMotion:
                     period[j], rate[j] = _cuni.polhode_limit(moments[j], m0[j], regime[j] == Regime.LAM)
                 else:
                     frame = polhode_frame(moments[j], m0[j], regime[j] == Regime.LAM)
-                    e13, e23, G, w3 = frame.e13[0], frame.e23[0], frame.G[0], frame.w3[0]
-                    om = G * np.sqrt(e13 * e23)
-                    period[j] = 2.0 * np.pi / om
-                    rate[j] = G * w3 + frame.s * om
+                    period[j], rate[j] = steady_spin_limit(
+                        frame.s, frame.e13[0], frame.e23[0], frame.G[0], frame.w3[0]
+                    )
             groups.append((kernel, idx, const))
         self._groups = [Group(k, idx, c, tshift[idx], b[idx]) for k, idx, c in groups]
         self._scaled_periods = (period, rate, tshift)

@@ -12,15 +12,17 @@ from __future__ import annotations
 import numpy as np
 
 from andoyer._quaternion import product
+from andoyer.free.kernels.frame import shortest_arc as arc
 
 __all__ = ["anchored_attitude", "matrix_quat", "shortest_arc"]
 
 
 def shortest_arc(m):
-    """Rotation taking the direction of ``m`` to ``+z`` by the shortest arc.
+    """Rotation taking the direction of ``m`` to ``+z`` by the shortest arc, on ``(..., 3)`` arrays.
 
     ``S(m) = (m_y, −m_x, 0, |m| + m_z) / √(2|m|(|m| + m_z))``: the rotation about
-    ``m × z`` by the angle between them; regular wherever ``m`` is not along ``−z``.
+    ``m × z`` by the angle between them; regular wherever ``m`` is not along ``−z``
+    (the kernel :func:`andoyer.free.kernels.frame.shortest_arc`).
 
     Parameters
     ----------
@@ -40,9 +42,7 @@ def shortest_arc(m):
     """
     m = np.asarray(m, dtype=np.float64)
     g = np.sqrt(np.sum(m * m, axis=-1))
-    w = g + m[..., 2]
-    q = np.stack([m[..., 1], -m[..., 0], np.zeros_like(w), w], axis=-1)
-    return q / np.sqrt(2.0 * g * w)[..., None]
+    return np.stack(np.broadcast_arrays(*arc(m[..., 0], m[..., 1], m[..., 2], g)), axis=-1)
 
 
 def anchored_attitude(c, half, arc, m3):

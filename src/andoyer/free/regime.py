@@ -16,7 +16,9 @@ the separatrix, ``A`` for LAM), axis 2 is the middle axis ``B`` and ``m₃ > 0``
    P_3 = m_2^2 e_{12} + m_3^2 e_{13} = s(G^2 w_1 - D),\quad
    P_2 = m_3^2 e_{23} - m_1^2 e_{12} = s(G^2 w_2 - D)
 
-give every constant of the solution (:mod:`andoyer.free.triaxial`).
+give every constant of the solution (:mod:`andoyer.free.triaxial`).  Each formula of the frame
+is one kernel of :mod:`andoyer.free.kernels.frame`, run here on arrays and by the compiled
+set-up on floats.
 """
 
 from __future__ import annotations
@@ -26,10 +28,8 @@ from typing import NamedTuple
 import numpy as np
 
 from andoyer._jit import exponent, jitable, select
-from andoyer._quaternion import product
-from andoyer.free.quaternion import matrix_quat, shortest_arc
+from andoyer.free.kernels import frame as kf
 from andoyer.regime import Regime, check_inputs, classify, regime_codes
-from andoyer.special.compensated import dd_add, dd_div, dd_mul, dd_sqrt, two_prod, two_sum
 
 __all__ = [
     "PolhodeFrame",
@@ -107,12 +107,6 @@ def normalise(moments, m0):
     return np.ldexp(moments, -a[..., None]), np.ldexp(m0, -b[..., None]), a, b
 
 
-def _sorted_axes(moments):
-    """Indices of the axes of minimum, middle and maximum moment (stable for ties)."""
-    order = np.argsort(moments, axis=-1, kind="stable")
-    return order[..., 0], order[..., 1], order[..., 2]
-
-
 def classify_scaled(moments, m0):
     """:func:`andoyer.regime.classify` for validated states, without the checks.
 
@@ -170,15 +164,11 @@ class PolhodeFrame(NamedTuple):
     w3: tuple
 
 
-def _inv_diff(s, Ii, Ij):
-    """``s (1/Iᵢ − 1/Iⱼ) = s (Iⱼ − Iᵢ)/(Iᵢ Iⱼ)`` as a double-double."""
-    dh, dl = two_sum(Ij, -Ii)
-    ph, pl = two_prod(Ii, Ij)
-    return dd_div(s * dh, s * dl, ph, pl)
-
-
 def polhode_frame(moments, m0, lam):
     """Working frame and double-double invariants of triaxial states.
+
+    The kernels of :mod:`andoyer.free.kernels.frame` on arrays (the compiled set-up runs the
+    same kernels on floats).
 
     Parameters
     ----------
@@ -198,37 +188,18 @@ def polhode_frame(moments, m0, lam):
     >>> fr.perm.tolist(), fr.mw.tolist()
     ([[1, 2, 0]], [[0.1, -0.2, 1.0]])
     """
-    ia, ib, ic = _sorted_axes(moments)
-    p3 = np.where(lam, ia, ic)
-    p1 = np.where(lam, ic, ia)
-    perm = np.stack([p1, ib, p3], axis=-1)
-    parity = _permutation_parity(perm)
-    m3 = np.take_along_axis(m0, p3[:, None], axis=-1)[:, 0]
-    s3 = np.where(m3 < 0, -1.0, 1.0)
-    sign = np.stack([np.ones_like(s3), parity * s3, s3], axis=-1)
+    i = [moments[:, k] for k in range(3)]
+    m = [m0[:, k] for k in range(3)]
+    a, b, c = kf.sorted_axes(*i)
+    p1, p2, p3, sigma2, sigma3 = kf.polhode_axes(a, b, c, lam, *m)
+    perm = np.stack([p1, p2, p3], axis=-1)
+    sign = np.stack([np.ones_like(sigma3), sigma2, sigma3], axis=-1)
     Iw = np.take_along_axis(moments, perm, axis=-1)
     mw = np.take_along_axis(m0, perm, axis=-1) * sign
     s = np.where(lam, -1.0, 1.0)
-    I1, I2, I3 = Iw[:, 0], Iw[:, 1], Iw[:, 2]
-    e12 = _inv_diff(s, I1, I2)
-    e13 = _inv_diff(s, I1, I3)
-    e23 = _inv_diff(s, I2, I3)
-    sq = [two_prod(mw[:, i], mw[:, i]) for i in range(3)]
-    P1 = dd_add(*dd_mul(*sq[0], *e13), *dd_mul(*sq[1], *e23))
-    P3 = dd_add(*dd_mul(*sq[1], *e12), *dd_mul(*sq[2], *e13))
-    t = dd_mul(*sq[0], *e12)
-    P2 = dd_add(*dd_mul(*sq[2], *e23), -t[0], -t[1])
-    G2 = dd_add(*dd_add(*sq[0], *sq[1]), *sq[2])
-    G = dd_sqrt(*G2)
-    w3 = dd_div(1.0, 0.0, I3, 0.0)
+    inv = kf.invariants(s, Iw[:, 0], Iw[:, 1], Iw[:, 2], mw[:, 0], mw[:, 1], mw[:, 2])
+    e12, e13, e23, P1, P2, P3, G, w3 = inv
     return PolhodeFrame(perm, sign, s, Iw, mw, e12, e13, e23, P1, P2, P3, G, w3)
-
-
-def _permutation_parity(perm):
-    """``+1`` for even, ``−1`` for odd permutations of (0, 1, 2), row by row."""
-    a, b, c = perm[:, 0], perm[:, 1], perm[:, 2]
-    inversions = (a > b).astype(int) + (a > c) + (b > c)
-    return 1.0 - 2.0 * (inversions % 2)
 
 
 def working_axes(frame: PolhodeFrame):
@@ -259,20 +230,20 @@ def working_axes(frame: PolhodeFrame):
     return cols
 
 
-def attitude_anchor(frame: PolhodeFrame, cols, q0):
+def attitude_anchor(frame: PolhodeFrame, q0):
     """Constant quaternions ``U = Q₀ ⊗ P`` and ``V = Q₀ ⊗ e_z ⊗ P`` of the attitude.
 
     The attitude is ``rot(t) = Q₀ ⊗ R_z(Δψ) ⊗ S(m_w(t)) ⊗ P`` with ``P`` the working frame
     (body → working), ``S`` the shortest arc taking ``m_w`` to ``+z`` and
     ``Q₀ = q₀ ⊗ P* ⊗ S(m_w(0))*``; writing ``R_z(Δψ) = cos(Δψ/2) + sin(Δψ/2) e_z`` and
     moving ``P`` through ``S`` gives
-    ``rot(t) = (cos(Δψ/2) U + sin(Δψ/2) V) ⊗ (P* ⊗ S ⊗ P)``.
+    ``rot(t) = (cos(Δψ/2) U + sin(Δψ/2) V) ⊗ (P* ⊗ S ⊗ P)``.  The kernels
+    :func:`andoyer.free.kernels.frame.permutation_quaternion` and
+    :func:`andoyer.free.kernels.frame.anchor` on arrays (the compiled set-up runs them on floats).
 
     Parameters
     ----------
     frame : PolhodeFrame
-    cols : ndarray, shape (3, 3, N)
-        From :func:`working_axes`.
     q0 : ndarray, shape (N, 4)
         Initial attitudes (unit quaternions, scalar last, body → reference).
 
@@ -284,11 +255,11 @@ def attitude_anchor(frame: PolhodeFrame, cols, q0):
     --------
     >>> fr = polhode_frame(np.array([[1.0, 2.0, 3.0]]), np.array([[0.0, 0.0, 1.0]]),
     ...                    np.array([False]))
-    >>> U, V = attitude_anchor(fr, working_axes(fr), np.array([[0.0, 0.0, 0.0, 1.0]]))
+    >>> U, V = attitude_anchor(fr, np.array([[0.0, 0.0, 0.0, 1.0]]))
     >>> U[:, 0].tolist(), V[:, 0].tolist()
     ([0.0, 0.0, 0.0, 1.0], [0.0, 0.0, 1.0, 0.0])
     """
-    pq = matrix_quat(cols)
-    arc = shortest_arc(frame.mw).T
-    q_0 = product(*product(*q0.T, -pq[0], -pq[1], -pq[2], pq[3]), -arc[0], -arc[1], -arc[2], arc[3])
-    return np.stack(product(*q_0, *pq)), np.stack(product(*product(*q_0, 0.0, 0.0, 1.0, 0.0), *pq))
+    perm, sign, mw = frame.perm, frame.sign, frame.mw
+    pq = kf.permutation_quaternion(perm[:, 0], perm[:, 1], perm[:, 2], sign[:, 1], sign[:, 2])
+    u, v = kf.anchor(*q0.T, pq, mw[:, 0], mw[:, 1], mw[:, 2], frame.G[0])
+    return np.stack(u), np.stack(v)

@@ -110,7 +110,7 @@ def separatrix(frame: PolhodeFrame, q0=None):
     n = G.size
     quat_u = quat_v = np.zeros((4, n))
     if q0 is not None:
-        quat_u, quat_v = attitude_anchor(frame, cols, q0)
+        quat_u, quat_v = attitude_anchor(frame, q0)
     return Separatrix(
         omega=omega,
         tau0=tau0,

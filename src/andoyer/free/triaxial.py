@@ -232,5 +232,5 @@ def triaxial(frame: PolhodeFrame, q0=None):
             cz, sz = series.half_angle(sub, zero, split(zero), phase)
             psi0[sel] = -np.arctan2(sz, cz)[:, 0] / np.pi
     const = const._replace(psi0=psi0)
-    quat_u, quat_v = attitude_anchor(frame, cols, q0)
+    quat_u, quat_v = attitude_anchor(frame, q0)
     return const._replace(quat_u=quat_u, quat_v=quat_v)
