@@ -232,6 +232,8 @@ def integrate_secular(
     # and the times were validated above, so FreeMotion is given its arrays directly
     with warnings.catch_warnings():  # the phase of the fast angles was checked above, with the output times
         warnings.simplefilter("ignore", PhasePrecisionWarning)
-        m_free, q_free = FreeMotion(model.body.moments, m0, q0).propagate((unique - t0)[:, None])
+        moments = model.body.moments  # in the states' shape: FreeMotion then broadcasts nothing
+        moments = moments.reshape(1, 3) if n == 1 else np.broadcast_to(moments, m0.shape)
+        m_free, q_free = FreeMotion(moments, m0, q0).propagate((unique - t0)[:, None])
     q = _turned(M0, np.stack([means[float(x)] for x in unique]), q_free)
     return gather_table(state, times, unique, shape, q, m_free, conserved=True)

@@ -428,22 +428,22 @@ def _grid(times: Array, steps: int) -> tuple[float, NDArray[np.int64], Array]:
     return h, index, times - index * h
 
 
-def _prepared(M0, k0, normals, order):
+def _prepared(M0, k0, normals, order, g=None):
     """The kernels' arrays: ``(si, ci, node0, rate)``, the step's flows and weights, ``|M0|``, ``k0``."""
     si, ci, node0, rate = (np.ascontiguousarray(v, dtype=np.float64) for v in normals)
     flows, weights, first, last = _sequence_of(order, si.shape[0])
-    g = np.sqrt(np.sum(M0 * M0, axis=-1))
+    g = np.sqrt(np.sum(M0 * M0, axis=-1)) if g is None else g
     return (si, ci, node0, rate), (flows, weights, first, last), g, np.ascontiguousarray(k0, dtype=np.float64)
 
 
-def _run_pair(M0, c0, k0, coef, normals, times, steps, order, compiled):
+def _run_pair(M0, c0, k0, coef, normals, times, steps, order, compiled, g=None):
     """``(_run(…, 2 steps, …), _run(…, steps, …))``: Richardson's pair, overlapped in one compiled loop."""
     if not (NUMBA if compiled is None else compiled):
         return (
             _run(M0, c0, k0, coef, normals, times, 2 * steps, order, compiled),
             _run(M0, c0, k0, coef, normals, times, steps, order, compiled),
         )
-    (si, ci, node0, rate), sequence, g, k0 = _prepared(M0, k0, normals, order)
+    (si, ci, node0, rate), sequence, g, k0 = _prepared(M0, k0, normals, order, g)
     h, index, offset = _grid(times, 2 * steps)
     coarse, index2, offset2 = _grid(times, steps)
     if coarse != 2 * h:  # never for normal numbers (halving is exact), but the kernel relies on it
@@ -559,6 +559,7 @@ def propagate_controlled(
     order: int = 8,
     max_step: float = np.inf,
     compiled: bool | None = None,
+    g: Array | None = None,
 ) -> tuple[Array, float]:
     r""":func:`propagate_rotations` at the step that meets ``rtol``, by Richardson's estimate.
 
@@ -579,6 +580,8 @@ def propagate_controlled(
         Target relative global error of ``M``.
     max_step : float
         Upper bound on the fine step.
+    g : numpy.ndarray, shape (N,), optional
+        ``|M0|`` where the caller has it (computed otherwise).
 
     Returns
     -------
@@ -602,10 +605,10 @@ def propagate_controlled(
     coarse = min(_MAX_ANGLE / rate if rate > 0 else np.inf, 2 * max_step)
     steps = max(1, int(np.ceil(times[-1] / coarse)))
     rotations = (2 * inner + 1) * len(COMPOSITIONS[order])
-    g = np.sqrt(np.sum(M0 * M0, axis=-1))
+    g = np.sqrt(np.sum(M0 * M0, axis=-1)) if g is None else g
     fine, error = None, np.inf
     for _ in range(_MAX_PASSES):
-        fine, rough = _run_pair(M0, c0, k0, coef, normals, times, steps, order, compiled)
+        fine, rough = _run_pair(M0, c0, k0, coef, normals, times, steps, order, compiled, g)
         error = float(np.max(np.linalg.norm(fine - rough, axis=-1) / g)) / (2**order - 1)
         floor = 16 * np.finfo(float).eps * np.sqrt(2 * steps * rotations)
         if error <= max(rtol, floor):
