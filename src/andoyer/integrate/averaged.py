@@ -188,10 +188,12 @@ def integrate_secular(
     _check_secular_size(averages, unique, t0, rtol)
     q0 = state.quaternion.reshape(-1, 4)
     m0 = state.m_body.reshape(-1, 3)
-    M0 = state.m_reference.reshape(-1, 3)
+    n = m0.shape[0]
+    # M₀ = R(q₀) m₀ (State.m_reference); one state on Python floats: the same IEEE operations
+    # as on arrays (no fused multiply-add in either), without a dozen numpy calls on one number
+    M0 = np.array([quat.apply(*q0[0].tolist(), *m0[0].tolist())]) if n == 1 else quat.rotate(q0, m0)
     L = m0[:, 2]
-    n = M0.shape[0]
-    if np.any(np.linalg.norm(M0, axis=-1) == 0):
+    if not np.all(np.sum(M0 * M0, axis=-1) > 0):  # |M₀|² > 0 ⇔ |M₀| > 0 (np.linalg.norm's arithmetic)
         msg = "expected a rotating body (|m| > 0) for the secular method, got a state at rest"
         raise ValueError(msg)
 
