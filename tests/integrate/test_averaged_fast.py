@@ -81,6 +81,27 @@ def test_averaged_fast_mean_state_equals_the_general_path(regime):
     assert np.max(rotation_distance(out.quaternion, q)) <= 3e-15
 
 
+@pytest.mark.parametrize("regime", ["earth steady spin", "earth wobbling", "triaxial SAM", "sphere"])
+@pytest.mark.parametrize(
+    ("state_shape", "time_shape"), [((), ()), ((1,), ()), ((), (1,)), ((1,), (1, 1))], ids=str
+)
+def test_averaged_fast_one_state_one_time_equals_the_general_path(regime, state_shape, time_shape):
+    """One state at one time (the benchmark's call): the output is the table itself, unsorted, ungathered."""
+    body, direction, wobble = REGIMES[regime]
+    rng = np.random.default_rng(sum(map(ord, regime)) + len(state_shape) + 3 * len(time_shape))
+    one = starts(body, direction, wobble, rng)[:1]
+    model = Model(body, GravityGradient(mean_perturbers("earth")))
+    t = 1000 * JULIAN_YEAR * rng.uniform(0.5, 1.0)
+    q0, m0 = one.quaternion.reshape((*state_shape, 4)), one.m_body.reshape((*state_shape, 3))
+    state = State.from_quaternion(q0, m0)
+    out = integrate_secular(model, state, np.full(time_shape, t))
+    q, m = general_path(model, one, np.array([t]))
+    assert out.shape == np.broadcast_shapes(state_shape, time_shape)
+    G = np.linalg.norm(m)
+    assert np.max(np.abs(out.m_body.reshape(3) - m.reshape(3))) / G <= 1e-15
+    assert np.max(np.abs(out.quaternion.reshape(4) - q.reshape(4))) <= 1e-15
+
+
 def test_averaged_fast_turn_compiled_equals_numpy(rng):
     """The compiled ``Rz(h̄) Rx(Ī − I₀) Rz(−h₀) ⊗ q`` loop against the numpy quaternion algebra."""
     M0 = rng.normal(size=(5, 3))

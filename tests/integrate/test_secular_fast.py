@@ -150,6 +150,30 @@ def test_secular_fast_interpreted_loop_agrees_with_compiled():
     assert np.array_equal(compiled[1], compiled[2])
 
 
+@pytest.mark.parametrize("order", [2, 8])
+@pytest.mark.parametrize(
+    "times",
+    [np.array([7.0]), np.array([0.0, 1.5, 1.5, 7.0]), np.array([0.1, 0.35, 3.3, 3.35, 6.99, 7.0])],
+    ids=["one", "repeated", "off-grid"],
+)
+def test_secular_fast_richardson_pair_equals_two_runs(order, times):
+    """The coarse and fine runs overlapped in one compiled loop: bit for bit the two separate runs."""
+    from andoyer.integrate.secular_steps import _run_pair
+
+    model = strong_model()
+    M0, c0, k0, coef, normals = strong_arguments(model)
+    rng = np.random.default_rng(5)
+    M0 = rng.standard_normal((3, 3))
+    c0, coef = np.repeat(c0, 3), np.repeat(coef, 3, axis=1) * rng.uniform(0.5, 1.5, 3)
+    steps = 9  # a coarse step of 7/9: the outputs fall between the steps of both runs
+    fine, coarse = _run_pair(M0, c0, k0, coef, normals, times, steps, order, True)
+    h = times[-1] / steps
+    assert np.array_equal(fine, propagate_rotations(M0, c0, k0, coef, normals, times, h / 2 * 1.0000001,
+                                                    order, compiled=True))  # fmt: skip
+    assert np.array_equal(coarse, propagate_rotations(M0, c0, k0, coef, normals, times, h * 1.0000001,
+                                                      order, compiled=True))  # fmt: skip
+
+
 @pytest.mark.parametrize("rtol", [1e-5, 1e-8, 1e-11])
 def test_secular_fast_controller_meets_rtol(rtol):
     model = strong_model()

@@ -188,10 +188,12 @@ def integrate_secular(
     _check_secular_size(averages, unique, t0, rtol)
     q0 = state.quaternion.reshape(-1, 4)
     m0 = state.m_body.reshape(-1, 3)
-    M0 = state.m_reference.reshape(-1, 3)
+    n = m0.shape[0]
+    # M₀ = R(q₀) m₀ (State.m_reference); one state on Python floats: the same IEEE operations
+    # as on arrays (no fused multiply-add in either), without a dozen numpy calls on one number
+    M0 = np.array([quat.apply(*q0[0].tolist(), *m0[0].tolist())]) if n == 1 else quat.rotate(q0, m0)
     L = m0[:, 2]
-    n = M0.shape[0]
-    if np.any(np.linalg.norm(M0, axis=-1) == 0):
+    if not np.all(np.sum(M0 * M0, axis=-1) > 0):  # |M₀|² > 0 ⇔ |M₀| > 0 (np.linalg.norm's arithmetic)
         msg = "expected a rotating body (|m| > 0) for the secular method, got a state at rest"
         raise ValueError(msg)
 
@@ -232,6 +234,8 @@ def integrate_secular(
     # and the times were validated above, so FreeMotion is given its arrays directly
     with warnings.catch_warnings():  # the phase of the fast angles was checked above, with the output times
         warnings.simplefilter("ignore", PhasePrecisionWarning)
-        m_free, q_free = FreeMotion(model.body.moments, m0, q0).propagate((unique - t0)[:, None])
+        moments = model.body.moments  # in the states' shape: FreeMotion then broadcasts nothing
+        moments = moments.reshape(1, 3) if n == 1 else np.broadcast_to(moments, m0.shape)
+        m_free, q_free = FreeMotion(moments, m0, q0).propagate((unique - t0)[:, None])
     q = _turned(M0, np.stack([means[float(x)] for x in unique]), q_free)
     return gather_table(state, times, unique, shape, q, m_free, conserved=True)

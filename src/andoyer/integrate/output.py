@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
@@ -37,8 +39,8 @@ def output_times(
     except ValueError as exc:
         msg = f"expected times broadcastable with the state's shape {state.shape}, got shape {times.shape}"
         raise ValueError(msg) from exc
-    unique = np.unique(times)
-    check_size("an output", nbytes=OUTPUT_BYTES * (unique.size * state.size + float(np.prod(shape))))
+    unique = times.reshape(1).copy() if times.size == 1 else np.unique(times)  # one time: nothing to sort
+    check_size("an output", nbytes=OUTPUT_BYTES * (unique.size * state.size + float(math.prod(shape))))
     if moments is not None:
         t0 = float(as_finite(t0, "t0"))
         with np.errstate(over="ignore"):  # an overflow is an infinite phase: refused
@@ -78,10 +80,14 @@ def gather_table(
     normalised here. ``conserved``: the momenta have the magnitudes of ``state``'s (already
     validated), so the returned state is built without checking them again.
     """
-    n = max(state.size, 1)
-    state_index = np.broadcast_to(np.arange(n).reshape(state.shape or ()), shape)
-    which = np.searchsorted(unique, np.broadcast_to(times, shape))
-    q = q_table[which, state_index]
-    m = m_table[which, state_index]
+    if q_table.shape[:2] == (1, 1) and math.prod(shape) == 1:  # one state, one time: the table is the output
+        q = q_table.reshape((*shape, 4))
+        m = m_table.reshape((*shape, 3))
+    else:
+        n = max(state.size, 1)
+        state_index = np.broadcast_to(np.arange(n).reshape(state.shape or ()), shape)
+        which = np.searchsorted(unique, np.broadcast_to(times, shape))
+        q = q_table[which, state_index]
+        m = m_table[which, state_index]
     q = q / np.linalg.norm(q, axis=-1, keepdims=True)
     return State.from_unit_quaternion(q, m) if conserved else State.from_quaternion(q, m)

@@ -151,8 +151,9 @@ def propagate_checked(
         raise ValueError(msg)
     shape = M0.shape
     M = M0.reshape(-1, 3)
-    G = np.linalg.norm(M, axis=-1)
-    coef = np.array([2 * model.strength(p, L.reshape(-1), G) / G**2 for p in model.perturbers])
+    G = np.sqrt(np.sum(M * M, axis=-1))  # |M| (np.linalg.norm's arithmetic, without its dispatch)
+    L = L.reshape(-1)
+    coef = np.array([2 * model.strength(p, L, G) / G**2 for p in model.perturbers])
     outer, inner = model.split_normals()
     k0 = model.normal(model.perturbers[outer[0]], 0.0) if outer else np.array([0.0, 0.0, 1.0])
     c0 = coef[outer].sum(axis=0) if outer else np.zeros(len(M))
@@ -163,10 +164,10 @@ def propagate_checked(
         np.array([o.node + o.node_rate * (t0 - o.epoch) for o in orbits]),  # the nodes at t0
         np.array([o.node_rate for o in orbits]),
     )
-    fastest = max([float(np.max(np.abs(coef) * G, initial=0.0)), *np.abs(normals[3])], default=0.0)
+    fastest = max(float((np.abs(coef) * G).max(initial=0.0)), float(np.abs(normals[3]).max(initial=0.0)))
     drifting = coef[inner].reshape(len(inner), len(M))
     bound = np.inf if max_step is None else float(max_step)
-    out, _ = propagate_controlled(M, c0, k0, drifting, normals, times - t0, fastest, rtol, order, bound)
+    out, _ = propagate_controlled(M, c0, k0, drifting, normals, times - t0, fastest, rtol, order, bound, g=G)
     return out.reshape((len(times), *shape))
 
 
