@@ -263,3 +263,25 @@ def test_periodic_streamed_outputs_equal_cached_ones(case, monkeypatch):
     m_d, q_d = _forced(moments[i], m0[i], q0[i], np.inf).propagate(t[k])
     assert np.max(np.abs(got[0, True][0][k] - m_d)) <= TOL * np.linalg.norm(m0[i])
     assert np.max(np.abs(got[0, True][1][k] - q_d)) <= TOL
+
+
+AXIS_CASES = ["random", "near-separatrix-lam-1e-10", "scaled-large-moments", "k2-above-half"]
+
+
+@pytest.mark.parametrize("name", AXIS_CASES)
+def test_periodic_axis_is_the_reference_momentum_direction(name):
+    # the attitude is (sin(πg) n, cos(πg)) ⊗ A(f): n from the pieces against scipy's rotation of m0 by q0
+    if name == "random":
+        moments, m0, q0 = _random_states(6, 21)
+    else:
+        _, moments, m0, q0, _ = BY_NAME[name]
+        moments, m0, q0 = (np.atleast_2d(a) for a in (moments, m0, q0))
+    fm = FreeMotion(moments[:, None], m0[:, None], q0[:, None])
+    for group in fm._groups:
+        per, rest = periodic.build(group, attitude=True)
+        assert rest is None
+        want = Rotation.from_quat(q0[group.members]).apply(m0[group.members])
+        want /= np.linalg.norm(want, axis=-1, keepdims=True)
+        assert np.max(np.abs(per.const.params[:, 8:11] - want)) <= 5e-15  # the kernels carry ~10 ulps
+        momentum_only, _ = periodic.build(group, attitude=False)
+        assert np.array_equal(momentum_only.const.params[:, 8:11], np.zeros((group.members.size, 3)))
