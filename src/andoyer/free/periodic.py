@@ -17,8 +17,8 @@ the angular momentum in the reference frame (:func:`andoyer.free.regime.attitude
 
 one rotation about ``n`` after ``A``.  :func:`build` samples ``M`` (and ``A``) once per
 body through the existing kernels, run with the frequencies replaced by ``ν = 1, f₀ = 0``
-(so that their time is the phase) and ``g = 0``, takes ``n = A M A* / |M|`` from the
-fitted pieces, and fits a polynomial of degree :data:`DEGREE` in each of ``n`` equal
+(so that their time is the phase) and ``g = 0``, takes ``n = V ⊗ U*`` from the anchor,
+and fits a polynomial of degree :data:`DEGREE` in each of ``n`` equal
 pieces of the period (values at Chebyshev nodes, then Chebyshev coefficients, then monomial
 ones).  ``n`` starts from the nome (the poles of ``sn, cn, dn`` lie ``K'/(4K)`` cycles
 off the real axis) and doubles until the pieces agree with the kernels at the ends and
@@ -43,7 +43,7 @@ from typing import NamedTuple
 import numpy as np
 
 from andoyer._jit import NUMBA, jit, when_compiled
-from andoyer._quaternion import apply, product
+from andoyer._quaternion import product
 from andoyer.free import compiled_eval as _ceval
 from andoyer.free import constants as _const
 from andoyer.free.blocks import _CHUNK, Group, evaluate_blocks
@@ -199,17 +199,15 @@ def _pieces_for(group, attitude):
     return out, const
 
 
-def _axis(coef, base, pieces):
-    """Unit vector ``n = A M A* / |M|`` of the angular momentum in the reference frame, per state.
+def _axis(const, sel):
+    """Unit vector ``n = V ⊗ U*`` of the angular momentum in the reference frame, per state ``sel``.
 
-    Averaged over the centres of the state's pieces (the constant coefficients), each
-    within a few ulps of the kernels; constant along the motion (the axis of ``B = n ⊗ A``).
+    From the attitude's anchor (:func:`andoyer.free.regime.attitude_anchor`: ``U = Q₀ ⊗ P``,
+    ``V = Q₀ ⊗ e_z ⊗ P``, so ``V ⊗ U* = Q₀ e_z Q₀*``, a pure unit quaternion).
     """
-    c = coef[:, 0]  # (rows, 8): values at the centres of all pieces
-    nx, ny, nz = apply(c[:, 4], c[:, 5], c[:, 6], c[:, 7], c[:, 0], c[:, 1], c[:, 2])
-    v = np.stack([nx, ny, nz], axis=-1) / np.linalg.norm(c[:, :3], axis=-1, keepdims=True)
-    v = np.add.reduceat(v, base, axis=0) / pieces[:, None]
-    return v / np.linalg.norm(v, axis=-1, keepdims=True)
+    u = np.asarray(const.quat_u)[:, sel]
+    v = np.asarray(const.quat_v)[:, sel]
+    return np.stack(product(*v, -u[0], -u[1], -u[2], u[3])[:3], axis=1)
 
 
 def build(group, attitude):
@@ -266,7 +264,7 @@ def build(group, attitude):
         axis=1,
     )
     if attitude:
-        params = np.concatenate([params, _axis(coef, base.astype(np.intp), n.astype(np.intp))], axis=1)
+        params = np.concatenate([params, _axis(const, sel)], axis=1)
     else:
         params[:, 3:6] = 0.0  # the table may lack them (no attitude asked)
         params = np.concatenate([params, np.zeros((sel.size, 3))], axis=1)
