@@ -24,10 +24,15 @@ loops; ``ANDOYER_NUMBA=0`` in the environment measures the numpy path.
 representation chosen automatically, the direct path, heyoka's ``propagate_grid`` at its
 tightest tolerance, and a numba loop of one ``sin`` and one ``cos`` per pair.
 ``--setup``: set-up per body at 10⁴, 10⁵, 10⁶ bodies (item 3).  Both run each
-measurement ``--repeat`` times interleaved and give the best and the median.
+measurement ``--repeat`` times interleaved and give the best and the median.  ``--epochs
+--fresh`` times each run in fresh processes of its own instead (interleaved rounds): in one
+process, whether a run's large outputs fault in fresh pages depends on what the allocator
+kept from the run before it (measured: the periodic momentum 5.7 ms after itself, 8.5 ms
+after heyoka's attitude run, 1287 page faults a call), so the in-process figures depend on
+the order of the runs.
 
-Run: ``python3 benchmarks/bench_free.py [--quick] [--epochs | --setup]``  (pins numpy to one thread; rates are
-per CPU second of this process, so they do not depend on other load on the machine).
+Run: ``python3 benchmarks/bench_free.py [--quick] [--epochs [--fresh] | --setup]``  (pins numpy to one
+thread; rates are per CPU second of the timed process, so they do not depend on other load on the machine).
 """
 
 from __future__ import annotations
@@ -39,6 +44,7 @@ for _v in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
 
 import argparse  # noqa: E402
 import math  # noqa: E402
+import subprocess  # noqa: E402
 import sys  # noqa: E402
 import time  # noqa: E402
 from pathlib import Path  # noqa: E402
@@ -199,10 +205,14 @@ def sincos_yardstick():
     return loop
 
 
-def many_epochs(n_bodies, n_epochs, repeat):
-    """Issue 17 item 1: a few bodies, many epochs each, over 100 periods of m(t)."""
+SINCOS = "numba loop: one sin + one cos"
+HY_M = "heyoka propagate_grid, momentum"
+HY_F = "heyoka propagate_grid, momentum + attitude"
+
+
+def epoch_runs(n_bodies, n_epochs, only=None):
+    """The timed calls of :func:`many_epochs` by name (only ``only`` where given: no other set-up)."""
     moments, m0, q0, t = workload(n_bodies, n_epochs, seed=1)
-    pairs = t.size
     big = (moments[:, None], m0[:, None], q0[:, None])
 
     def closed(mode, attitude):
@@ -212,19 +222,22 @@ def many_epochs(n_bodies, n_epochs, repeat):
             return fm.propagate(t) if attitude else fm.momentum(t)
         return run
 
+    def wanted(name):
+        return only is None or name == only
+
     # "periodic": the piecewise representation forced; "direct": the per-epoch theta series
     runs = {f"{mode}, {what}": closed(mode, what == "momentum + attitude")
             for what in ("momentum", "momentum + attitude") for mode in ("periodic", "direct")}
-    if NUMBA:
+    runs = {k: v for k, v in runs.items() if wanted(k)}
+    if NUMBA and wanted(SINCOS):
         loop = sincos_yardstick()
         out = np.empty((*t.shape, 2))
         w = 1.0 / FreeMotion(moments, m0).periods.period
         loop(w, t[:1], out[:1])  # compile
-        runs["numba loop: one sin + one cos"] = lambda: loop(w, t, out)
+        runs[SINCOS] = lambda: loop(w, t, out)
     tol = np.finfo(float).eps
-    if hy is not None:  # pragma: no cover - optional
+    if hy is not None and wanted(HY_M):  # pragma: no cover - optional
         ta_m = heyoka_momentum_integrator(tol)
-        ta_f = hy.taylor_adaptive(heyoka_system(), [0.0] * 7, tol=tol, pars=[1.0, 1.0, 1.0])
 
         def hy_momentum():
             out_m = np.empty((*t.shape, 3))
@@ -235,14 +248,57 @@ def many_epochs(n_bodies, n_epochs, repeat):
                 out_m[i] = ta_m.propagate_grid(np.concatenate([[0.0], t[i]]))[-1][1:]
             return out_m
 
-        runs["heyoka propagate_grid, momentum"] = hy_momentum
-        runs["heyoka propagate_grid, momentum + attitude"] = lambda: heyoka_run(ta_f, moments, m0, q0, t)
-    times = {k: [] for k in runs}
-    for _ in range(repeat):  # interleaved: the machine is shared
-        for k, fn in runs.items():
-            t0 = time.process_time()
-            fn()
-            times[k].append(time.process_time() - t0)
+        runs[HY_M] = hy_momentum
+    if hy is not None and wanted(HY_F):  # pragma: no cover - optional
+        ta_f = hy.taylor_adaptive(heyoka_system(), [0.0] * 7, tol=tol, pars=[1.0, 1.0, 1.0])
+        runs[HY_F] = lambda: heyoka_run(ta_f, moments, m0, q0, t)
+    return runs
+
+
+def fresh_times(n_bodies, n_epochs, repeat, names):
+    """CPU seconds of each run, measured in fresh processes of its own (a warm-up call, then three timed).
+
+    The processes are interleaved by name, ``repeat`` rounds: no run sees the heap another
+    left (in one process the allocator's state after one run changes whether the next
+    one's large outputs fault in fresh pages, by up to 30%, depending on the order).
+    """
+    times = {k: [] for k in names}
+    for _ in range(repeat):
+        for k in names:
+            cmd = [sys.executable, __file__, "--time-one", k, "--bodies", str(n_bodies), "--epochs-per-body",
+                   str(n_epochs)]
+            res = subprocess.run(cmd, capture_output=True, text=True, check=True)
+            times[k] += [float(x) for x in res.stdout.split()]
+    return times
+
+
+def time_one(name, n_bodies, n_epochs, calls=3):
+    """Print the CPU seconds of ``calls`` calls of run ``name`` after a warm-up call (:func:`fresh_times`)."""
+    fn = epoch_runs(n_bodies, n_epochs, only=name)[name]
+    fn()
+    for _ in range(calls):
+        t0 = time.process_time()
+        fn()
+        print(time.process_time() - t0)
+
+
+def many_epochs(n_bodies, n_epochs, repeat, fresh=False):
+    """Issue 17 item 1: a few bodies, many epochs each, over 100 periods of m(t)."""
+    moments, m0, q0, t = workload(n_bodies, n_epochs, seed=1)
+    pairs = t.size
+    runs = epoch_runs(n_bodies, n_epochs)
+    if fresh:
+        times = fresh_times(n_bodies, n_epochs, repeat, list(runs))
+    else:
+        times = {k: [] for k in runs}
+        for _ in range(repeat):  # interleaved: the machine is shared
+            for k, fn in runs.items():
+                t0 = time.process_time()
+                fn()
+                times[k].append(time.process_time() - t0)
+    tol = np.finfo(float).eps
+    if hy is not None:  # pragma: no cover - optional
+        ta_f = hy.taylor_adaptive(heyoka_system(), [0.0] * 7, tol=tol, pars=[1.0, 1.0, 1.0])
     # accuracy at 100 periods (2 bodies) against the Taylor reference
     errs = {}
     for i in range(2):
@@ -259,8 +315,10 @@ def many_epochs(n_bodies, n_epochs, repeat):
             e = errs.setdefault("heyoka", [0.0, 0.0])
             e[0] = max(e[0], relative_error(mr, mh[0, 0]))
             e[1] = max(e[1], angle_between(qr, qh[0, 0] / np.linalg.norm(qh[0, 0])))
+    how = ("each in fresh processes of its own (a warm-up call, then 3 timed), processes interleaved" if fresh
+           else "interleaved in this process")
     print(f"many epochs per body: {n_bodies} bodies x {n_epochs} epochs in [0, 100 periods], {repeat} runs"
-          " interleaved (CPU time of this process, one core); pairs/s best and median")
+          f" {how} (CPU time, one core); pairs/s best and median")
     print(f"{'method':46s} {'best':>10s} {'median':>10s}")
     rate = {}
     for k, ts in times.items():
@@ -269,11 +327,11 @@ def many_epochs(n_bodies, n_epochs, repeat):
     for what in ("momentum", "momentum + attitude"):
         p, d = rate[f"periodic, {what}"], rate[f"direct, {what}"]
         line = f"{what}: periodic / direct {p[0] / d[0]:.1f}x (median {p[1] / d[1]:.1f}x)"
-        if f"heyoka propagate_grid, {what}" in rate:  # pragma: no cover - optional
-            h = rate[f"heyoka propagate_grid, {what}"]
+        if HY_M in rate and HY_F in rate:  # pragma: no cover - optional
+            h = rate[HY_M if what == "momentum" else HY_F]
             line += f"; periodic / heyoka {p[0] / h[0]:.1f}x (median {p[1] / h[1]:.1f}x)"
-        if "numba loop: one sin + one cos" in rate:
-            y = rate["numba loop: one sin + one cos"]
+        if SINCOS in rate:
+            y = rate[SINCOS]
             line += f"; periodic / sin+cos loop {p[0] / y[0]:.2f}x (median {p[1] / y[1]:.2f}x)"
         print(line)
     for k, (em, eq) in errs.items():
@@ -306,9 +364,17 @@ def main():
     ap.add_argument("--epochs", action="store_true", help="many epochs per body (10 x 1e5)")
     ap.add_argument("--setup", action="store_true", help="set-up per body from 1e4 to 1e6 bodies")
     ap.add_argument("--repeat", type=int, default=5, help="interleaved runs of --epochs/--setup")
+    ap.add_argument("--fresh", action="store_true",
+                    help="--epochs: time each run in a fresh process of its own (interleaved)")
+    ap.add_argument("--time-one", help=argparse.SUPPRESS)  # a child of --fresh: the run's name
+    ap.add_argument("--bodies", type=int, default=10, help=argparse.SUPPRESS)
+    ap.add_argument("--epochs-per-body", type=int, default=100_000, help=argparse.SUPPRESS)
     args = ap.parse_args()
+    if args.time_one:
+        time_one(args.time_one, args.bodies, args.epochs_per_body)
+        return
     if args.epochs:
-        many_epochs(10, 5000 if args.quick else 100_000, args.repeat)
+        many_epochs(10, 5000 if args.quick else 100_000, args.repeat, fresh=args.fresh)
         return
     if args.setup:
         setup_scaling((10_000, 100_000) if args.quick else (10_000, 100_000, 1_000_000), args.repeat)

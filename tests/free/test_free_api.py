@@ -146,3 +146,25 @@ def test_regime_attribute(motion_backend):
 def test_bad_input_raises(call, message):
     with pytest.raises(ValueError, match=message):
         call()
+
+
+@pytest.mark.parametrize("bad", [np.nan, np.inf, -np.inf])
+@pytest.mark.parametrize("where", [0, 2345, 4999])
+def test_bad_input_non_finite_time_among_many(bad, where):
+    # the check reads only the least and greatest time: each non-finite value must still be found
+    t = np.linspace(-10.0, 10.0, 5000)
+    t[where] = bad
+    with pytest.raises(ValueError, match="expected finite times t, got"):
+        FreeMotion(MOMENTS[:2], M0[:2]).momentum(t[:, None])
+
+
+@pytest.mark.parametrize("sign", [1.0, -1.0])
+def test_phase_warning_from_the_extreme_time(sign):
+    # one time of many with ω|t| = 1e12 rad: past the warning (1e-6 · 2⁵² rad), not the refusal (2⁵²);
+    # 52 log10(2) - 12 = 3.65 digits left
+    from andoyer._limits import PhasePrecisionWarning, spin_rate
+
+    t = np.linspace(-1.0, 1.0, 5000)
+    t[1234] = sign * 1e12 / spin_rate(MOMENTS[0], M0[0])
+    with pytest.warns(PhasePrecisionWarning, match="keeps only 3.7 digits"):
+        FreeMotion(MOMENTS[0], M0[0]).momentum(t)

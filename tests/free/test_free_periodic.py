@@ -171,7 +171,7 @@ def test_piecewise_kernels_reproduce_cos_and_sin(n):
 
 def _epochs(case, period, rng):
     """Epochs (unscaled) that steer the compiled fill into each of its evaluation orders."""
-    if case == "sorted-one-period":  # long runs on one piece: in place (momentum), sorted by piece (attitude)
+    if case == "sorted-one-period":  # long runs on one piece: in place
         return np.sort(rng.uniform(-0.5, 0.5, 1100)) * period
     if case == "shuffled-many":  # ≥ 16 epochs a piece: sorted by piece
         return rng.uniform(-50.0, 50.0, 1100) * period
@@ -228,3 +228,60 @@ def test_periodic_coefficient_rows_cover_the_degree():
     rows = periodic._coefficients(piece, 4)
     assert np.array_equal(np.array(rows), piece[:, 4:8])
     assert np.array_equal(periodic._horner_rows(rows, 0.3), horner(piece, 4, 0.3))
+
+
+@pytest.mark.parametrize("case", FILL_CASES)
+def test_periodic_streamed_outputs_equal_cached_ones(case, monkeypatch):
+    # large outputs are written by non-temporal stores through flat views: the same values, every order
+    moments, m0, q0 = _random_states(3, 14)
+    fm = FreeMotion(moments[:, None], m0[:, None], q0[:, None])
+    group = fm._groups[0]  # all three states, or two on the numpy backend (one per series)
+    per, rest = periodic.build(group, attitude=True)
+    assert rest is None
+    t = _epochs(case, float(np.min(fm.periods.period)), np.random.default_rng(7))
+    if not periodic.NUMBA and t.size > periodic._BLOCK:
+        t = t[::7]  # the interpreted loop: a sample of the same epochs
+    t = np.stack([np.full_like(t, np.nan), t, -t[::-1], 0.5 * t])  # times per output row; row 0 unused
+    k = group.members.size
+    pos, rows = np.arange(k), k - np.arange(k)  # state j into output row k - j
+    got = {}
+    for limit in (np.inf, 0):
+        monkeypatch.setattr(periodic, "_STREAM_BYTES", limit)
+        for attitude in (False, True):
+            m = np.full((4, t.shape[1], 3), np.nan)  # rows left alone: the flat indices stay in their rows
+            q = np.full((4, t.shape[1], 4), np.nan) if attitude else None
+            periodic.fill(per.const, pos, rows, t, None, (m, q))
+            got[limit, attitude] = (m, q)
+    for attitude in (False, True):
+        (m, q), (m_s, q_s) = got[np.inf, attitude], got[0, attitude]
+        assert np.all(np.isnan(m_s[0]))
+        assert not np.any(np.isnan(m_s[1 : k + 1]))
+        assert np.array_equal(m, m_s, equal_nan=True)
+        if attitude:
+            assert np.array_equal(q, q_s, equal_nan=True)
+    i = group.members[0]  # state 0 of the group filled output row k at times t[k]
+    m_d, q_d = _forced(moments[i], m0[i], q0[i], np.inf).propagate(t[k])
+    assert np.max(np.abs(got[0, True][0][k] - m_d)) <= TOL * np.linalg.norm(m0[i])
+    assert np.max(np.abs(got[0, True][1][k] - q_d)) <= TOL
+
+
+AXIS_CASES = ["random", "near-separatrix-lam-1e-10", "scaled-large-moments", "k2-above-half"]
+
+
+@pytest.mark.parametrize("name", AXIS_CASES)
+def test_periodic_axis_is_the_reference_momentum_direction(name):
+    # the attitude is (sin(πg) n, cos(πg)) ⊗ A(f): n from the pieces against scipy's rotation of m0 by q0
+    if name == "random":
+        moments, m0, q0 = _random_states(6, 21)
+    else:
+        _, moments, m0, q0, _ = BY_NAME[name]
+        moments, m0, q0 = (np.atleast_2d(a) for a in (moments, m0, q0))
+    fm = FreeMotion(moments[:, None], m0[:, None], q0[:, None])
+    for group in fm._groups:
+        per, rest = periodic.build(group, attitude=True)
+        assert rest is None
+        want = Rotation.from_quat(q0[group.members]).apply(m0[group.members])
+        want /= np.linalg.norm(want, axis=-1, keepdims=True)
+        assert np.max(np.abs(per.const.params[:, 8:11] - want)) <= 5e-15  # the kernels carry ~10 ulps
+        momentum_only, _ = periodic.build(group, attitude=False)
+        assert np.array_equal(momentum_only.const.params[:, 8:11], np.zeros((group.members.size, 3)))

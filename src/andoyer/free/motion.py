@@ -36,7 +36,7 @@ from typing import NamedTuple
 import numpy as np
 
 from andoyer._jit import NUMBA
-from andoyer._limits import check_spin_phase, spin_bound
+from andoyer._limits import PHASE_WARN_LIMIT, check_spin_phase, spin_bound
 from andoyer.free import compiled_eval as _ceval
 from andoyer.free import compiled_uniform as _cuni
 from andoyer.free import constants as _const
@@ -320,7 +320,10 @@ class FreeMotion:
 
     def _evaluate(self, t, attitude):
         t = np.asarray(t, dtype=np.float64)
-        if not np.all(np.isfinite(t)):
+        # the least and greatest time: two passes without a temporary of t's size (a NaN or an
+        # infinity makes one of them non-finite), which also bound |t| for the phase check
+        lo, hi = (float(t.min()), float(t.max())) if t.size else (0.0, 0.0)
+        if not (math.isfinite(lo) and math.isfinite(hi)):
             raise ValueError(f"expected finite times t, got {t[~np.isfinite(t)].ravel()[:3]}")
         try:
             np.broadcast_shapes(self.shape, t.shape)
@@ -329,7 +332,8 @@ class FreeMotion:
             raise ValueError(msg) from None
         if self._spin_bound is None:
             self._spin_bound = spin_bound(*self._spin)
-        check_spin_phase(*self._spin, t, "the free motion", self._spin_bound)
+        if self._spin_bound * max(hi, -lo) > PHASE_WARN_LIMIT:  # else check_spin_phase returns at once
+            check_spin_phase(*self._spin, t, "the free motion", self._spin_bound)
         n = max(1, math.prod(self.shape))
         per_state = math.prod(np.broadcast_shapes(self.shape, t.shape)) / n
         groups = self._groups
