@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from andoyer.free.kernels import series as kernels
 from andoyer.free.phase import cycles, sincos_cycles
 from andoyer.free.quaternion import anchored_attitude
 from andoyer.special.compensated import split
@@ -97,41 +98,15 @@ def circular(c, t, tt, attitude):
     """
     f = cycles(c.nu, t, tt, c.frac0)
     s1, c1 = sincos_cycles(f)
-    q = c.q
-    qmax = float(np.max(q))
+    qmax = float(np.max(c.q))
     n_odd = _terms((0, 2, 6, 12), qmax)  # q^{n(n+1)}
     n_even = _terms((1, 4, 9, 16), qmax) if qmax > 0 else 0  # q^{n²}
     n_w = _terms((0, 2, 8), qmax) if attitude else 0  # coefficients of ϑ₁(·|q²)
-    so, co, ce = _multiples(s1, c1, max(n_odd, n_w, 1), n_even)
-    num_s, num_c = so[0].copy(), co[0].copy()
-    tmp = np.empty_like(num_s)
-    for n in range(1, n_odd):
-        qn = q ** (n * (n + 1))
-        np.multiply(-qn if n % 2 else qn, so[n], out=tmp)
-        num_s += tmp
-        np.multiply(qn, co[n], out=tmp)
-        num_c += tmp
-    even, odd = np.zeros_like(num_s), np.zeros_like(num_s)
-    for n in range(1, n_even + 1):
-        np.multiply(q ** (n * n), ce[n - 1], out=tmp)
-        if n % 2:
-            odd += tmp
-        else:
-            even += tmp
-    inv = even - odd
-    inv *= 2.0
-    inv += 1.0
-    np.reciprocal(inv, out=inv)
-    th3 = even
-    th3 += odd
-    th3 *= 2.0
-    th3 += 1.0
+    num_s, num_c, th3, inv, x, y = kernels.circular(s1, c1, c.q, c.wa, c.wb, n_odd, n_even, n_w)
     m = _assemble(c, (num_c, num_s, th3), inv)
     if not attitude:
         return m, None, None
     sn, cn, dn = c.c_sn * inv * num_s, c.c_cn * inv * num_c, c.c_dn * inv * th3
-    x = sum(c.wa[n] * so[n] for n in range(n_w))
-    y = sum(c.wb[n] * co[n] for n in range(n_w))
     return m, (sn, cn, dn), (f, x, y)
 
 
@@ -172,38 +147,11 @@ def hyperbolic(c, t, tt, attitude):
     [1.0, 0.0, 2.0]
     """
     f = cycles(c.nu, t, tt, c.frac0)
-    j = np.round(2.0 * f)
-    fw = f - 0.5 * j  # τ = 4K fw, |fw| ≤ 1/4
-    zi = np.exp(-c.kk * np.abs(fw))  # e^{−y}, y = π|τ|/(2K')
-    rho = zi * zi
     q = c.q
     qmax = float(np.max(q))
-    z = q / rho  # q' e^{2y} ≤ 1
     n_sh = _terms((0, 1, 4, 9, 16), qmax)  # q^{n²} zⁿ
     n_th = _terms((0, 0, 2, 6, 12), qmax)  # q^{n² − n} zⁿ
-    sh, ch = 1.0 - rho, 1.0 + rho
-    zn, rn = 1.0, rho
-    for n in range(1, max(n_sh, n_th)):
-        zn = zn * z
-        rn = rn * rho
-        if n < n_sh:
-            a = q ** (n * n) * zn
-            b = q ** (n * n + n) * rn
-            sh = sh + (a - b if n % 2 == 0 else b - a)
-            ch = ch + (a + b)
-    t4 = t3 = 1.0
-    zn, rn = 1.0, 1.0
-    for n in range(1, n_th):
-        zn = zn * z
-        rn = rn * rho
-        term = q ** (n * n - n) * zn + q ** (n * n) * rn
-        t4 = t4 - term if n % 2 else t4 + term
-        t3 = t3 + term
-    inv = 1.0 / ch
-    sgn = 1.0 - 2.0 * np.abs(j)  # (−1)^j for sn and cn
-    sh = np.copysign(sh, fw) * (sgn * inv)
-    t4 = t4 * (sgn * inv * zi)
-    t3 = t3 * (inv * zi)
+    sh, t4, t3, fw, zi = kernels.hyperbolic(f, q, c.kk, n_sh, n_th)
     m = _assemble(c, (t4, sh, t3), None)
     if not attitude:
         return m, None, None
