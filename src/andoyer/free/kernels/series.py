@@ -69,7 +69,11 @@ def circular(s1, c1, q, wa, wb, n_odd, n_even, n_w):
     >>> round(float(th3 * inv), 15), float(num_s)
     (1.189207115002721, 0.0)
     """
-    c2 = 1.0 - 2.0 * s1 * s1
+    # Augmented assignments only to values made here: in place on arrays (each per-epoch
+    # temporary costs page faults), plain arithmetic on floats; the inputs are never written.
+    c2 = s1 * s1
+    c2 *= -2.0
+    c2 += 1.0
     tc2 = c2 + c2
     q2 = q * q
     q4 = q2 * q2
@@ -80,37 +84,54 @@ def circular(s1, c1, q, wa, wb, n_odd, n_even, n_w):
     s3, c3 = s1 * (tc2 + 1.0), c1 * (tc2 - 1.0)
     s5 = c5 = s7 = c7 = 0.0
     if n_mult > 2:
-        s5, c5 = tc2 * s3 - s1, tc2 * c3 - c1
+        s5, c5 = tc2 * s3, tc2 * c3
+        s5 -= s1
+        c5 -= c1
     if n_mult > 3:
-        s7, c7 = tc2 * s5 - s3, tc2 * c5 - c3
+        s7, c7 = tc2 * s5, tc2 * c5
+        s7 -= s3
+        c7 -= c3
     num_s, num_c = s1, c1
     if n_odd > 1:
-        num_s, num_c = num_s - q2 * s3, num_c + q2 * c3
+        num_s, num_c = s1 - q2 * s3, c1 + q2 * c3
     if n_odd > 2:
-        num_s, num_c = num_s + q6 * s5, num_c + q6 * c5
+        num_s += q6 * s5
+        num_c += q6 * c5
     if n_odd > 3:
-        num_s, num_c = num_s - q6 * q6 * s7, num_c + q6 * q6 * c7
+        num_s -= q6 * q6 * s7
+        num_c += q6 * q6 * c7
     odd = even = 0.0
     c4 = c6 = 0.0
     if n_even > 0:
         odd = q * c2
     if n_even > 1:
-        c4 = tc2 * c2 - 1.0
+        c4 = tc2 * c2
+        c4 -= 1.0
         even = q4 * c4
     if n_even > 2:
-        c6 = tc2 * c4 - c2
-        odd = odd + q8 * q * c6
+        c6 = tc2 * c4
+        c6 -= c2
+        odd += q8 * q * c6
     if n_even > 3:
-        even = even + q8 * q8 * (tc2 * c6 - c4)
-    inv = 1.0 / (1.0 + 2.0 * (even - odd))
-    th3 = 1.0 + 2.0 * (even + odd)
+        c8 = tc2 * c6
+        c8 -= c4
+        even += q8 * q8 * c8
+    inv = even - odd  # 1/ϑ₄ = 1/(1 + 2(even − odd))
+    inv *= 2.0
+    inv += 1.0
+    inv = 1.0 / inv
+    th3 = even + odd
+    th3 *= 2.0
+    th3 += 1.0
     x = y = 0.0
     if n_w > 0:
         x, y = wa[0] * s1, wb[0] * c1
     if n_w > 1:
-        x, y = x + wa[1] * s3, y + wb[1] * c3
+        x += wa[1] * s3
+        y += wb[1] * c3
     if n_w > 2:
-        x, y = x + wa[2] * s5, y + wb[2] * c5
+        x += wa[2] * s5
+        y += wb[2] * c5
     return num_s, num_c, th3, inv, x, y
 
 
