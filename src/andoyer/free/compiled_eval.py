@@ -20,7 +20,7 @@ import numpy as np
 from andoyer._jit import jit, jitable
 from andoyer._quaternion import product
 from andoyer.free.kernels import series
-from andoyer.free.phase import _COS, _SIN
+from andoyer.free.phase import sincos_cycles
 from andoyer.free.table import (
     A3,
     C_CN,
@@ -77,15 +77,8 @@ def _cycles(c, r, col, t):
 
 @jit
 def _sincos(f):
-    """``sin, cos(2πf)`` for ``|f| ≤ 1/2`` (the polynomials of :mod:`andoyer.free.phase`)."""
-    u = f * f
-    sh = _SIN[8]
-    ch = _COS[8]
-    for k in range(7, -1, -1):
-        sh = sh * u + _SIN[k]
-        ch = ch * u + _COS[k]
-    sh *= f
-    return 2.0 * sh * ch, (ch - sh) * (ch + sh)
+    """``sin, cos(2πf)`` for ``|f| ≤ 1/2``: :func:`andoyer.free.phase.sincos_cycles`, compiled."""
+    return sincos_cycles(f)
 
 
 @jit
