@@ -139,27 +139,15 @@ def _state(c, r, t, out_m, out_q, attitude):
         sn, cn, dn, f_lin, x, y = _hyperbolic(c, r, f, out_m, attitude)
     if not attitude:
         return
-    g = _cycles(c, r, NU_PSI, t) + c[r, PSI0]
-    g = 0.5 * (g - np.rint(g)) + c[r, SLOPE] * f_lin
-    g -= np.rint(g)
-    sb, cb = _sincos(g)
-    inv = 1.0 / math.sqrt(x * x + y * y)
-    x *= inv
-    y *= inv
-    cz, sz = cb * x - sb * y, cb * y + sb * x
-    m_norm = c[r, G]
-    w = c[r, A3] * dn + m_norm
-    inv = 1.0 / math.sqrt(2.0 * m_norm * w)
-    xa, xb = sn * inv, cn * inv
-    bx = c[r, V_SN] * xa + c[r, V_CN] * xb
-    by = c[r, V_SN + 1] * xa + c[r, V_CN + 1] * xb
-    bz = c[r, V_SN + 2] * xa + c[r, V_CN + 2] * xb
-    bw = w * inv
-    ax = c[r, QUAT_U] * cz + c[r, QUAT_V] * sz
-    ay = c[r, QUAT_U + 1] * cz + c[r, QUAT_V + 1] * sz
-    az = c[r, QUAT_U + 2] * cz + c[r, QUAT_V + 2] * sz
-    aw = c[r, QUAT_U + 3] * cz + c[r, QUAT_V + 3] * sz
-    out_q[0], out_q[1], out_q[2], out_q[3] = product(ax, ay, az, aw, bx, by, bz, bw)
+    psi = _cycles(c, r, NU_PSI, t) + c[r, PSI0]
+    psi -= np.rint(psi)
+    cz, sz = series.half_angle(psi, c[r, SLOPE], f_lin, x, y)
+    u = (c[r, QUAT_U], c[r, QUAT_U + 1], c[r, QUAT_U + 2], c[r, QUAT_U + 3])
+    v = (c[r, QUAT_V], c[r, QUAT_V + 1], c[r, QUAT_V + 2], c[r, QUAT_V + 3])
+    va = (c[r, V_SN], c[r, V_SN + 1], c[r, V_SN + 2])
+    vb = (c[r, V_CN], c[r, V_CN + 1], c[r, V_CN + 2])
+    q = series.attitude(cz, sz, u, v, va, vb, sn, cn, c[r, A3] * dn, c[r, G])
+    out_q[0], out_q[1], out_q[2], out_q[3] = q[0], q[1], q[2], q[3]
 
 
 @jit

@@ -203,13 +203,7 @@ def half_angle(c, t, tt, phase):
     [1.0, 0.0]
     """
     f_lin, x, y = phase
-    g = 0.5 * cycles(c.nu_psi, t, tt, c.psi0) + c.slope * f_lin
-    g -= np.round(g)
-    sb, cb = sincos_cycles(g)
-    inv = 1.0 / np.sqrt(x * x + y * y)
-    x *= inv
-    y *= inv
-    return cb * x - sb * y, cb * y + sb * x
+    return kernels.half_angle(cycles(c.nu_psi, t, tt, c.psi0), c.slope, f_lin, x, y)
 
 
 def evaluate(c, t, attitude=True):

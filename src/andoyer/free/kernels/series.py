@@ -29,8 +29,13 @@ from __future__ import annotations
 import numpy as np
 
 from andoyer._jit import jitable
+from andoyer._quaternion import product
+from andoyer.free.phase import sincos_cycles
 
-__all__ = ["circular", "hyperbolic"]
+__all__ = ["attitude", "circular", "half_angle", "hyperbolic"]
+
+# the one Hamilton product, compiled inline into the kernels below
+jitable(product)
 
 
 @jitable
@@ -215,3 +220,86 @@ def hyperbolic(f, q, kk, n_sh, n_th):
     sgn = 1.0 - 2.0 * abs(j)  # (−1)^j for sn and cn
     sh = np.copysign(sh, fw) * (sgn * inv)
     return sh, t4 * (sgn * inv * zi), t3 * (inv * zi), fw, zi
+
+
+@jitable
+def half_angle(psi, slope, f_lin, x, y):
+    r"""``(cos, sin)`` of ``Δψ/2 = 2π g + arg(x + iy)``, ``g = ψ_f/2 + slope·f`` reduced to ``[−1/2, 1/2]``.
+
+    ``ψ_f`` is the secular phase of ``ψ`` in cycles (offset included, reduced), ``f`` the
+    phase of the series (:func:`circular`: the polhode phase; :func:`hyperbolic`: the
+    reduced ``f_w``) and ``(x, y)`` the scaled ``ϑ₁``: its argument enters through the
+    normalised ``(x, y)``, so no ``atan2``.
+
+    Parameters
+    ----------
+    psi, slope, f_lin : float or ndarray, shape (...)
+        ``ψ_f``, the ``ϑ₁`` slope constant and ``f``.
+    x, y : float or ndarray, shape (...)
+        The real and imaginary parts of the scaled ``ϑ₁`` (not both zero).
+
+    Returns
+    -------
+    cos, sin : float or ndarray, shape (...)
+
+    Examples
+    --------
+    >>> [round(float(v), 15) for v in half_angle(0.5, 0.0, 0.0, 3.0, 4.0)]  # π/2 + arg(3 + 4i)
+    [-0.8, 0.6]
+    """
+    g = 0.5 * psi + slope * f_lin
+    g -= np.rint(g)
+    sb, cb = sincos_cycles(g)
+    inv = 1.0 / np.sqrt(x * x + y * y)
+    xn, yn = x * inv, y * inv
+    return cb * xn - sb * yn, cb * yn + sb * xn
+
+
+@jitable
+def attitude(cz, sz, u, v, va, vb, sn, cn, m3, G):
+    r"""Attitude ``(U cos + V sin)(Δψ/2) ⊗ (v, G + m₃)/√(2G(G + m₃))``, ``v = v_a sn + v_b cn``.
+
+    The per-epoch end of the anchored attitude (:func:`andoyer.free.kernels.frame`
+    builds ``U``, ``V``): the constant quaternions turned by the half angle, times the
+    body-frame shortest arc from the momentum to ``+z``.
+
+    Parameters
+    ----------
+    cz, sz : float or ndarray, shape (...)
+        ``cos``, ``sin`` of ``Δψ/2`` (:func:`half_angle`).
+    u, v : indexable of 4 float or ndarray, shape (...)
+        The anchor quaternions ``U``, ``V``.
+    va, vb : indexable of 3 float or ndarray, shape (...)
+        Constant body vectors of the arc.
+    sn, cn, m3 : float or ndarray, shape (...)
+        Their per-epoch factors and the polhode-axis component of the momentum.
+    G : float or ndarray, shape (...)
+        ``|m|``.
+
+    Returns
+    -------
+    tuple of 4 float or ndarray, shape (...)
+        Quaternion components ``(x, y, z, w)``.
+
+    Examples
+    --------
+    >>> one, k = (0.0, 0.0, 0.0, 1.0), (0.0, 0.0, 1.0, 0.0)
+    >>> e = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0))
+    >>> [float(c) for c in attitude(1.0, 0.0, one, k, *e, 0.0, 0.0, 1.0, 1.0)]  # m = G ẑ: no arc
+    [0.0, 0.0, 0.0, 1.0]
+    """
+    # augmented assignments only to values made here (in place on arrays)
+    a0, a1, a2, a3 = u[0] * cz, u[1] * cz, u[2] * cz, u[3] * cz
+    a0 += v[0] * sz
+    a1 += v[1] * sz
+    a2 += v[2] * sz
+    a3 += v[3] * sz
+    w = m3 + G
+    inv = 1.0 / np.sqrt((2.0 * G) * w)
+    xa, xb = sn * inv, cn * inv
+    b0, b1, b2 = va[0] * xa, va[1] * xa, va[2] * xa
+    b0 += vb[0] * xb
+    b1 += vb[1] * xb
+    b2 += vb[2] * xb
+    w *= inv
+    return product(a0, a1, a2, a3, b0, b1, b2, w)
