@@ -13,10 +13,11 @@ from __future__ import annotations
 import mpmath
 import numpy as np
 import pytest
+from scipy.spatial.transform import Rotation
 from scipy.special import ellipk
 
 from andoyer._jit import jit
-from andoyer.free.kernels.series import circular, hyperbolic
+from andoyer.free.kernels.series import attitude, circular, half_angle, hyperbolic
 
 Q_MAX = float(np.exp(-np.pi))  # the nome at k² = 1/2, the largest either series meets
 
@@ -38,6 +39,19 @@ def _hyperbolic_loop(f, q, kk, n_sh, n_th, out):
         res = hyperbolic(f[i], q[i], kk[i], n_sh, n_th)
         for k in range(5):
             out[k, i] = res[k]
+
+
+@jit
+def _attitude_loop(psi, slope, f, x, y, u, v, va, vb, sn, cn, m3, G, out):
+    for i in range(psi.size):
+        cz, sz = half_angle(psi[i], slope[i], f[i], x[i], y[i])
+        res = attitude(
+            cz, sz, (u[0, i], u[1, i], u[2, i], u[3, i]), (v[0, i], v[1, i], v[2, i], v[3, i]),
+            (va[0, i], va[1, i], va[2, i]), (vb[0, i], vb[1, i], vb[2, i]), sn[i], cn[i], m3[i], G[i],
+        )
+        out[0, i], out[1, i] = cz, sz
+        for k in range(4):
+            out[2 + k, i] = res[k]
 
 
 def _circular_inputs(rng, n=400):
@@ -105,3 +119,43 @@ def test_hyperbolic_kernel_jacobi_ratios_mpmath(m):
         sn, cn, dn = (np.array([float(mpmath.ellipfun(w, ui, m=m)) for ui in u]) for w in ("sn", "cn", "dn"))
     np.testing.assert_allclose(sh / t4 / (sh[0] / t4[0]), (sn / cn) / (sn[0] / cn[0]), rtol=1e-12)
     np.testing.assert_allclose(t3 / t4 / (t3[0] / t4[0]), (dn / cn) / (dn[0] / cn[0]), rtol=1e-12)
+
+
+def _attitude_inputs(rng, n=400):
+    psi, f = rng.uniform(-0.5, 0.5, n), rng.uniform(-0.5, 0.5, n)
+    slope, x, y = rng.normal(size=n), rng.normal(size=n), rng.normal(size=n)
+    u, v = Rotation.random(n, random_state=4).as_quat().T, Rotation.random(n, random_state=5).as_quat().T
+    va, vb = rng.normal(size=(3, n)), rng.normal(size=(3, n))
+    G = rng.uniform(0.5, 2.0, n)
+    m3 = G * rng.uniform(-0.99, 1.0, n)
+    return psi, slope, f, x, y, u, v, va, vb, rng.normal(size=n), rng.normal(size=n), m3, G
+
+
+def test_attitude_kernels_per_state_equals_arrays():
+    psi, slope, f, x, y, u, v, va, vb, sn, cn, m3, G = _attitude_inputs(np.random.default_rng(13))
+    cz, sz = half_angle(psi, slope, f, x, y)
+    arrays = (cz, sz, *attitude(cz, sz, u, v, va, vb, sn, cn, m3, G))
+    per_state = np.empty((6, psi.size))
+    _attitude_loop(psi, slope, f, x, y, u, v, va, vb, sn, cn, m3, G, per_state)
+    for k in range(6):
+        assert np.array_equal(arrays[k], per_state[k]), k
+
+
+def test_attitude_kernels_rotation_composition():
+    # half_angle: the angle 2πg + arg(x + iy); attitude: (U cos + V sin) ⊗ the arc (v, G + m₃)/norm
+    rng = np.random.default_rng(14)
+    psi, slope, f, x, y, u, v, va, vb, sn, cn, m3, G = _attitude_inputs(rng)
+    cz, sz = half_angle(psi, slope, f, x, y)
+    g = 0.5 * psi + slope * f
+    angle = 2.0 * np.pi * g + np.arctan2(y, x)
+    np.testing.assert_allclose(cz, np.cos(angle), atol=1e-14)
+    np.testing.assert_allclose(sz, np.sin(angle), atol=1e-14)
+    got = np.array(attitude(cz, sz, u, v, va, vb, sn, cn, m3, G)).T
+    arc = np.concatenate([(va * sn + vb * cn).T, (G + m3)[:, None]], axis=1)
+    arc /= np.sqrt(2.0 * G * (G + m3))[:, None]
+    a = (u * cz + v * sz).T
+    # Hamilton product a ⊗ b, scalar last, written out independently
+    av, aw, bv, bw = a[:, :3], a[:, 3], arc[:, :3], arc[:, 3]
+    vector = aw[:, None] * bv + bw[:, None] * av + np.cross(av, bv)
+    want = np.concatenate([vector, (aw * bw - np.sum(av * bv, axis=1))[:, None]], axis=1)
+    np.testing.assert_allclose(got, want, atol=1e-13)
