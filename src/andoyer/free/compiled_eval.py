@@ -1,14 +1,17 @@
 """Per-epoch evaluation of the triaxial solution from its constant table, compiled by numba.
 
-The formulas of :mod:`andoyer.free.series` (double-double polhode and ``ψ`` phases,
-polynomial ``sin``/``cos`` of the reduced phases, Chebyshev multiples, the theta series of
-``sn, cn, dn`` and of ``ϑ₁``, the anchored attitude of
-:func:`andoyer.free.quaternion.anchored_attitude`), written for one state and one epoch
-at a time and looped over a block of states × epochs: no array temporaries, the circular
-and hyperbolic series chosen per state, the number of series terms per state (terms
-below 1e-18 dropped, as there).  The constants are the table of
-:func:`andoyer.free.compiled_setup.triaxial_table`, its columns named in
-:mod:`andoyer.free.table`.
+The formulas of :mod:`andoyer.free.series`, for one state and one epoch at a time and
+looped over a block of states × epochs: no array temporaries, the circular and hyperbolic
+series chosen per state.  The formulas themselves are the kernels both paths call: the
+theta series of ``sn, cn, dn`` (all their terms here), the circular ``ϑ₁``, the ``ψ``
+half angle and the anchored attitude (:mod:`andoyer.free.kernels.series`), ``sin``/``cos``
+of a reduced phase (:func:`andoyer.free.phase.sincos_cycles`).  Written here: the phases
+from the table's double-doubles (``_cycles``: the error-free product by a fused
+multiply-add, where the numpy path splits the times once for all its phases) and the
+hyperbolic ``ϑ₁`` sum, whose powers of ``1/e^{−y}`` are divisions here and products by the
+reciprocal there (one form for both moves either path's attitude by up to 2 ulps).  The
+constants are the table of :func:`andoyer.free.compiled_setup.triaxial_table`, its
+columns named in :mod:`andoyer.free.table`.
 """
 
 from __future__ import annotations

@@ -4,7 +4,9 @@ The constants come from :func:`andoyer.free.triaxial.triaxial`; the formulas are
 there.  Per epoch: the polhode phase (double-double, :func:`andoyer.free.phase.cycles`),
 ``sin`` and ``cos`` of it by polynomials, Chebyshev multiples, a few theta-series terms
 (their number chosen per block from the largest nome, dropping terms below 1e-18), and for
-the attitude one more phase, one more ``sincos`` and two quaternion products.
+the attitude one more phase, one more ``sincos`` and two quaternion products.  The
+formulas are the kernels of :mod:`andoyer.free.kernels.series`, applied here to whole
+arrays and by :mod:`andoyer.free.compiled_eval` to one state at a time.
 """
 
 from __future__ import annotations
