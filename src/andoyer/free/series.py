@@ -28,26 +28,6 @@ def _terms(powers, qmax):
     return sum(1 for p in powers if p == 0 or qmax**p > _NEGLIGIBLE)
 
 
-def _multiples(s1, c1, n_odd, n_even):
-    """``sin, cos((2k+1)x)`` for ``k < n_odd`` and ``cos(2kx)`` for ``1 ≤ k ≤ n_even``."""
-    c2 = s1 * s1
-    c2 *= -2.0
-    c2 += 1.0
-    tc2 = c2 + c2
-    so, co = [s1, s1 * (tc2 + 1.0)], [c1, c1 * (tc2 - 1.0)]
-    while len(so) < n_odd:
-        for seq in (so, co):
-            nxt = tc2 * seq[-1]
-            nxt -= seq[-2]
-            seq.append(nxt)
-    ce = [1.0, c2]
-    while len(ce) <= n_even:
-        nxt = tc2 * ce[-1]
-        nxt -= ce[-2]
-        ce.append(nxt)
-    return so[:n_odd], co[:n_odd], ce[1 : n_even + 1]
-
-
 def _assemble(c, parts, scale):
     """``m_k = scale · Σⱼ mu_j[k] partⱼ`` in place (per-epoch temporaries cost page faults)."""
     out = []
