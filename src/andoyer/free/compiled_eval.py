@@ -1,14 +1,17 @@
 """Per-epoch evaluation of the triaxial solution from its constant table, compiled by numba.
 
-The formulas of :mod:`andoyer.free.series` (double-double polhode and ``ψ`` phases,
-polynomial ``sin``/``cos`` of the reduced phases, Chebyshev multiples, the theta series of
-``sn, cn, dn`` and of ``ϑ₁``, the anchored attitude of
-:func:`andoyer.free.quaternion.anchored_attitude`), written for one state and one epoch
-at a time and looped over a block of states × epochs: no array temporaries, the circular
-and hyperbolic series chosen per state, the number of series terms per state (terms
-below 1e-18 dropped, as there).  The constants are the table of
-:func:`andoyer.free.compiled_setup.triaxial_table`, its columns named in
-:mod:`andoyer.free.table`.
+The formulas of :mod:`andoyer.free.series`, for one state and one epoch at a time and
+looped over a block of states × epochs: no array temporaries, the circular and hyperbolic
+series chosen per state.  The formulas themselves are the kernels both paths call: the
+theta series of ``sn, cn, dn`` (all their terms here), the circular ``ϑ₁``, the ``ψ``
+half angle and the anchored attitude (:mod:`andoyer.free.kernels.series`), ``sin``/``cos``
+of a reduced phase (:func:`andoyer.free.phase.sincos_cycles`).  Written here: the phases
+from the table's double-doubles (``_cycles``: the error-free product by a fused
+multiply-add, where the numpy path splits the times once for all its phases) and the
+hyperbolic ``ϑ₁`` sum, whose powers of ``1/e^{−y}`` are divisions here and products by the
+reciprocal there (one form for both moves either path's attitude by up to 2 ulps).  The
+constants are the table of :func:`andoyer.free.compiled_setup.triaxial_table`, its
+columns named in :mod:`andoyer.free.table`.
 """
 
 from __future__ import annotations
@@ -19,7 +22,8 @@ import numpy as np
 
 from andoyer._jit import jit, jitable
 from andoyer._quaternion import product
-from andoyer.free.phase import _COS, _SIN
+from andoyer.free.kernels import series
+from andoyer.free.phase import sincos_cycles
 from andoyer.free.table import (
     A3,
     C_CN,
@@ -76,49 +80,24 @@ def _cycles(c, r, col, t):
 
 @jit
 def _sincos(f):
-    """``sin, cos(2πf)`` for ``|f| ≤ 1/2`` (the polynomials of :mod:`andoyer.free.phase`)."""
-    u = f * f
-    sh = _SIN[8]
-    ch = _COS[8]
-    for k in range(7, -1, -1):
-        sh = sh * u + _SIN[k]
-        ch = ch * u + _COS[k]
-    sh *= f
-    return 2.0 * sh * ch, (ch - sh) * (ch + sh)
+    """``sin, cos(2πf)`` for ``|f| ≤ 1/2``: :func:`andoyer.free.phase.sincos_cycles`, compiled."""
+    return sincos_cycles(f)
 
 
 @jit
 def _circular(c, r, f, out_m):
     """Momentum and ``(sn, cn, dn, f, x, y)`` by the circular series (``k² ≤ 1/2``).
 
-    All terms up to ``q¹⁶`` (``< 10⁻²¹`` at ``k² = 1/2``) and three of ``ϑ₁``, unrolled:
-    those the numpy kernel drops below 1e-18 change nothing at double precision.
+    All terms up to ``q¹⁶`` (``< 10⁻²¹`` at ``k² = 1/2``) and three of ``ϑ₁``
+    (:func:`andoyer.free.kernels.series.circular`): those the numpy kernel drops below
+    1e-18 change nothing at double precision.
     """
-    q = c[r, Q]
     s1, c1 = _sincos(f)
-    q2 = q * q
-    q4 = q2 * q2
-    q6 = q4 * q2
-    q8 = q4 * q4
-    c2 = 1.0 - 2.0 * s1 * s1
-    tc2 = c2 + c2
-    # sin, cos((2n+1)x) and cos(2nx) by the Chebyshev recurrence in 2 cos 2x
-    s3, c3 = s1 * (tc2 + 1.0), c1 * (tc2 - 1.0)
-    s5, c5 = tc2 * s3 - s1, tc2 * c3 - c1
-    s7, c7 = tc2 * s5 - s3, tc2 * c5 - c3
-    c4 = tc2 * c2 - 1.0
-    c6 = tc2 * c4 - c2
-    c8 = tc2 * c6 - c4
-    num_s = s1 - q2 * s3 + q6 * s5 - q6 * q6 * s7
-    num_c = c1 + q2 * c3 + q6 * c5 + q6 * q6 * c7
-    odd = q * c2 + q8 * q * c6
-    even = q4 * c4 + q8 * q8 * c8
-    inv = 1.0 / (1.0 + 2.0 * (even - odd))
-    th3 = 1.0 + 2.0 * (even + odd)
+    wa = (c[r, WA], c[r, WA + 1], c[r, WA + 2])
+    wb = (c[r, WB], c[r, WB + 1], c[r, WB + 2])
+    num_s, num_c, th3, inv, x, y = series.circular(s1, c1, c[r, Q], wa, wb, 4, 4, 3)
     for k in range(3):
         out_m[k] = inv * (c[r, MU_CN + k] * num_c + c[r, MU_SN + k] * num_s + c[r, MU_DN + k] * th3)
-    x = c[r, WA] * s1 + c[r, WA + 1] * s3 + c[r, WA + 2] * s5
-    y = c[r, WB] * c1 + c[r, WB + 1] * c3 + c[r, WB + 2] * c5
     return c[r, C_SN] * inv * num_s, c[r, C_CN] * inv * num_c, c[r, C_DN] * inv * th3, f, x, y
 
 
@@ -127,42 +106,20 @@ def _hyperbolic(c, r, f, out_m, attitude):
     """Momentum and ``(sn, cn, dn, f_w, x, y)`` by the hyperbolic series (``k² > 1/2``).
 
     All terms up to ``q'¹⁶`` (``z = q'e^{2y} ≤ 1`` and ``ρ = e^{−2y} ≤ 1`` keep them
-    bounded), unrolled; the ``ϑ₁`` series grows like ``e^{2ny}`` and is cut where its
-    coefficients ``q*^{n²+n}`` fall below 1e-18, as in the numpy kernel.
+    bounded; :func:`andoyer.free.kernels.series.hyperbolic`); the ``ϑ₁`` series grows like
+    ``e^{2ny}`` and is cut where its coefficients ``q*^{n²+n}`` fall below 1e-18, as in the
+    numpy kernel.
     """
     q = c[r, Q]
-    j = np.rint(2.0 * f)
-    fw = f - 0.5 * j
-    zi = math.exp(-c[r, KK] * abs(fw))
-    rho = zi * zi
-    z = q / rho
-    q2 = q * q
-    q3 = q2 * q
-    q4 = q2 * q2
-    q6 = q3 * q3
-    q10 = q6 * q4
-    q12 = q6 * q6
-    z2, r2 = z * z, rho * rho
-    z3, r3 = z2 * z, r2 * rho
-    z4, r4 = z2 * z2, r2 * r2
-    # n-th terms: a = q^{n²} zⁿ, b = q^{n²+n} ρ^{n+1} (sh, ch); q^{n²−n} zⁿ + q^{n²} ρⁿ (t4, t3)
-    a1, a2, a3, a4 = q * z, q4 * z2, q6 * q3 * z3, q12 * q4 * z4
-    b1, b2, b3, b4 = q2 * r2, q6 * r3, q12 * r4, q10 * q10 * r4 * rho
-    sh = 1.0 - rho + (b1 - a1) + (a2 - b2) + (b3 - a3) + (a4 - b4)
-    ch = 1.0 + rho + (a1 + b1) + (a2 + b2) + (a3 + b3) + (a4 + b4)
-    e1, e2, e3, e4 = z + q * rho, q2 * z2 + q4 * r2, q6 * z3 + q6 * q3 * r3, q12 * z4 + q12 * q4 * r4
-    t4 = 1.0 - e1 + e2 - e3 + e4
-    t3 = 1.0 + e1 + e2 + e3 + e4
-    inv = 1.0 / ch
-    sgn = 1.0 - 2.0 * abs(j)  # (−1)^j for sn and cn
-    sh = math.copysign(sh, fw) * (sgn * inv)
-    t4 *= sgn * inv * zi
-    t3 *= inv * zi
+    sh, t4, t3, fw, zi = series.hyperbolic(f, q, c[r, KK], 5, 5)
     for k in range(3):
         out_m[k] = c[r, MU_CN + k] * t4 + c[r, MU_SN + k] * sh + c[r, MU_DN + k] * t3
     if not attitude:
         return 0.0, 0.0, 0.0, fw, 0.0, 0.0
-    n_w = _count((1.0, q, q3, q6, q10, q12 * q3))  # q*^{n² + n}, q* = √q
+    q2 = q * q
+    q3 = q2 * q
+    q6 = q3 * q3
+    n_w = _count((1.0, q, q3, q6, q6 * (q2 * q2), q6 * q6 * q3))  # q*^{n² + n}, q* = √q
     up, down = 1.0, zi
     x = c[r, WA] * (1.0 + zi)
     y = c[r, WB] * (1.0 - zi)
@@ -185,27 +142,15 @@ def _state(c, r, t, out_m, out_q, attitude):
         sn, cn, dn, f_lin, x, y = _hyperbolic(c, r, f, out_m, attitude)
     if not attitude:
         return
-    g = _cycles(c, r, NU_PSI, t) + c[r, PSI0]
-    g = 0.5 * (g - np.rint(g)) + c[r, SLOPE] * f_lin
-    g -= np.rint(g)
-    sb, cb = _sincos(g)
-    inv = 1.0 / math.sqrt(x * x + y * y)
-    x *= inv
-    y *= inv
-    cz, sz = cb * x - sb * y, cb * y + sb * x
-    m_norm = c[r, G]
-    w = c[r, A3] * dn + m_norm
-    inv = 1.0 / math.sqrt(2.0 * m_norm * w)
-    xa, xb = sn * inv, cn * inv
-    bx = c[r, V_SN] * xa + c[r, V_CN] * xb
-    by = c[r, V_SN + 1] * xa + c[r, V_CN + 1] * xb
-    bz = c[r, V_SN + 2] * xa + c[r, V_CN + 2] * xb
-    bw = w * inv
-    ax = c[r, QUAT_U] * cz + c[r, QUAT_V] * sz
-    ay = c[r, QUAT_U + 1] * cz + c[r, QUAT_V + 1] * sz
-    az = c[r, QUAT_U + 2] * cz + c[r, QUAT_V + 2] * sz
-    aw = c[r, QUAT_U + 3] * cz + c[r, QUAT_V + 3] * sz
-    out_q[0], out_q[1], out_q[2], out_q[3] = product(ax, ay, az, aw, bx, by, bz, bw)
+    psi = _cycles(c, r, NU_PSI, t) + c[r, PSI0]
+    psi -= np.rint(psi)
+    cz, sz = series.half_angle(psi, c[r, SLOPE], f_lin, x, y)
+    u = (c[r, QUAT_U], c[r, QUAT_U + 1], c[r, QUAT_U + 2], c[r, QUAT_U + 3])
+    v = (c[r, QUAT_V], c[r, QUAT_V + 1], c[r, QUAT_V + 2], c[r, QUAT_V + 3])
+    va = (c[r, V_SN], c[r, V_SN + 1], c[r, V_SN + 2])
+    vb = (c[r, V_CN], c[r, V_CN + 1], c[r, V_CN + 2])
+    q = series.attitude(cz, sz, u, v, va, vb, sn, cn, c[r, A3] * dn, c[r, G])
+    out_q[0], out_q[1], out_q[2], out_q[3] = q[0], q[1], q[2], q[3]
 
 
 @jit

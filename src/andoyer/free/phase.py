@@ -170,6 +170,7 @@ _COS = (
 )
 
 
+@jitable
 def sincos_cycles(f):
     """``sin(2πf)`` and ``cos(2πf)`` for a phase ``|f| ≤ 1/2`` in cycles.
 
@@ -180,12 +181,12 @@ def sincos_cycles(f):
 
     Parameters
     ----------
-    f : ndarray
+    f : float or ndarray, shape (...)
         Phases in cycles, ``|f| ≤ 1/2``.
 
     Returns
     -------
-    sin, cos : ndarray
+    sin, cos : float or ndarray, shape (...)
 
     Examples
     --------
@@ -193,14 +194,18 @@ def sincos_cycles(f):
     >>> s.round(15).tolist(), c.round(15).tolist()
     ([0.707106781186548, -1.0], [0.707106781186548, 0.0])
     """
+    # in place on arrays (this runs per epoch; fresh temporaries cost page faults), plain
+    # arithmetic on floats: the same text is the compiled kernel (andoyer.free.compiled_eval)
     u = f * f
-    sh = np.full_like(u, _SIN[-1])
-    ch = np.full_like(u, _COS[-1])
-    for a, b in zip(_SIN[-2::-1], _COS[-2::-1], strict=True):
+    sh = u * _SIN[8]
+    sh += _SIN[7]
+    ch = u * _COS[8]
+    ch += _COS[7]
+    for k in range(6, -1, -1):
         sh *= u
-        sh += a
+        sh += _SIN[k]
         ch *= u
-        ch += b
+        ch += _COS[k]
     sh *= f
     s = sh * ch
     s += s

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from andoyer._quaternion import product
+from andoyer.free.kernels import series
 from andoyer.free.kernels.frame import shortest_arc as arc
 
 __all__ = ["anchored_attitude", "matrix_quat", "shortest_arc"]
@@ -78,30 +78,8 @@ def anchored_attitude(c, half, arc, m3):
     >>> [float(x) for x in anchored_attitude(c, (1.0, 0.0), ((e[0], 0.0), (e[1], 0.0)), 1.0)]
     [0.0, 0.0, 0.0, 1.0]
     """
-    # in place throughout: this runs per epoch, and fresh temporaries cost page faults
-    cz, sz = half
-    tmp = np.empty(np.broadcast_shapes(np.shape(cz), np.shape(m3), np.shape(c.quat_u[0])))
-    au = []
-    for k in range(4):
-        a = c.quat_u[k] * cz
-        np.multiply(c.quat_v[k], sz, out=tmp)
-        a += tmp
-        au.append(a)
-    w = np.asarray(m3 + c.G, dtype=np.float64)  # 0-d arrays accept out=, scalars do not
-    inv = np.asarray((2.0 * c.G) * w)
-    np.sqrt(inv, out=inv)
-    np.reciprocal(inv, out=inv)
     (va, xa), (vb, xb) = arc
-    xa = xa * inv
-    xb = xb * inv
-    vec = []
-    for k in range(3):
-        v = va[k] * xa
-        np.multiply(vb[k], xb, out=tmp)
-        v += tmp
-        vec.append(v)
-    w *= inv
-    return product(*au, *vec, w)
+    return series.attitude(*half, c.quat_u, c.quat_v, va, vb, xa, xb, m3, c.G)
 
 
 def matrix_quat(cols):

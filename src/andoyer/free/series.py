@@ -4,13 +4,16 @@ The constants come from :func:`andoyer.free.triaxial.triaxial`; the formulas are
 there.  Per epoch: the polhode phase (double-double, :func:`andoyer.free.phase.cycles`),
 ``sin`` and ``cos`` of it by polynomials, Chebyshev multiples, a few theta-series terms
 (their number chosen per block from the largest nome, dropping terms below 1e-18), and for
-the attitude one more phase, one more ``sincos`` and two quaternion products.
+the attitude one more phase, one more ``sincos`` and two quaternion products.  The
+formulas are the kernels of :mod:`andoyer.free.kernels.series`, applied here to whole
+arrays and by :mod:`andoyer.free.compiled_eval` to one state at a time.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from andoyer.free.kernels import series as kernels
 from andoyer.free.phase import cycles, sincos_cycles
 from andoyer.free.quaternion import anchored_attitude
 from andoyer.special.compensated import split
@@ -23,26 +26,6 @@ _NEGLIGIBLE = 1e-18  # series terms below this (relative to O(1)) are dropped pe
 def _terms(powers, qmax):
     """Number of leading terms ``q^{p}`` of a series that exceed ``_NEGLIGIBLE``."""
     return sum(1 for p in powers if p == 0 or qmax**p > _NEGLIGIBLE)
-
-
-def _multiples(s1, c1, n_odd, n_even):
-    """``sin, cos((2k+1)x)`` for ``k < n_odd`` and ``cos(2kx)`` for ``1 ≤ k ≤ n_even``."""
-    c2 = s1 * s1
-    c2 *= -2.0
-    c2 += 1.0
-    tc2 = c2 + c2
-    so, co = [s1, s1 * (tc2 + 1.0)], [c1, c1 * (tc2 - 1.0)]
-    while len(so) < n_odd:
-        for seq in (so, co):
-            nxt = tc2 * seq[-1]
-            nxt -= seq[-2]
-            seq.append(nxt)
-    ce = [1.0, c2]
-    while len(ce) <= n_even:
-        nxt = tc2 * ce[-1]
-        nxt -= ce[-2]
-        ce.append(nxt)
-    return so[:n_odd], co[:n_odd], ce[1 : n_even + 1]
 
 
 def _assemble(c, parts, scale):
@@ -97,41 +80,15 @@ def circular(c, t, tt, attitude):
     """
     f = cycles(c.nu, t, tt, c.frac0)
     s1, c1 = sincos_cycles(f)
-    q = c.q
-    qmax = float(np.max(q))
+    qmax = float(np.max(c.q))
     n_odd = _terms((0, 2, 6, 12), qmax)  # q^{n(n+1)}
     n_even = _terms((1, 4, 9, 16), qmax) if qmax > 0 else 0  # q^{n²}
     n_w = _terms((0, 2, 8), qmax) if attitude else 0  # coefficients of ϑ₁(·|q²)
-    so, co, ce = _multiples(s1, c1, max(n_odd, n_w, 1), n_even)
-    num_s, num_c = so[0].copy(), co[0].copy()
-    tmp = np.empty_like(num_s)
-    for n in range(1, n_odd):
-        qn = q ** (n * (n + 1))
-        np.multiply(-qn if n % 2 else qn, so[n], out=tmp)
-        num_s += tmp
-        np.multiply(qn, co[n], out=tmp)
-        num_c += tmp
-    even, odd = np.zeros_like(num_s), np.zeros_like(num_s)
-    for n in range(1, n_even + 1):
-        np.multiply(q ** (n * n), ce[n - 1], out=tmp)
-        if n % 2:
-            odd += tmp
-        else:
-            even += tmp
-    inv = even - odd
-    inv *= 2.0
-    inv += 1.0
-    np.reciprocal(inv, out=inv)
-    th3 = even
-    th3 += odd
-    th3 *= 2.0
-    th3 += 1.0
+    num_s, num_c, th3, inv, x, y = kernels.circular(s1, c1, c.q, c.wa, c.wb, n_odd, n_even, n_w)
     m = _assemble(c, (num_c, num_s, th3), inv)
     if not attitude:
         return m, None, None
     sn, cn, dn = c.c_sn * inv * num_s, c.c_cn * inv * num_c, c.c_dn * inv * th3
-    x = sum(c.wa[n] * so[n] for n in range(n_w))
-    y = sum(c.wb[n] * co[n] for n in range(n_w))
     return m, (sn, cn, dn), (f, x, y)
 
 
@@ -172,38 +129,11 @@ def hyperbolic(c, t, tt, attitude):
     [1.0, 0.0, 2.0]
     """
     f = cycles(c.nu, t, tt, c.frac0)
-    j = np.round(2.0 * f)
-    fw = f - 0.5 * j  # τ = 4K fw, |fw| ≤ 1/4
-    zi = np.exp(-c.kk * np.abs(fw))  # e^{−y}, y = π|τ|/(2K')
-    rho = zi * zi
     q = c.q
     qmax = float(np.max(q))
-    z = q / rho  # q' e^{2y} ≤ 1
     n_sh = _terms((0, 1, 4, 9, 16), qmax)  # q^{n²} zⁿ
     n_th = _terms((0, 0, 2, 6, 12), qmax)  # q^{n² − n} zⁿ
-    sh, ch = 1.0 - rho, 1.0 + rho
-    zn, rn = 1.0, rho
-    for n in range(1, max(n_sh, n_th)):
-        zn = zn * z
-        rn = rn * rho
-        if n < n_sh:
-            a = q ** (n * n) * zn
-            b = q ** (n * n + n) * rn
-            sh = sh + (a - b if n % 2 == 0 else b - a)
-            ch = ch + (a + b)
-    t4 = t3 = 1.0
-    zn, rn = 1.0, 1.0
-    for n in range(1, n_th):
-        zn = zn * z
-        rn = rn * rho
-        term = q ** (n * n - n) * zn + q ** (n * n) * rn
-        t4 = t4 - term if n % 2 else t4 + term
-        t3 = t3 + term
-    inv = 1.0 / ch
-    sgn = 1.0 - 2.0 * np.abs(j)  # (−1)^j for sn and cn
-    sh = np.copysign(sh, fw) * (sgn * inv)
-    t4 = t4 * (sgn * inv * zi)
-    t3 = t3 * (inv * zi)
+    sh, t4, t3, fw, zi = kernels.hyperbolic(f, q, c.kk, n_sh, n_th)
     m = _assemble(c, (t4, sh, t3), None)
     if not attitude:
         return m, None, None
@@ -255,13 +185,7 @@ def half_angle(c, t, tt, phase):
     [1.0, 0.0]
     """
     f_lin, x, y = phase
-    g = 0.5 * cycles(c.nu_psi, t, tt, c.psi0) + c.slope * f_lin
-    g -= np.round(g)
-    sb, cb = sincos_cycles(g)
-    inv = 1.0 / np.sqrt(x * x + y * y)
-    x *= inv
-    y *= inv
-    return cb * x - sb * y, cb * y + sb * x
+    return kernels.half_angle(cycles(c.nu_psi, t, tt, c.psi0), c.slope, f_lin, x, y)
 
 
 def evaluate(c, t, attitude=True):
