@@ -168,3 +168,19 @@ def test_phase_warning_from_the_extreme_time(sign):
     t[1234] = sign * 1e12 / spin_rate(MOMENTS[0], M0[0])
     with pytest.warns(PhasePrecisionWarning, match="keeps only 3.7 digits"):
         FreeMotion(MOMENTS[0], M0[0]).momentum(t)
+
+
+@pytest.mark.parametrize(
+    ("shape", "t_shape", "expected"),
+    [((0, 3), (0,), (0,)), ((0, 1, 3), (0, 4), (0, 4)), ((3,), (0,), (0,)), ((2, 1, 3), (0,), (2, 0))],
+)
+def test_free_motion_empty_states_or_epochs_give_empty_outputs(shape, t_shape, expected, motion_backend):
+    """No state or no epoch: empty outputs of the broadcast shape (it raised a reshape error)."""
+    moments = np.broadcast_to([1.0, 2.0, 3.0], shape)
+    m0 = np.broadcast_to([0.1, 0.2, 1.0], shape)
+    q0 = np.broadcast_to([0.0, 0.0, 0.0, 1.0], (*shape[:-1], 4))
+    fm = FreeMotion(moments, m0, q0, backend=motion_backend)
+    m, q = fm.propagate(np.zeros(t_shape))
+    assert m.shape == (*expected, 3)
+    assert q.shape == (*expected, 4)
+    assert fm.momentum(np.zeros(t_shape)).shape == (*expected, 3)

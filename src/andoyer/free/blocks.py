@@ -79,6 +79,8 @@ def evaluate_blocks(groups, shape, t, attitude):
     """
     n = int(np.prod(shape))
     out_shape = np.broadcast_shapes(shape, t.shape)
+    if 0 in out_shape:  # no state or no epoch: nothing to evaluate (and no -1 to reshape by)
+        return np.empty((*out_shape, 3)), np.empty((*out_shape, 4)) if attitude else None
     nd = len(out_shape)
     bs = (1,) * (nd - len(shape)) + tuple(shape)
     ts = (1,) * (nd - t.ndim) + t.shape
