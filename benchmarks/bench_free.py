@@ -415,7 +415,8 @@ def main():
     if ta is not None:  # pragma: no cover - optional
         t_hy, _ = timed(heyoka_run, ta, mi, m0i, q0i, ti, repeat=1)
         tb = heyoka_batch_integrator()
-        nb_hy = (nb_ivp // tb.batch_size) * tb.batch_size
+        nb_hy = max(nb_ivp // tb.batch_size, 1) * tb.batch_size  # at least one batch (--quick: few bodies)
+        mi, m0i, q0i, ti = (np.resize(a, (max(nb_hy, len(a)), *a.shape[1:])) for a in (mi, m0i, q0i, ti))
         t_hyb, (m_hb, _) = timed(heyoka_batch_run, tb, mi[:nb_hy], m0i[:nb_hy], q0i[:nb_hy],
                                   ti[:nb_hy], repeat=1)
         # one epoch per body, at the end of the span (t <= 100 periods), on more bodies
