@@ -1,7 +1,11 @@
 """The implementations (backends) of the exact torque-free solution: their names, which run here, the default.
 
-The same closed-form solution is written three times (one source for all of them is issue 16,
-item 1); each is a *backend*, chosen by name:
+The closed-form solution runs three ways, each a *backend* chosen by name. The compiled and the
+numpy backends call the same kernels, each formula written once (:mod:`andoyer.free.kernels`:
+the frame, the set-up, the series, the uniform motions; :mod:`andoyer.regime`,
+:mod:`andoyer.special.compensated`): compiled per state in numba loops, or on whole arrays.
+The scalar backend is a different algorithm for a different use (one short step from a state
+that has just changed, with Carlson's integrals instead of theta series):
 
 ``"compiled"``
     numba loops: the classification and exact scaling (:mod:`~andoyer.free.compiled_regime`),
