@@ -20,8 +20,7 @@ import math
 
 import numpy as np
 
-from andoyer._jit import jit, jitable
-from andoyer._quaternion import product
+from andoyer._jit import jit
 from andoyer.free.kernels import series
 from andoyer.free.phase import sincos_cycles
 from andoyer.free.table import (
@@ -54,8 +53,6 @@ from andoyer.special.compensated import two_prod
 
 __all__ = ["evaluate", "fill"]
 
-# the one Hamilton product, compiled inline into the kernels below
-jitable(product)
 
 _NEGLIGIBLE = 1e-18
 
@@ -79,12 +76,6 @@ def _cycles(c, r, col, t):
 
 
 @jit
-def _sincos(f):
-    """``sin, cos(2πf)`` for ``|f| ≤ 1/2``: :func:`andoyer.free.phase.sincos_cycles`, compiled."""
-    return sincos_cycles(f)
-
-
-@jit
 def _circular(c, r, f, out_m):
     """Momentum and ``(sn, cn, dn, f, x, y)`` by the circular series (``k² ≤ 1/2``).
 
@@ -92,7 +83,7 @@ def _circular(c, r, f, out_m):
     (:func:`andoyer.free.kernels.series.circular`): those the numpy kernel drops below
     1e-18 change nothing at double precision.
     """
-    s1, c1 = _sincos(f)
+    s1, c1 = sincos_cycles(f)
     wa = (c[r, WA], c[r, WA + 1], c[r, WA + 2])
     wb = (c[r, WB], c[r, WB + 1], c[r, WB + 2])
     num_s, num_c, th3, inv, x, y = series.circular(s1, c1, c[r, Q], wa, wb, 4, 4, 3)

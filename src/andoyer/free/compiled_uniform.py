@@ -250,7 +250,7 @@ def _limits(moments, m0, lam, period, rate):
         p1, p2, p3, _, _ = polhode_axes(a, b, c, lam[i], m[0], m[1], m[2])
         s = -1.0 if lam[i] else 1.0
         _, e13, e23, _, _, _, G, w3 = invariants(
-            s, I[p1], I[p2], I[p3], abs(m[p1]), abs(m[p2]), abs(m[p3])
+            s, I[p1], I[p2], I[p3], m[p1], m[p2], m[p3]
         )
         period[i], rate[i] = steady_spin_limit(s, e13[0], e23[0], G[0], w3[0])
 

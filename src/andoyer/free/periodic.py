@@ -47,7 +47,6 @@ from andoyer._quaternion import product
 from andoyer.free import compiled_eval as _ceval
 from andoyer.free import constants as _const
 from andoyer.free.blocks import _CHUNK, Group, evaluate_blocks
-from andoyer.free.compiled_eval import _sincos
 from andoyer.free.compiled_setup import as_triaxial
 from andoyer.free.kernels.piecewise import DEGREE, horner, locate
 from andoyer.free.phase import cycles, frequency, sincos_cycles
@@ -335,7 +334,7 @@ def _phases(t, nu_hi, nu_lo, f0, n, x_out, u_out):
 def _half_angles(t, g_hi, g_lo, g0, s_out, c_out):
     """``sin, cos(πg)`` of the reduced secular phases at times ``t``."""
     for j in range(t.size):
-        s, c = _sincos(0.5 * _reduced(g_hi, g_lo, g0, t[j]))
+        s, c = sincos_cycles(0.5 * _reduced(g_hi, g_lo, g0, t[j]))
         s_out[j] = s
         c_out[j] = c
 
