@@ -98,8 +98,9 @@ class State:
 
         Unlike :meth:`from_quaternion`, the quaternions are taken as they are (the caller has
         normalised them, as the chart converters and the integrators' outputs do) and the
-        arrays are neither broadcast nor copied; only the momenta's finiteness is checked
-        (a non-finite one goes through the checking constructor, which names it).
+        arrays are neither broadcast nor copied. What is checked is what costs one pass: the
+        shapes, the unit norms (to ``10⁻¹²``; a NaN fails it) and the momenta's finiteness (a
+        non-finite one goes through the checking constructor, which names it).
 
         Parameters
         ----------
@@ -118,7 +119,21 @@ class State:
         >>> import numpy as np
         >>> State.from_unit_quaternion(np.array([[0.0, 0.0, 0.0, 1.0]]), np.array([[0.0, 0.0, 2.0]])).shape
         (1,)
+        >>> State.from_unit_quaternion(np.array([0.0, 0.0, 0.0, 2.0]), np.array([0.0, 0.0, 2.0]))
+        Traceback (most recent call last):
+        ...
+        ValueError: expected unit quaternions (norm 1 to 1e-12), got norms [2.]
         """
+        if not (isinstance(q, np.ndarray) and isinstance(m, np.ndarray) and q.dtype == m.dtype == np.float64):
+            q, m = np.asarray(q, dtype=np.float64), np.asarray(m, dtype=np.float64)
+        if q.shape[-1:] != (4,) or m.shape[-1:] != (3,) or q.shape[:-1] != m.shape[:-1]:
+            msg = f"expected q (..., 4) and m (..., 3) of one leading shape, got {q.shape} and {m.shape}"
+            raise ValueError(msg)
+        squared = np.einsum("...i,...i->...", q, q)
+        if not (abs(squared - 1.0) <= 2e-12).all():
+            norms = np.sqrt(squared[~(abs(squared - 1.0) <= 2e-12)]).ravel()[:3]
+            msg = f"expected unit quaternions (norm 1 to 1e-12), got norms {norms}"
+            raise ValueError(msg)
         if not np.isfinite(m).all():
             return cls(q, m)
         state = object.__new__(cls)

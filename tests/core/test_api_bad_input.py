@@ -477,3 +477,18 @@ def test_every_table_entry_targets_a_public_object():
     strays = [_case_id(c) for c in CASES if id(c[0]) not in public]
     assert strays == []
     assert all(inspect.isclass(c[3]) and issubclass(c[3], (ValueError, TypeError)) for c in CASES)
+
+
+@pytest.mark.parametrize(
+    ("q", "m", "message"),
+    [
+        ([0.0, 0.0, 0.0, 2.0], [0.0, 0.0, 1.0], "expected unit quaternions"),
+        ([0.0, 0.0, 0.0, np.nan], [0.0, 0.0, 1.0], "expected unit quaternions"),
+        ([0.0, 0.0, 1.0], [0.0, 0.0, 1.0], "of one leading shape"),
+        ([[0.0, 0.0, 0.0, 1.0]] * 2, [0.0, 0.0, 1.0], "of one leading shape"),
+    ],
+)
+def test_state_from_unit_quaternion_bad_input_raises(q, m, message):
+    """The no-copy constructor is public: non-unit, NaN or mismatched inputs get an error, not a state."""
+    with pytest.raises(ValueError, match=message):
+        State.from_unit_quaternion(np.array(q), np.array(m))
