@@ -1,11 +1,11 @@
-"""Rigid-Earth nutation: the quarter-day RK4 of andoyer.nutation against scipy's DOP853, same equations.
+"""Rigid-Earth nutation: andoyer.planetary.nutation's quarter-day RK4 against scipy's DOP853, same equations.
 
 Model: the spin-averaged torque of the Moon and the Sun (lunar theory of
 :mod:`andoyer.perturbations.lunar_theory`) on the Earth's unit angular momentum,
 ``ṁ = (3H/ω)(S m) × m + p ẑ × m`` in the frame of date, over 18.63 years (the shortest span
 the nutation fits accept), from the same initial state.
 
-* andoyer: :func:`andoyer.nutation.numeric._window_run` — ``S`` tabulated once on the half-step grid
+* andoyer: :func:`andoyer.planetary.nutation.numeric._window_run` — ``S`` tabulated once on the half-step grid
   (vectorised lunar theory), then RK4 at a quarter day in plain Python floats;
 * peer: :func:`scipy.integrate.solve_ivp` (DOP853, rtol 1e-11, atol 1e-14), evaluating the lunar
   theory at every right-hand-side call, as a general integrator must;
@@ -28,8 +28,8 @@ import time  # noqa: E402
 import numpy as np  # noqa: E402
 from scipy.integrate import solve_ivp  # noqa: E402
 
-from andoyer import nutation  # noqa: E402
-from andoyer.nutation.numeric import _gradient_matrices, _window_run  # noqa: E402
+from andoyer.planetary import nutation  # noqa: E402
+from andoyer.planetary.nutation.numeric import _gradient_matrices, _window_run  # noqa: E402
 
 
 def main() -> None:

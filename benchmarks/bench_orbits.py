@@ -1,6 +1,6 @@
 """Orbit histories: the cost of the N-body source per simulated kyr, and of evaluating each source.
 
-* N-body: ``andoyer.orbits.nbody.make_simulation`` (the Sun and eight planets, WHFast with
+* N-body: ``andoyer.planetary.orbits.nbody.make_simulation`` (the Sun and eight planets, WHFast with
   the order-17 corrector, the source's step of about 4 days), with and without REBOUNDx's
   ``gr_potential``, over ``--years`` of simulated time; the peer is REBOUND's IAS15 (adaptive,
   15th order, machine precision) on the same system over ``--peer-years``, scaled per kyr.
@@ -36,8 +36,8 @@ def main() -> None:
     parser.add_argument("--points", type=int, default=100000)
     args = parser.parse_args()
 
-    from andoyer.orbits import NBodyOrbit, SecularOrbit, VondrakEcliptic
-    from andoyer.orbits.nbody import make_simulation
+    from andoyer.planetary.orbits import NBodyOrbit, SecularOrbit, VondrakEcliptic
+    from andoyer.planetary.orbits.nbody import make_simulation
 
     print(f"N-body cost, CPU s per simulated kyr ({args.years:g} yr; IAS15 over {args.peer_years:g} yr)")
     rows = []

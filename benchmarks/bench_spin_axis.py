@@ -1,19 +1,19 @@
 """Secular spin-axis evolution: andoyer's exact-rotation composition against scipy's DOP853.
 
-Equations (both sides): ``ṡ = α(t) (s·n(t)) (s×n(t))`` of :mod:`andoyer.spin_axis`, the Earth
+Equations (both sides): ``ṡ = α(t) (s·n(t)) (s×n(t))`` of :mod:`andoyer.planetary.spin_axis`, the Earth
 with ``ψ̇ = 50.3848″/yr`` at J2000 (Sun + node-averaged Moon), started from the IAU 2006 mean pole.
 
-* andoyer: :func:`andoyer.spin_axis.spin_axis_history` (order-8 composition of exact rotations,
+* andoyer: :func:`andoyer.planetary.spin_axis.spin_axis_history` (order-8 composition of exact rotations,
   default step, compiled with numba when installed), *after a warm-up call*, including the
   orbit evaluation and the description (obliquity, p_A, e sin ϖ);
-* peer: :func:`andoyer.spin_axis.history.integrate_axis_dop853` (scipy ``solve_ivp`` DOP853,
+* peer: :func:`andoyer.planetary.spin_axis.history.integrate_axis_dop853` (scipy ``solve_ivp`` DOP853,
   the orbit evaluated at every right-hand-side call) on a ladder of tolerances; the peer's time
   is that of the cheapest tolerance at least as accurate as andoyer, plus the snvec-like setting
   ``rtol = atol = 1e-5`` (Zeebe & Lourens 2022 integrate with atol 1e-5).
 
 Orbits: ``quasi`` — a 1-Myr Earth-like analytic orbit (three inclination modes and two
 eccentricity modes with Laplace–Lagrange-like frequencies: cheap to evaluate, so the integrators
-are what is timed); ``vondrak`` — :class:`andoyer.orbits.VondrakEcliptic` over its ±200 kyr.
+are what is timed); ``vondrak`` — :class:`andoyer.planetary.orbits.VondrakEcliptic` over its ±200 kyr.
 Accuracy: the largest angle between the axis and a reference (andoyer at a quarter of the step,
 checked against DOP853 at rtol 1e-13) over the output times.
 
@@ -43,9 +43,9 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 
 from andoyer._jit import NUMBA  # noqa: E402
-from andoyer.orbits import VondrakEcliptic  # noqa: E402
-from andoyer.spin_axis import build_model, mean_pole_j2000, output_times, spin_axis_history  # noqa: E402
-from andoyer.spin_axis.history import DEFAULT_STEP, integrate_axis, integrate_axis_dop853  # noqa: E402
+from andoyer.planetary.orbits import VondrakEcliptic  # noqa: E402
+from andoyer.planetary.spin_axis import build_model, mean_pole_j2000, output_times, spin_axis_history  # noqa: E402
+from andoyer.planetary.spin_axis.history import DEFAULT_STEP, integrate_axis, integrate_axis_dop853  # noqa: E402
 
 RATE = 50.3848
 

@@ -1,7 +1,7 @@
 """The Cassini-state figures of ``docs/cassini.md``: the geometry and Colombo's top for the Moon and Mercury.
 
 Drawn by :func:`andoyer.plot.cassini_geometry` and :func:`andoyer.plot.cassini_portrait` from the
-named bodies of :mod:`andoyer.cassini` (cited parameters, nothing fitted).
+named bodies of :mod:`andoyer.planetary.cassini` (cited parameters, nothing fitted).
 
 Run: ``python3 scripts/cassini_figure.py --out docs/images`` (writes ``cassini-moon.png`` and
 ``cassini-mercury.png``).
@@ -12,7 +12,8 @@ from __future__ import annotations
 from _common import output_folder
 from matplotlib.figure import Figure
 
-from andoyer import cassini, plot
+from andoyer import plot
+from andoyer.planetary import cassini
 
 
 def main(argv: list[str] | None = None) -> None:

@@ -5,7 +5,7 @@ REBOUND's WHFast (step 0.5 yr, Newtonian) for ``--samples`` × ``--every`` years
 strongest lines (″/yr, amplitude) of each planet's ``z = e exp(iϖ)`` and ``ζ = sin i exp(iΩ)`` by the
 frequency-modified Fourier transform (Šidlichovský & Nesvorný 1996; ``rebound.frequency_analysis``).
 
-Two starts: ``--start helio`` uses the shipped heliocentric states (what ``andoyer.orbits.nbody``
+Two starts: ``--start helio`` uses the shipped heliocentric states (what ``andoyer.planetary.orbits.nbody``
 integrates: DE421's states at J2000 since 2026-11-25, before that the Keplerian conversion of
 Standish's mean elements); ``--start jacobi`` reads Standish's elements as Jacobi elements instead.
 Measured (32768 samples every 250 yr, 8.2 Myr, about 40 s):
@@ -34,7 +34,7 @@ import argparse
 
 import numpy as np
 
-from andoyer.orbits.planets import planet_data
+from andoyer.planetary.orbits.planets import planet_data
 
 GIANTS = ("jupiter", "saturn", "uranus", "neptune")
 ARCSEC_PER_RAD = 180.0 * 3600.0 / np.pi
@@ -47,7 +47,8 @@ def build(start: str):  # -> rebound.Simulation (rebound is imported lazily)
 
     import rebound
 
-    text = resources.files("andoyer.orbits").joinpath("data/planets_j2000.json").read_text(encoding="utf-8")
+    data_file = resources.files("andoyer.planetary.orbits").joinpath("data/planets_j2000.json")
+    text = data_file.read_text(encoding="utf-8")
     raw = json.loads(text)
     data = planet_data()
     sim = rebound.Simulation()

@@ -38,8 +38,8 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 
-from andoyer.orbits import NBodyOrbit, SecularOrbit, VondrakEcliptic  # noqa: E402
-from andoyer.spin_axis import DEFAULT_PRECESSION_RATE, spin_axis_history  # noqa: E402
+from andoyer.planetary.orbits import NBodyOrbit, SecularOrbit, VondrakEcliptic  # noqa: E402
+from andoyer.planetary.spin_axis import DEFAULT_PRECESSION_RATE, spin_axis_history  # noqa: E402
 
 WINDOWS = (20000.0, 250000.0, 1.0e6)
 

@@ -1,4 +1,4 @@
-"""Write ``src/andoyer/orbits/data/planets_j2000.json``: the planets at J2000 for ``andoyer.orbits``.
+"""Write ``src/andoyer/planetary/orbits/data/planets_j2000.json``: the planets at J2000.
 
 Sources:
 

@@ -1,6 +1,6 @@
 """Fill an N-body cache folder with a *variant* of the ``nbody`` source, to measure what it leaves out.
 
-The cache key of :class:`andoyer.orbits.NBodyOrbit` does not know these variants, so each must
+The cache key of :class:`andoyer.planetary.orbits.NBodyOrbit` does not know these variants, so each must
 go to a folder of its own (``--cache``); ``scripts/compare_la2004.py`` then reads it through
 ``ANDOYER_CACHE_DIR`` (or ``--reference-cache``). Variants:
 
@@ -34,8 +34,8 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 
-from andoyer.orbits import nbody  # noqa: E402
-from andoyer.spin_axis import EPSILON_0  # noqa: E402
+from andoyer.planetary.orbits import nbody  # noqa: E402
+from andoyer.planetary.spin_axis import EPSILON_0  # noqa: E402
 
 MOON_MASS_RATIO = 0.0123000371  # Moon/Earth, JPL DE430 (Folkner et al. 2014)
 MOON_A_KM, MOON_E, MOON_I_DEG = 384399.0, 0.0549, 5.145
@@ -65,7 +65,7 @@ def plan94_states() -> np.ndarray:
 
 
 def install(variant: str) -> dict:
-    """Patch :func:`andoyer.orbits.nbody.make_simulation` for ``variant``; the NBodyOrbit options to use."""
+    """Patch ``make_simulation`` (``planetary.orbits.nbody``) for ``variant``; the NBodyOrbit options."""
     original = nbody.make_simulation
     if variant == "moon-quadrupole":
         j2, radius = moon_quadrupole()

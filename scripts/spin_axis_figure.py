@@ -1,6 +1,6 @@
 """The Earth's (and Mars') obliquity and climatic precession along an orbit source (docs/spin-axis.md).
 
-Drawn by :func:`andoyer.plot.obliquity_history` from :func:`andoyer.spin_axis.spin_axis_history`
+Drawn by :func:`andoyer.plot.obliquity_history` from :func:`andoyer.planetary.spin_axis.spin_axis_history`
 with the default precession rates (Earth 50.38481507″/yr, IAU 2006; Mars 7.597″/yr). With
 ``--orbit vondrak`` only the Earth over ±200 kyr is possible;
 with ``--orbit nbody`` or ``secular`` the script also draws Mars, over ``--span``.
@@ -20,8 +20,8 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 
 from andoyer.cli.obliquity_cmd import orbit_source  # noqa: E402
+from andoyer.planetary.spin_axis import output_times, spin_axis_history  # noqa: E402
 from andoyer.plot import obliquity_history  # noqa: E402
-from andoyer.spin_axis import output_times, spin_axis_history  # noqa: E402
 
 
 def main(argv: list[str] | None = None) -> None:

@@ -23,6 +23,12 @@ from __future__ import annotations
 import importlib
 from typing import TYPE_CHECKING, Any
 
+from andoyer import _moved
+
+# Old module paths (``andoyer.orbits`` -> ``andoyer.planetary.orbits``, ...) import the moved
+# modules with a DeprecationWarning for one release.
+_moved.install()
+
 if TYPE_CHECKING:  # the eager names, for type checkers and IDEs
     from andoyer import (
         bodies,
@@ -30,8 +36,8 @@ if TYPE_CHECKING:  # the eager names, for type checkers and IDEs
         free,
         integrate,
         liepoisson,
-        orbits,
         perturbations,
+        planetary,
         series,
         special,
         theories,
@@ -63,8 +69,8 @@ _LAZY = {
             "free",
             "integrate",
             "liepoisson",
-            "orbits",
             "perturbations",
+            "planetary",
             "series",
             "special",
             "theories",
@@ -86,8 +92,8 @@ __all__ = [
     "free",
     "integrate",
     "liepoisson",
-    "orbits",
     "perturbations",
+    "planetary",
     "propagate",
     "series",
     "special",
@@ -102,6 +108,8 @@ _DEPRECATED = {"RotationMode": "andoyer.body"}
 
 
 def __getattr__(name: str) -> Any:
+    if _moved.new_name(f"andoyer.{name}") is not None:  # a moved subpackage, by its old name
+        return importlib.import_module(f"andoyer.{name}")
     if name in _DEPRECATED:
         return getattr(importlib.import_module(_DEPRECATED[name]), name)
     module_name = _LAZY.get(name)

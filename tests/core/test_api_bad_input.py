@@ -5,8 +5,7 @@ bad input of issue 18 (NaN, ±inf, ±1e300, empty arrays, wrong shapes, shapes t
 broadcast, ``|L| > G``, ``G ≤ 0``, non-physical inertia, impossible sizes and phases). The
 project runs pytest with ``filterwarnings = error``, so a RuntimeWarning (an overflow on the
 way to the error) fails the case. ``test_every_public_name_is_in_the_table_or_exempt`` walks
-``andoyer.__all__``, the ``__all__`` of the subpackages it lists and of ``andoyer.precession``,
-``andoyer.cassini``, ``andoyer.nutation`` and ``andoyer.spin_axis``:
+``andoyer.__all__`` and the ``__all__`` of the subpackages it lists, and of theirs (``andoyer.planetary``'s):
 a new public function must add its bad inputs here, or say in ``EXEMPT`` why it has none.
 The command line's half is ``tests/cli/test_cli_bad_input.py``.
 """
@@ -22,32 +21,11 @@ import pytest
 from scipy.spatial.transform import Rotation
 
 import andoyer
-import andoyer.cassini
-import andoyer.nutation
-import andoyer.precession
-import andoyer.spin_axis
+import andoyer.planetary.cassini
+import andoyer.planetary.nutation
+import andoyer.planetary.precession
+import andoyer.planetary.spin_axis
 from andoyer import FreeRotation, RigidBody, State, bodies, charts, free, integrate, propagate, special
-from andoyer.cassini import CassiniBody, ColomboTop, eccentricity_function
-from andoyer.nutation import (
-    fit_terms,
-    luni_solar_precession,
-    minimum_span,
-    numeric_terms,
-    nutation,
-    nutation_series,
-    terms_table,
-)
-from andoyer.orbits import (
-    NBodyOrbit,
-    SecularOrbit,
-    TableOrbit,
-    VondrakEcliptic,
-    check_times,
-    orbit_history,
-    read_alkhqp,
-    read_orbit_csv,
-    write_orbit_csv,
-)
 from andoyer.perturbations import (
     CircularOrbit,
     GravityGradient,
@@ -61,7 +39,28 @@ from andoyer.perturbations import (
     perturbed_rates,
     solve_kepler,
 )
-from andoyer.precession import (
+from andoyer.planetary.cassini import CassiniBody, ColomboTop, eccentricity_function
+from andoyer.planetary.nutation import (
+    fit_terms,
+    luni_solar_precession,
+    minimum_span,
+    numeric_terms,
+    nutation,
+    nutation_series,
+    terms_table,
+)
+from andoyer.planetary.orbits import (
+    NBodyOrbit,
+    SecularOrbit,
+    TableOrbit,
+    VondrakEcliptic,
+    check_times,
+    orbit_history,
+    read_alkhqp,
+    read_orbit_csv,
+    write_orbit_csv,
+)
+from andoyer.planetary.precession import (
     check_dynamical_ellipticity,
     default_step,
     fit_trend,
@@ -69,7 +68,7 @@ from andoyer.precession import (
     precession_problem,
     precession_rates,
 )
-from andoyer.spin_axis import (
+from andoyer.planetary.spin_axis import (
     SpinAxisModel,
     build_model,
     daily_insolation,
@@ -310,8 +309,14 @@ CASES = [
     (CassiniBody, CassiniBody, ("x", 1e-4, 1e-5, 1.5, 1.0, 0.0, 0.1, -0.01), ValueError, "expected"),
     (ColomboTop, ColomboTop, (NAN, 0.0, -0.01, 0.1), ValueError, "expected finite"),
     (eccentricity_function, eccentricity_function, (1.5, 1.0), ValueError, "expected"),
-    (andoyer.cassini.get, andoyer.cassini.get, ("pluto",), ValueError, "expected a body"),
-    (andoyer.cassini.states, andoyer.cassini.states, ("pluto",), ValueError, "expected a body"),
+    (andoyer.planetary.cassini.get, andoyer.planetary.cassini.get, ("pluto",), ValueError, "expected a body"),
+    (
+        andoyer.planetary.cassini.states,
+        andoyer.planetary.cassini.states,
+        ("pluto",),
+        ValueError,
+        "expected a body",
+    ),
     # -- nutation
     (nutation, nutation, ([NAN],), ValueError, "expected finite"),
     (nutation, P(nutation, axis="x"), ([0.0],), ValueError, "expected axis"),
@@ -420,9 +425,9 @@ EXEMPT = {
 
 
 def _public() -> dict[int, tuple[str, object]]:
-    """Every public object: ``andoyer.__all__``, its subpackages' and ``andoyer.precession``'s."""
+    """Every public object: ``andoyer.__all__`` and its subpackages', ``andoyer.planetary``'s included."""
     found: dict[int, tuple[str, object]] = {}
-    modules = [andoyer, andoyer.precession, andoyer.cassini, andoyer.nutation, andoyer.spin_axis]
+    modules = [andoyer]
     for name in andoyer.__all__:
         obj = getattr(andoyer, name)
         if isinstance(obj, types.ModuleType):
@@ -430,10 +435,17 @@ def _public() -> dict[int, tuple[str, object]]:
                 modules.append(obj)
         else:
             found.setdefault(id(obj), (name, obj))
-    for module in modules[1:]:
+    index = 1
+    while index < len(modules):  # the list grows as subpackages (andoyer.planetary's) are met
+        module = modules[index]
+        index += 1
         for name in module.__all__:
             obj = getattr(module, name)
-            found.setdefault(id(obj), (name, obj))
+            if isinstance(obj, types.ModuleType):
+                if obj not in modules:
+                    modules.append(obj)
+            else:
+                found.setdefault(id(obj), (name, obj))
     return found
 
 

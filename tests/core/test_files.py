@@ -47,8 +47,8 @@ def test_atomic_replace_failure_leaves_previous_file_and_no_debris(tmp_path):
 
 def test_orbit_table_written_with_umask_mode(tmp_path, umask_027):
     """Orbit tables were written 0600 (mkstemp's mode) before the one atomic write."""
-    from andoyer.orbits.table import write_orbit_csv
-    from andoyer.orbits.vondrak import VondrakEcliptic
+    from andoyer.planetary.orbits.table import write_orbit_csv
+    from andoyer.planetary.orbits.vondrak import VondrakEcliptic
 
     path = tmp_path / "orbit.csv"
     write_orbit_csv(path, VondrakEcliptic(), np.array([0.0, 1000.0]))

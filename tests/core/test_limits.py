@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 import andoyer._limits
-import andoyer.precession
+import andoyer.planetary.precession
 from andoyer import FreeRotation, RigidBody, State, bodies, propagate
 from andoyer._jit import NUMBA
 from andoyer._limits import (
@@ -33,7 +33,7 @@ from andoyer._limits import (
 from andoyer.free import FreeMotion
 from andoyer.perturbations import HeavyTop, Model, PrecessingFrame
 from andoyer.perturbations.solar_system import DAY, JULIAN_YEAR
-from andoyer.precession import precession_rates
+from andoyer.planetary.precession import precession_rates
 from andoyer.theories.sam import MAX_ORDER, sam_theory
 from conftest import rotation_distance
 
@@ -162,7 +162,7 @@ def test_size_splitting_issue_example_refused_before_allocating():
 def test_size_precession_issue_example_refused_with_its_size():
     peak, message = _peak_while_refused(lambda: precession_rates("earth", integrate=1e9), "would need")
     # one output of 4 states × 7 floats × 3 copies (+ the time) per step of 2.2439 days
-    steps = 1e9 * JULIAN_YEAR / andoyer.precession.default_step("earth")
+    steps = 1e9 * JULIAN_YEAR / andoyer.planetary.precession.default_step("earth")
     assert format_bytes(steps * (8 + 2 * 3 * 7 * 8 * 4)) in message
     assert peak < 2**22
 
@@ -178,7 +178,7 @@ def test_size_reference_refused_from_its_step_estimate(t, rtol):
 
 def test_size_secular_refused_from_its_step_estimate():
     # the Moon's mean motion 2.66e-6 rad/s over 1e8 years: 0.007 steps per radian of 0.5 ms, 8.6 hours
-    model, states = andoyer.precession.precession_problem("earth")
+    model, states = andoyer.planetary.precession.precession_problem("earth")
     moon = max(p.orbit.mean_motion for p in model.perturbation.perturbers)
     hours = 0.007 * moon * 1e8 * JULIAN_YEAR * 5e-4 / 3600
     with warnings.catch_warnings():
@@ -208,13 +208,13 @@ def test_size_sam_order_refused_with_its_estimate():
 @pytest.mark.parametrize(("years", "days"), [(0.2, 8.227), (0.05, 8.227), (0.1, 2.0)])
 def test_precession_span_is_honoured_exactly(monkeypatch, years, days):
     seen = []
-    real = andoyer.precession.propagate
+    real = andoyer.planetary.precession.propagate
 
     def spy(model, states, t, method="reference", **options):
         seen.append((method, np.asarray(t).ravel(), options))
         return real(model, states, t, method=method, **options)
 
-    monkeypatch.setattr(andoyer.precession, "propagate", spy)
+    monkeypatch.setattr(andoyer.planetary.precession, "propagate", spy)
     rates = precession_rates("earth", integrate=years, step=days * DAY, secular_years=1.0)
     method, t, options = seen[-1]
     assert method == "splitting"

@@ -7,9 +7,10 @@ import math
 import numpy as np
 import pytest
 
-from andoyer import cassini, plot
-from andoyer.cassini import ColomboTop
+from andoyer import plot
 from andoyer.cli import main
+from andoyer.planetary import cassini
+from andoyer.planetary.cassini import ColomboTop
 
 
 def written_out_hamiltonian(theta, phi, alpha, beta, g, i):

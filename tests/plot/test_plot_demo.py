@@ -8,7 +8,7 @@ from figure_checks import texts_outside, titles_and_labels
 
 from andoyer.cli import demo_report
 from andoyer.cli.demo_report import DemoContext
-from andoyer.precession import ARCSEC, precession_rates
+from andoyer.planetary.precession import ARCSEC, precession_rates
 
 
 @pytest.fixture(scope="module")

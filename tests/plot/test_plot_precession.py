@@ -7,8 +7,8 @@ from andoyer import FreeRotation, RigidBody, State, bodies
 from andoyer.integrate.secular import propagate_momentum
 from andoyer.perturbations.secular import SecularGravityGradient
 from andoyer.perturbations.solar_system import JULIAN_YEAR, OBLIQUITY, mean_perturbers
+from andoyer.planetary.precession import fit_trend
 from andoyer.plot import precession, precession_data
-from andoyer.precession import fit_trend
 
 
 @pytest.mark.parametrize(

@@ -14,7 +14,7 @@ EXAMPLES = """examples:
   andoyer cassini moon
   andoyer cassini mercury --format json
   andoyer cassini mercury --moment-of-inertia 0.34 --node-period 300000 --inclination 8.6
-The states of Colombo's top (andoyer.cassini), numbered as Peale (1969): only those that exist.
+The states of Colombo's top (andoyer.planetary.cassini), numbered as Peale (1969): only those that exist.
 obliquity: spin axis to orbit normal (deg); inclination_to_laplace: spin axis to the Laplace pole
 (deg); precession_constant (alpha) and resonance_constant (beta) in arcsec per Julian year;
 node_rate (g < 0, regression) in arcsec per Julian year.
@@ -24,7 +24,7 @@ precession_constant, resonance_constant, node_rate, inclination.
 ARCSEC = math.pi / 648000.0
 
 if TYPE_CHECKING:
-    from andoyer.cassini import CassiniBody
+    from andoyer.planetary.cassini import CassiniBody
 
 
 def add_cassini_arguments(parser: argparse.ArgumentParser) -> None:
@@ -47,7 +47,7 @@ def add_cassini_arguments(parser: argparse.ArgumentParser) -> None:
 
 def cassini_body_from_args(name: str, args: argparse.Namespace) -> CassiniBody:
     """The named body with the command line's overrides (ValueError on non-physical values)."""
-    from andoyer import cassini
+    from andoyer.planetary import cassini
 
     changes: dict[str, float] = {}
     if args.j2 is not None:
@@ -71,7 +71,7 @@ def cassini_body_from_args(name: str, args: argparse.Namespace) -> CassiniBody:
 
 def register(commands: argparse._SubParsersAction) -> None:
     """Add the sub-command to the parser."""
-    from andoyer.cassini import BODIES
+    from andoyer.planetary.cassini import BODIES
 
     parser = commands.add_parser(
         "cassini",

@@ -33,7 +33,7 @@ from andoyer.state import State
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
-    from andoyer.precession import PrecessionRates
+    from andoyer.planetary.precession import PrecessionRates
 
 #: Illustrative inclination of the angular momentum on the reference axis (radians).
 DEMO_INCLINATION = 0.4
@@ -218,7 +218,7 @@ def precession_figure() -> tuple[Figure, PrecessionRates]:
     """
     from andoyer import plot
     from andoyer.perturbations.solar_system import JULIAN_YEAR, mean_perturbers
-    from andoyer.precession import default_step, precession_problem, precession_rates
+    from andoyer.planetary.precession import default_step, precession_problem, precession_rates
     from andoyer.propagation import propagate
 
     rates = precession_rates("earth", integrate=PRECESSION_YEARS)
@@ -246,7 +246,7 @@ def precession_figure() -> tuple[Figure, PrecessionRates]:
 
 def section_precession(ctx: DemoContext) -> str:
     """Earth's luni-solar precession: secular model, full splitting integration, time series."""
-    from andoyer.precession import ARCSEC
+    from andoyer.planetary.precession import ARCSEC
 
     figure, rates = precession_figure()
     figure.savefig(ctx.folder / "earth-precession.png", dpi=110)

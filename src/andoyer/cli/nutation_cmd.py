@@ -15,7 +15,7 @@ EXAMPLES = """examples:
   andoyer nutation earth --span -10 10 --step 0.05 --axis momentum --format json --plot nut.png
 Times are Julian years TT from J2000; dpsi and deps are the nutations in longitude and in
 obliquity (arcsec) of the chosen axis, referred to the mean ecliptic and equinox of date, from an
-integration of the Moon's and the Sun's torque on the oblate Earth (andoyer.nutation).
+integration of the Moon's and the Sun's torque on the oblate Earth (andoyer.planetary.nutation).
 --terms fits the principal terms over the span, which must cover one period of the slowest
 (the 18.6-year node, 18.613 years), and lists them beside IAU 2000A (non-rigid).
 JSON keys: t, dpsi, deps (and with --terms: terms, precession_arcsec_per_year).
@@ -26,7 +26,7 @@ _MAX_POINTS = 2_000_000
 
 def register(commands: argparse._SubParsersAction) -> None:
     """Add the sub-command to the parser."""
-    from andoyer.nutation import AXES, H_MHB2000
+    from andoyer.planetary.nutation import AXES, H_MHB2000
 
     parser = commands.add_parser(
         "nutation",
@@ -80,8 +80,8 @@ def _plot_format(path: str) -> str:
 
 def run(args: argparse.Namespace) -> int:
     """Compute the nutation and write it (and the terms, and the picture)."""
-    from andoyer import nutation
-    from andoyer.precession import check_dynamical_ellipticity
+    from andoyer.planetary import nutation
+    from andoyer.planetary.precession import check_dynamical_ellipticity
 
     H = check_dynamical_ellipticity(args.dynamical_ellipticity)
     t0, t1 = args.span

@@ -1,4 +1,4 @@
-"""``andoyer obliquity``: the spin axis of the Earth or Mars along a moving orbit (andoyer.spin_axis)."""
+"""``andoyer obliquity``: the spin axis of the Earth or Mars along a moving orbit (planetary.spin_axis)."""
 
 from __future__ import annotations
 
@@ -58,7 +58,7 @@ def register(commands: argparse._SubParsersAction) -> None:
 
 
 def orbit_source(name: str, body: str):
-    """The orbit history named on the command line (:func:`andoyer.orbits.orbit_history`).
+    """The orbit history named on the command line (:func:`andoyer.planetary.orbits.orbit_history`).
 
     Parameters
     ----------
@@ -75,7 +75,7 @@ def orbit_source(name: str, body: str):
     >>> orbit_source("vondrak", "earth").name
     'vondrak'
     """
-    from andoyer.orbits import orbit_history
+    from andoyer.planetary.orbits import orbit_history
 
     return orbit_history(name, body)
 
@@ -109,7 +109,7 @@ def _table(h, fmt: str) -> str:
 
 def run(args: argparse.Namespace) -> int:
     """Integrate the axis and write the table (and the plot)."""
-    from andoyer.spin_axis import output_times, spin_axis_history
+    from andoyer.planetary.spin_axis import output_times, spin_axis_history
 
     t0, t1 = args.span
     if not args.step > 0:

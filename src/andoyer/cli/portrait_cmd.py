@@ -81,7 +81,7 @@ def register(commands: argparse._SubParsersAction) -> None:
 
 
 def _register_cassini(kinds: argparse._SubParsersAction) -> None:
-    from andoyer.cassini import BODIES
+    from andoyer.planetary.cassini import BODIES
 
     text = "phase portrait of Colombo's top with the Cassini states and the separatrix"
     sub = kinds.add_parser("cassini", help=text, description=text)

@@ -15,7 +15,7 @@ EXAMPLES = """examples:
   andoyer precession earth --dynamical-ellipticity 0.0032737949
 Rates are arcseconds per Julian year of regression of the angular momentum's node on the
 planet's ecliptic: from the averaged (secular) model, and with --integrate YEARS from a full
-splitting integration of the Sun's (and Moon's) gravity-gradient torque (see andoyer.precession).
+splitting integration of the Sun's (and Moon's) gravity-gradient torque (see andoyer.planetary.precession).
 JSON keys: body, perturbers, obliquity_deg, secular_arcsec_per_year, integrated_arcsec_per_year
 (null without --integrate), integration_years, step_days.
 """
@@ -23,7 +23,7 @@ JSON keys: body, perturbers, obliquity_deg, secular_arcsec_per_year, integrated_
 
 def register(commands: argparse._SubParsersAction) -> None:
     """Add the sub-command to the parser."""
-    from andoyer.precession import PLANETS
+    from andoyer.planetary.precession import PLANETS
 
     parser = commands.add_parser(
         "precession",
@@ -38,7 +38,7 @@ def register(commands: argparse._SubParsersAction) -> None:
         "--step",
         type=positive_number,
         metavar="DAYS",
-        help="splitting step (default: andoyer.precession.default_step)",
+        help="splitting step (default: andoyer.planetary.precession.default_step)",
     )
     parser.add_argument("--order", type=int, choices=(2, 4, 6), default=2, help="splitting order")
     parser.add_argument(
@@ -71,7 +71,7 @@ def render_text(fields: dict) -> str:
 def run(args: argparse.Namespace) -> int:
     """Compute the rates and write them."""
     from andoyer.perturbations.solar_system import DAY, JULIAN_YEAR
-    from andoyer.precession import precession_rates
+    from andoyer.planetary.precession import precession_rates
 
     if args.step is not None and args.integrate is None:
         msg = "expected --step only with --integrate YEARS, got --step alone"

@@ -4,7 +4,7 @@ r"""Spin-axis histories as ensemble members: a sampler of (precession rate or H,
 dynamical ellipticity ``H``, and the tidal dissipation ``T_d`` (Zeebe & Lourens 2022), uniformly
 in ranges or on a regular grid, as snvecR's users do by hand; its states carry the spin axis at
 J2000 (J2000 ecliptic frame, ``G = 1``, ``J = 0``). :class:`SpinAxisPropagator` integrates each
-sample's axis along one orbit history (:func:`andoyer.spin_axis.evolve_axes`) and returns states
+sample's axis along one orbit history (:func:`andoyer.planetary.spin_axis.evolve_axes`) and returns states
 in the **orbit frame of date** turned back by the general precession, the figure axis along
 the spin axis (``J = 0``): the Euler angle ``θ`` is the obliquity ``ε(t)`` and ``φ = π − p_A(t)``
 (so ``output="euler"`` stores obliquity and precession directly; ``φ(0) = π``: the equator's
@@ -14,7 +14,7 @@ ascending node on the orbit is the autumnal equinox). The Andoyer chart is singu
 Examples
 --------
 >>> from andoyer.ensemble import run_ensemble
->>> from andoyer.orbits import VondrakEcliptic
+>>> from andoyer.planetary.orbits import VondrakEcliptic
 >>> ds = run_ensemble(SpinParameterSampler("earth", precession_rate=(50.0, 51.0), grid=(3,)), 3,
 ...                   [-1000.0, 0.0], propagator=SpinAxisPropagator(VondrakEcliptic(), "earth"), chunk=3,
 ...                   output="euler", scheduler="synchronous", progress=False)
@@ -32,9 +32,9 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer.ensemble.sampling import Draw, _interval
-from andoyer.orbits.protocol import OrbitHistory
-from andoyer.spin_axis import DEFAULT_PRECESSION_RATE, build_model, default_axis, evolve_axes
-from andoyer.spin_axis.history import DEFAULT_STEP
+from andoyer.planetary.orbits.protocol import OrbitHistory
+from andoyer.planetary.spin_axis import DEFAULT_PRECESSION_RATE, build_model, default_axis, evolve_axes
+from andoyer.planetary.spin_axis.history import DEFAULT_STEP
 from andoyer.state import State
 
 __all__ = ["SpinAxisPropagator", "SpinParameterSampler"]
@@ -61,7 +61,7 @@ class SpinParameterSampler:
         chunk is grid point ``j mod size``: with ``chunk`` equal to the grid's size every chunk
         is the whole grid (``n_samples = chunk`` for one pass).
     axis : array_like, shape (3,), optional
-        Spin axis at J2000 (default :func:`andoyer.spin_axis.default_axis`).
+        Spin axis at J2000 (default :func:`andoyer.planetary.spin_axis.default_axis`).
 
     Examples
     --------
@@ -160,7 +160,7 @@ class SpinAxisPropagator:
         tidal_dissipation: ArrayLike | None = None,
     ) -> State:
         """States (n, T) in the orbit frame of date: obliquity ``θ``, ``φ = π − p_A`` (Euler angles)."""
-        from andoyer.orbits.protocol import check_times
+        from andoyer.planetary.orbits.protocol import check_times
 
         times = check_times(times, self.orbit.span, self.orbit.name)
         n = state.size

@@ -1,6 +1,6 @@
 r"""Colombo's top: the phase portrait with the Cassini states, and the geometry of the states.
 
-The portrait is drawn in the frame that turns with the orbit's node (:mod:`andoyer.cassini`):
+The portrait is drawn in the frame that turns with the orbit's node (:mod:`andoyer.planetary.cassini`):
 the spin axis ``s = (sin θ cos φ, sin θ sin φ, cos θ)`` with the orbit normal ``k`` as the pole
 and the Laplace pole at ``φ = 0``, ``θ = i``. The level curves of
 
@@ -8,7 +8,7 @@ and the Laplace pole at ``φ = 0``, ``θ = i``. The level curves of
    - g\,(\cos i\cos\theta + \sin i\sin\theta\cos\varphi)
 
 are contoured on a ``(φ, θ)`` grid; the separatrix (the level of state 4) is the exact
-solution of :meth:`andoyer.cassini.ColomboTop.separatrix`. A state with signed obliquity
+solution of :meth:`andoyer.planetary.cassini.ColomboTop.separatrix`. A state with signed obliquity
 ``θ > 0`` sits at ``φ = 0``, one with ``θ < 0`` at ``φ = ±180°``.
 """
 
@@ -22,7 +22,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 from numpy.typing import NDArray
 
-from andoyer.cassini import CassiniBody, CassiniState, ColomboTop
+from andoyer.planetary.cassini import CassiniBody, CassiniState, ColomboTop
 from andoyer.plot.projection import new_axes
 from andoyer.plot.sphere import SEPARATRIX_COLOR
 
@@ -88,7 +88,7 @@ def cassini_portrait_data(
 
     Examples
     --------
-    >>> from andoyer import cassini
+    >>> from andoyer.planetary import cassini
     >>> data = cassini_portrait_data(cassini.get("mercury"), n_phi=5, n_theta=5)
     >>> [s.number for s in data.states], data.energy.shape
     ([1, 2, 3, 4], (5, 5))
@@ -140,7 +140,7 @@ def cassini_portrait(
 
     Examples
     --------
-    >>> from andoyer import cassini
+    >>> from andoyer.planetary import cassini
     >>> fig = cassini_portrait(cassini.get("moon"), n_phi=91, n_theta=46)
     >>> [s.number for s in fig.andoyer_data.states]
     [2, 3]
@@ -211,11 +211,11 @@ def cassini_geometry(system: CassiniBody | ColomboTop, *, ax: Axes | None = None
     Returns
     -------
     matplotlib.figure.Figure
-        With the list of :class:`~andoyer.cassini.CassiniState` as ``figure.andoyer_data``.
+        With the list of :class:`~andoyer.planetary.cassini.CassiniState` as ``figure.andoyer_data``.
 
     Examples
     --------
-    >>> from andoyer import cassini
+    >>> from andoyer.planetary import cassini
     >>> fig = cassini_geometry(cassini.get("moon"))
     >>> round(fig.andoyer_data[0].inclination_to_laplace_deg, 3)
     1.549

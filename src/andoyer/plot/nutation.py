@@ -1,4 +1,4 @@
-"""The rigid-Earth nutation in longitude and obliquity against time (:mod:`andoyer.nutation`)."""
+"""The rigid-Earth nutation in longitude and obliquity against time (:mod:`andoyer.planetary.nutation`)."""
 
 from __future__ import annotations
 

@@ -12,7 +12,7 @@ the obliquity (angle from the reference pole ``s3``) and the precession (longitu
 of the plane normal to ``a`` on the reference plane ``s1 s2``).  They are the Euler angles
 ``(θ, φ)`` for the figure axis (``b3 = (sin θ sin φ, −sin θ cos φ, cos θ)``) and Andoyer's
 ``(I, h)`` for the momentum axis (``m_ref = G (sin I sin h, −sin I cos h, cos I)``).  The trends
-``Ω₀ + Ω̇ t`` and ``ε₀ + ε̇ t`` are fitted by least squares (:func:`andoyer.precession.fit_trend`)
+``Ω₀ + Ω̇ t`` and ``ε₀ + ε̇ t`` are fitted by least squares (:func:`andoyer.planetary.precession.fit_trend`)
 together with sinusoids of the known nutation frequencies, if given: a straight line alone over
 a span that is not a whole number of nutation periods is biased by them (one state of the Earth
 over one 18.6-year lunar nutation: 52.2″/yr instead of 50.48″/yr).  The nutations are what is
@@ -23,7 +23,7 @@ left,
 
 ``Ω̇`` is the mean rate of the node; a regressing node (``Ω̇ < 0``, the luni-solar precession of
 the planets) has the astronomical *precession rate* ``p = −Ω̇ > 0`` (``p = −⟨ḣ⟩`` for the
-momentum axis, as in :mod:`andoyer.precession`).  ``Ω`` is undefined where the axis is at the pole
+momentum axis, as in :mod:`andoyer.planetary.precession`).  ``Ω`` is undefined where the axis is at the pole
 (``ε = 0`` or ``π``), and the unwrapping needs samples closer than half a turn of ``Ω``.
 """
 
@@ -37,7 +37,7 @@ from matplotlib.figure import Figure
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer._validation import as_finite
-from andoyer.precession import ARCSEC, fit_trend
+from andoyer.planetary.precession import ARCSEC, fit_trend
 from andoyer.state import State
 
 __all__ = ["PrecessionSeries", "precession", "precession_data"]
@@ -102,7 +102,7 @@ def precession_data(
     frequencies : array_like, shape (F,)
         Angular frequencies (radians per unit of ``times``) of the nutation terms to fit together
         with the trends; those whose period is longer than the span are left out (see
-        :func:`andoyer.precession.fit_trend`).  Default none: straight lines.
+        :func:`andoyer.planetary.precession.fit_trend`).  Default none: straight lines.
 
     Returns
     -------

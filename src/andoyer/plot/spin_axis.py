@@ -2,7 +2,7 @@ r"""Obliquity and climatic precession of spin-axis histories against time (kyr).
 
 Top panel: the obliquity ``ε`` (degrees) of each history; bottom panel: the climatic
 precession ``e sin ϖ`` (dimensionless) of those that know the eccentricity
-(:class:`~andoyer.spin_axis.SpinAxisHistory`). Time in thousands of Julian years from J2000.
+(:class:`~andoyer.planetary.spin_axis.SpinAxisHistory`). Time in thousands of Julian years from J2000.
 """
 
 from __future__ import annotations
@@ -12,7 +12,7 @@ from collections.abc import Sequence
 import numpy as np
 from matplotlib.figure import Figure
 
-from andoyer.spin_axis import SpinAxisHistory
+from andoyer.planetary.spin_axis import SpinAxisHistory
 
 __all__ = ["obliquity_history"]
 
@@ -35,8 +35,8 @@ def obliquity_history(
 
     Examples
     --------
-    >>> from andoyer.orbits import VondrakEcliptic
-    >>> from andoyer.spin_axis import output_times, spin_axis_history
+    >>> from andoyer.planetary.orbits import VondrakEcliptic
+    >>> from andoyer.planetary.spin_axis import output_times, spin_axis_history
     >>> h = spin_axis_history(VondrakEcliptic(), "earth", output_times(-5000.0, 0.0, 1000.0))
     >>> fig = obliquity_history(h)
     >>> [ax.get_ylabel() for ax in fig.axes]

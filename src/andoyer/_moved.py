@@ -1,0 +1,99 @@
+"""Module paths that moved: the old dotted name imports the new module, with a DeprecationWarning.
+
+When a module or package of ``andoyer`` moves (``andoyer.orbits`` became
+``andoyer.planetary.orbits``), its old name keeps working for one release: ``import
+andoyer.orbits.nbody`` or ``from andoyer.orbits import nbody`` gives the module at its new
+place, the same module object (so ``isinstance`` checks and module state are shared), and warns
+once per old name. The table :data:`MOVED` is the one place that says what moved; the finder is
+installed when ``andoyer`` is imported.
+
+Examples
+--------
+>>> import warnings
+>>> from andoyer._moved import MOVED, new_name
+>>> new_name("andoyer.orbits.nbody")
+'andoyer.planetary.orbits.nbody'
+>>> new_name("andoyer.state") is None
+True
+"""
+
+from __future__ import annotations
+
+import importlib
+import importlib.abc
+import importlib.util
+import sys
+import warnings
+from types import ModuleType
+
+__all__ = ["MOVED", "install", "new_name"]
+
+#: Old dotted prefix -> new dotted prefix. An old name ``old.x.y`` maps to ``new.x.y``.
+MOVED: dict[str, str] = {
+    "andoyer.orbits": "andoyer.planetary.orbits",
+    "andoyer.precession": "andoyer.planetary.precession",
+    "andoyer.cassini": "andoyer.planetary.cassini",
+    "andoyer.spin_axis": "andoyer.planetary.spin_axis",
+    "andoyer.nutation": "andoyer.planetary.nutation",
+}
+
+
+def new_name(fullname: str) -> str | None:
+    """The new dotted name of the old module ``fullname``, or ``None`` if it did not move.
+
+    Parameters
+    ----------
+    fullname : str
+        A dotted module name.
+
+    Returns
+    -------
+    str or None
+    """
+    for old, new in MOVED.items():
+        if fullname == old or fullname.startswith(old + "."):
+            return new + fullname[len(old) :]
+    return None
+
+
+class _Alias(importlib.abc.Loader):
+    """Loads an old name as the module at its new place."""
+
+    def __init__(self, target: str) -> None:
+        self.target = target
+
+    def create_module(self, spec: importlib.machinery.ModuleSpec) -> ModuleType:
+        warnings.warn(
+            f"{spec.name} moved to {self.target}; the old name works until the next release",
+            DeprecationWarning,
+            stacklevel=2,
+        )
+        module = importlib.import_module(self.target)
+        self.spec = module.__spec__
+        return module
+
+    def exec_module(self, module: ModuleType) -> None:
+        """Nothing to run (the module ran at its new place): give it back its own spec.
+
+        The import system sets ``__spec__`` of whatever ``create_module`` returns to the alias's
+        spec; the module must keep its own (``importlib.resources`` reads it).
+        """
+        module.__spec__ = self.spec
+
+
+class _Finder(importlib.abc.MetaPathFinder):
+    """Finds old names of moved modules (ahead of the file system, where they no longer are)."""
+
+    def find_spec(
+        self, fullname: str, path: object = None, target: object = None  # noqa: ARG002
+    ) -> importlib.machinery.ModuleSpec | None:
+        new = new_name(fullname)
+        if new is None:
+            return None
+        return importlib.util.spec_from_loader(fullname, _Alias(new))
+
+
+def install() -> None:
+    """Put the finder of moved modules first on ``sys.meta_path`` (once)."""
+    if not any(isinstance(finder, _Finder) for finder in sys.meta_path):
+        sys.meta_path.insert(0, _Finder())

@@ -1,0 +1,82 @@
+"""One entry point for every orbit source: a name or a table file."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from typing import Any
+
+from andoyer.planetary.orbits.planets import PLANETS, check_planet
+from andoyer.planetary.orbits.protocol import OrbitHistory
+
+__all__ = ["SOURCES", "orbit_history"]
+
+#: The named orbit sources.
+SOURCES = ("vondrak", "nbody", "secular")
+
+
+def orbit_history(source: str | os.PathLike[str], body: str = "earth", **options: Any) -> OrbitHistory:
+    """The orbit history of ``body`` from a named source or a table file.
+
+    Parameters
+    ----------
+    source : str or path-like
+        ``"vondrak"`` (the Earth only), ``"nbody"``, ``"secular"``, or the path of a CSV
+        table (:func:`~andoyer.planetary.orbits.table.read_orbit_csv`; a table holds one orbit, so
+        ``body`` is not used).
+    body : str
+        A planet of :data:`~andoyer.planetary.orbits.planets.PLANETS`.
+    **options
+        Passed to :class:`~andoyer.planetary.orbits.nbody.NBodyOrbit` or
+        :class:`~andoyer.planetary.orbits.secular.SecularOrbit`.
+
+    Returns
+    -------
+    OrbitHistory
+
+    Examples
+    --------
+    >>> orbit_history("secular", "mars").name
+    'secular'
+    >>> orbit_history("vondrak", "mars")
+    Traceback (most recent call last):
+    ...
+    ValueError: expected body 'earth' for the vondrak orbit (the ecliptic), got 'mars'
+    """
+    name = str(source)
+    if name in SOURCES:
+        planet = PLANETS[check_planet(body)]
+        if name == "vondrak":
+            from andoyer.planetary.orbits.vondrak import VondrakEcliptic
+
+            if planet != "earth":
+                msg = f"expected body 'earth' for the vondrak orbit (the ecliptic), got {body!r}"
+                raise ValueError(msg)
+            if options:
+                msg = f"expected no options for the vondrak orbit, got {', '.join(sorted(options))}"
+                raise ValueError(msg)
+            return VondrakEcliptic()
+        if name == "nbody":
+            from andoyer.planetary.orbits.nbody import NBodyOrbit
+
+            return NBodyOrbit(planet, **options)
+        from andoyer.planetary.orbits.secular import SecularOrbit
+
+        return SecularOrbit(planet, **options)
+    path = Path(name)
+    if not path.is_file():
+        msg = f"expected an orbit source among {', '.join(SOURCES)} or an existing table file, got {name!r}"
+        raise ValueError(msg)
+    if path.suffix.lower() != ".csv":
+        msg = (
+            f"expected a .csv orbit table (La2010-style alkhqp files: "
+            f"andoyer.planetary.orbits.read_alkhqp with the "
+            f"frame's rotation), got {name!r}"
+        )
+        raise ValueError(msg)
+    if options:
+        msg = f"expected no options for an orbit table, got {', '.join(sorted(options))}"
+        raise ValueError(msg)
+    from andoyer.planetary.orbits.table import read_orbit_csv
+
+    return read_orbit_csv(path)

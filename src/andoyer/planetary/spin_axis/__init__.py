@@ -1,0 +1,182 @@
+r"""Secular spin-axis dynamics under a moving orbit: obliquity, precession, insolation.
+
+The averaged torque of the Sun (and, for the Earth, the Moon) on an oblate planet turns its
+unit spin axis ``s`` about the orbit normal of date ``n(t)`` of any
+:class:`~andoyer.planetary.orbits.OrbitHistory` (:mod:`andoyer.planetary.spin_axis.model` derives it from
+:class:`~andoyer.perturbations.secular.SecularGravityGradient`):
+
+.. math:: \dot{\mathbf s} = \alpha(t)\,(\mathbf s\cdot\mathbf n)\,(\mathbf s\times\mathbf n),
+   \qquad \alpha(t) = \alpha_\odot\big[(1 - e(t)^2)^{-3/2} + \beta\big],
+
+integrated by compositions of exact rotations (:mod:`andoyer.planetary.spin_axis.stepping`; order 8,
+``|s| = 1`` to round-off) and described by :mod:`andoyer.planetary.spin_axis.history` (obliquity,
+general precession ``p_A``, climatic precession ``e sin ϖ``) and
+:mod:`andoyer.planetary.spin_axis.insolation` (Berger 1978). Times are Julian years TT from J2000, the
+frame the J2000 ecliptic and equinox.
+
+Examples
+--------
+>>> from andoyer.planetary.orbits import VondrakEcliptic
+>>> h = spin_axis_history(VondrakEcliptic(), "earth", [-1000.0, 0.0, 1000.0])
+>>> np.round(np.degrees(h.obliquity), 4).tolist()  # IAU 2006 (erfa.obl06): 23.5688, 23.4393, 23.3097
+[23.5687, 23.4393, 23.3098]
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from andoyer._validation import as_finite
+from andoyer.planetary.orbits.protocol import OrbitHistory, check_times
+from andoyer.planetary.spin_axis.history import (
+    DEFAULT_STEP,
+    EPSILON_0,
+    SpinAxisHistory,
+    build_model,
+    equinox,
+    evolve_axes,
+    general_precession,
+    history,
+    mean_pole_j2000,
+    output_times,
+)
+from andoyer.planetary.spin_axis.insolation import daily_insolation
+from andoyer.planetary.spin_axis.model import (
+    ARCSEC,  # noqa: F401 - the doctests use it
+    DEFAULT_PRECESSION_RATE,
+    EARTH_DYNAMICAL_ELLIPTICITY,
+    SpinAxisModel,
+)
+
+__all__ = [
+    "DEFAULT_PRECESSION_RATE",
+    "EARTH_DYNAMICAL_ELLIPTICITY",
+    "EPSILON_0",
+    "SpinAxisHistory",
+    "SpinAxisModel",
+    "build_model",
+    "daily_insolation",
+    "default_axis",
+    "equinox",
+    "evolve_axes",
+    "general_precession",
+    "mean_pole_j2000",
+    "output_times",
+    "spin_axis_history",
+]
+
+#: Mars' north pole at J2000 in the ICRF, degrees: α₀ = 317.68143°, δ₀ = 52.88650° (IAU WGCCRE
+#: 2009, Archinal et al. 2011, Celest. Mech. Dyn. Astr. 109, 101).
+MARS_POLE_RA_DEC = (317.68143, 52.88650)
+
+
+def default_axis(body: str) -> np.ndarray:
+    """The spin axis at J2000 in the J2000 ecliptic frame, shape (3,).
+
+    Earth: the IAU 2006 mean pole (:func:`mean_pole_j2000`). Mars: the IAU pole
+    (:data:`MARS_POLE_RA_DEC`) turned from the equator to the ecliptic of J2000 by ``ε₀``.
+
+    Parameters
+    ----------
+    body : {"earth", "mars"}
+
+    Returns
+    -------
+    numpy.ndarray, shape (3,)
+
+    Examples
+    --------
+    >>> np.round(default_axis("mars"), 6).tolist()
+    [0.446159, -0.055512, 0.893231]
+    >>> i, node = np.radians(1.85061), np.radians(49.57854)  # Mars' J2000 orbit (JPL mean elements)
+    >>> n = [np.sin(i) * np.sin(node), -np.sin(i) * np.cos(node), np.cos(i)]
+    >>> round(float(np.degrees(np.arccos(default_axis("mars") @ n))), 2)  # obliquity
+    25.19
+    """
+    key = str(body).strip().lower()
+    if key == "earth":
+        return mean_pole_j2000()
+    if key == "mars":
+        ra, dec = np.radians(MARS_POLE_RA_DEC)
+        v = np.array([np.cos(dec) * np.cos(ra), np.cos(dec) * np.sin(ra), np.sin(dec)])
+        c, s = np.cos(EPSILON_0), np.sin(EPSILON_0)
+        return np.array([v[0], c * v[1] + s * v[2], -s * v[1] + c * v[2]])
+    msg = f"expected a body in {', '.join(DEFAULT_PRECESSION_RATE)}, got {body!r}"
+    raise ValueError(msg)
+
+
+def spin_axis_history(
+    orbit: OrbitHistory,
+    body: str,
+    times: ArrayLike,
+    *,
+    precession_rate: float | None = None,
+    dynamical_ellipticity: float | None = None,
+    tidal_dissipation: float = 0.0,
+    ellipticity_drift: float = 0.0,
+    axis: ArrayLike | None = None,
+    step: float = DEFAULT_STEP,
+    order: int = 8,
+) -> SpinAxisHistory:
+    r"""The spin axis of ``body`` along ``orbit`` at ``times`` (Julian years from J2000).
+
+    The axis starts at J2000 from ``axis`` (default :func:`default_axis`) and is integrated
+    forward and backward. The torque's strength is set by one of ``precession_rate`` (``ψ̇`` at
+    J2000 in ″/yr, the rate of IAU 2006's ``ψ_A``; default :data:`DEFAULT_PRECESSION_RATE`) or
+    ``dynamical_ellipticity`` (``H``).
+
+    Parameters
+    ----------
+    orbit : OrbitHistory
+        The planet's orbit (any source: :mod:`andoyer.planetary.orbits`).
+    body : {"earth", "mars"}
+    times : array_like, shape (N,)
+        Increasing output times within ``orbit.span``.
+    precession_rate : float, optional
+        ″/yr.
+    dynamical_ellipticity : float, optional
+        ``H = (C − (A+B)/2)/C``.
+    tidal_dissipation : float
+        ``T_d`` (Zeebe & Lourens 2022; 0: none, 1: modern rates). Earth only.
+    ellipticity_drift : float
+        ``Ḣ/H`` per Julian year.
+    axis : array_like, shape (3,), optional
+        Spin axis at J2000, J2000 ecliptic frame.
+    step : float
+        Largest integration step (years).
+    order : {2, 4, 6, 8}
+        Order of the composition.
+
+    Returns
+    -------
+    SpinAxisHistory
+
+    Examples
+    --------
+    >>> from andoyer.planetary.orbits import VondrakEcliptic
+    >>> h = spin_axis_history(VondrakEcliptic(), "earth", [0.0, 100.0])
+    >>> round(float(h.precession[1] / ARCSEC), 2)  # p_A after a century; IAU 2006: 5029.90
+    5029.9
+    """
+    if not isinstance(orbit, OrbitHistory):
+        msg = f"expected an orbit history (andoyer.planetary.orbits), got {type(orbit).__name__}"
+        raise ValueError(msg)
+    t = as_finite(times, "times")
+    if t.ndim != 1 or t.size == 0 or np.any(np.diff(t) <= 0):
+        msg = f"expected increasing output times (1-D, non-empty), got shape {t.shape}"
+        raise ValueError(msg)
+    lo, hi = orbit.span
+    if not lo <= 0.0 <= hi:
+        msg = f"expected an orbit span containing J2000 (the axis starts there), got {lo:g} to {hi:g}"
+        raise ValueError(msg)
+    check_times(t, orbit.span, orbit.name)
+    s0 = default_axis(body) if axis is None else as_finite(axis, "axis")
+    if s0.shape != (3,) or not np.linalg.norm(s0) > 0:
+        msg = f"expected a non-zero axis of shape (3,), got shape {s0.shape}"
+        raise ValueError(msg)
+    s0 = s0 / np.linalg.norm(s0)
+    model = build_model(
+        orbit, body, s0, precession_rate, dynamical_ellipticity, tidal_dissipation, ellipticity_drift
+    )
+    return history(orbit, model, t, s0, step, order)
