@@ -1,7 +1,7 @@
 """Griffe extension for the API pages: the chart methods that the registry installs on ``State``.
 
 ``State.from_<chart>`` and ``State.as_<chart>`` are written in the chart modules and installed
-on the class when :mod:`andoyer.state` is imported (:func:`andoyer.charts.registry.install`), so
+on the class when :mod:`andoyer.state` is imported (:func:`andoyer.state.registry.install`), so
 griffe's static reading of ``state.py`` does not see them. This extension adds them to the
 statically loaded class from griffe's inspection of the imported class: their signatures and
 docstrings as ``help(State.from_euler)`` shows them. ``mkdocs.yml`` loads it
@@ -28,7 +28,7 @@ class ChartMethods(griffe.Extension):
         """Copy each ``from_*``/``as_*`` member that the static reading missed from the inspected class."""
         if cls.path != "andoyer.state.State":
             return
-        from andoyer.charts.registry import charts
+        from andoyer.state.registry import charts
 
         # The docstrings parsed as the static ones are (numpy style, from mkdocs.yml).
         parser, options = agent.docstring_parser, agent.docstring_options

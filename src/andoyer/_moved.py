@@ -35,6 +35,11 @@ MOVED: dict[str, str] = {
     "andoyer.cassini": "andoyer.planetary.cassini",
     "andoyer.spin_axis": "andoyer.planetary.spin_axis",
     "andoyer.nutation": "andoyer.planetary.nutation",
+    "andoyer.charts": "andoyer.state",
+    "andoyer.equations": "andoyer.state",
+    "andoyer.hamiltonians": "andoyer.state",
+    "andoyer.state_charts": "andoyer.state.hub",
+    "andoyer.free.rotation": "andoyer.free_rotation",
 }
 
 

@@ -25,7 +25,7 @@ import andoyer.planetary.cassini
 import andoyer.planetary.nutation
 import andoyer.planetary.precession
 import andoyer.planetary.spin_axis
-from andoyer import FreeRotation, RigidBody, State, bodies, charts, free, integrate, propagate, special
+from andoyer import FreeRotation, RigidBody, State, bodies, free, integrate, propagate, special, state
 from andoyer.perturbations import (
     CircularOrbit,
     GravityGradient,
@@ -144,16 +144,34 @@ CASES = [
     (State, STATE.as_sam, (BODY, "XAM"), ValueError, "expected"),
     (State, STATE.reshape, (5,), ValueError, "expected"),
     # -- charts
-    (charts.inclinations, charts.inclinations, (1.5, 1.0, 0.0), ValueError, r"expected \|L\| <= G"),
-    (charts.inclinations, charts.inclinations, (0.5, HUGE, 0.0), ValueError, "expected G .*got"),
-    (charts.euler_matrix, charts.euler_matrix, (INF, 0, 0), ValueError, "expected finite"),
-    (charts.andoyer_matrix, charts.andoyer_matrix, (np.zeros(2), 0, np.zeros(3), 0, 0), ValueError, "shapes"),
-    (charts.andoyer_from_euler, charts.andoyer_from_euler, (0, 0, 0, 1, 0, 1), ValueError, "expected"),
-    (charts.andoyer_from_euler, charts.andoyer_from_euler, (0, 1, 0, HUGE, 0, HUGE), ValueError, "expected"),
-    (charts.euler_from_andoyer, charts.euler_from_andoyer, (0, 0, 0, 0.5, -1.0, 0), ValueError, "expected"),
-    (charts.euler_from_andoyer, charts.euler_from_andoyer, (0, 0, 0, 0.5, HUGE, 0), ValueError, "expected"),
-    (charts.andoyer_to_serret, charts.andoyer_to_serret, (BODY, 0, 0, 0, 2.0, 1.0, 0.5), ValueError, "L"),
-    (charts.serret_to_andoyer, charts.serret_to_andoyer, (BODY, 0, 0, 0, 1.0, 0.5, -1.0), ValueError, "T"),
+    (state.inclinations, state.inclinations, (1.5, 1.0, 0.0), ValueError, r"expected \|L\| <= G"),
+    (state.inclinations, state.inclinations, (0.5, HUGE, 0.0), ValueError, "expected G .*got"),
+    (state.euler_matrix, state.euler_matrix, (INF, 0, 0), ValueError, "expected finite"),
+    (state.andoyer_matrix, state.andoyer_matrix, (np.zeros(2), 0, np.zeros(3), 0, 0), ValueError, "shapes"),
+    (state.andoyer_from_euler, state.andoyer_from_euler, (0, 0, 0, 1, 0, 1), ValueError, "expected"),
+    (state.andoyer_from_euler, state.andoyer_from_euler, (0, 1, 0, HUGE, 0, HUGE), ValueError, "expected"),
+    (state.euler_from_andoyer, state.euler_from_andoyer, (0, 0, 0, 0.5, -1.0, 0), ValueError, "expected"),
+    (state.euler_from_andoyer, state.euler_from_andoyer, (0, 0, 0, 0.5, HUGE, 0), ValueError, "expected"),
+    (state.andoyer_to_serret, state.andoyer_to_serret, (BODY, 0, 0, 0, 2.0, 1.0, 0.5), ValueError, "L"),
+    (state.serret_to_andoyer, state.serret_to_andoyer, (BODY, 0, 0, 0, 1.0, 0.5, -1.0), ValueError, "T"),
+    # -- each chart's dynamics (andoyer.state: the hub's, the Euler and the Andoyer chart's)
+    (state.andoyer_equations, state.andoyer_equations, (BODY, 0, 0, 0, 1.5, 1.0, 0.0), ValueError, "<= G"),
+    (state.andoyer_equations, state.andoyer_equations, (BODY, NAN, 0, 0, 0.5, 1, 0), ValueError, "finite"),
+    (state.andoyer_hamiltonian, state.andoyer_hamiltonian, (BODY, 0, 1.5, 1.0), ValueError, r"\|L\| <= G"),
+    (state.andoyer_hamiltonian, state.andoyer_hamiltonian, (BODY, INF, 0.5, 1.0), ValueError, "finite l"),
+    (state.euler_equations, state.euler_equations, (BODY, 0, 0, 0, 1, 0, 1), ValueError, "sin.theta. != 0"),
+    (state.euler_equations, state.euler_equations, (BODY, 0, 1, 0, NAN, 0, 1), ValueError, "finite Phi"),
+    (state.euler_hamiltonian, state.euler_hamiltonian, (BODY, 0, 0, 0, 1, 0, 0.5), ValueError, "sin.theta"),
+    (state.euler_hamiltonian, state.euler_hamiltonian, (BODY, 0, 1, 0, INF, 0, 1), ValueError, "finite Phi"),
+    (state.euler_poinsot, state.euler_poinsot, (BODY, [NAN, 0, 1]), ValueError, "finite m_body"),
+    (state.euler_poinsot, state.euler_poinsot, (BODY, [0, 0, 1], [INF, 0, 0]), ValueError, "finite torque"),
+    (state.euler_poinsot_omega, state.euler_poinsot_omega, (BODY, [0, 1]), ValueError, "shape"),
+    (state.lie_poisson, state.lie_poisson, ([0, 0, 1], [0, 1]), ValueError, "shape"),
+    (state.lie_poisson, state.lie_poisson, ([NAN, 0, 1], [0, 1, 0]), ValueError, "finite m_body"),
+    (state.attitude_rate, state.attitude_rate, ([0, 0, 1], [0, 0, 1]), ValueError, "shape"),
+    (state.attitude_rate, state.attitude_rate, ([0, 0, 0, 1], [INF, 0, 1]), ValueError, "finite omega_body"),
+    (state.state_hamiltonian, state.state_hamiltonian, (BODY, [NAN, 0, 1]), ValueError, "finite m_body"),
+    (state.state_hamiltonian, state.state_hamiltonian, (BODY, [0, 1]), ValueError, "shape"),
     # -- the exact free motion
     (FreeRotation, FreeRotation, ((1, 2, 3),), ValueError, "expected"),
     (FreeRotation, FREE.propagate, (STATES3, [0.0, 1.0]), ValueError, "expected times broadcast"),
@@ -378,6 +396,8 @@ EXEMPT = {
     "FreePeriods": "a named tuple of results",
     "Andoyer": "a named tuple of results",
     "Euler": "a named tuple of results",
+    "AndoyerRates": "a named tuple of results",
+    "EulerRates": "a named tuple of results",
     "Serret": "a named tuple of results",
     "BodyInfo": "a record of the named bodies",
     "PrecessionRates": "a record of results",

@@ -1,6 +1,6 @@
 """The three paths of the Euler and Andoyer conversions: scalar kernel, compiled loop, numpy.
 
-One state goes through the scalar kernel of ``andoyer.charts._kernels`` in plain Python, an
+One state goes through the scalar kernel of ``andoyer.state._kernels`` in plain Python, an
 array through the same kernel compiled by numba, or, without numba, through the same kernel
 on whole numpy arrays (``_compiled.NUMBA`` switched off here forces it). The kernel and the
 compiled loop must agree bit for bit; the numpy path within 2 ulp of the scale of each
@@ -22,8 +22,8 @@ from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 
 from andoyer import SingularChartWarning, State
-from andoyer.charts import _compiled
-from andoyer.charts.euler import COMPILED_MIN
+from andoyer.state import _compiled
+from andoyer.state.euler import COMPILED_MIN
 from conftest import random_states
 
 ULP_2PI = np.spacing(2 * np.pi)
@@ -311,7 +311,7 @@ def test_conversions_without_numba_match_numpy_path_in_process(rng, monkeypatch,
     script = (
         "import sys, numpy as np\n"
         "from andoyer import State\n"
-        "from andoyer.charts import _compiled\n"
+        "from andoyer.state import _compiled\n"
         "assert not _compiled.NUMBA\n"
         f"d = {str(tmp_path)!r}\n"
         "s = State.from_quaternion(np.load(d + '/q.npy'), np.load(d + '/m.npy'))\n"

@@ -1,27 +1,31 @@
-"""The registry of charts: each chart's signature written once.
+"""The registry of charts: each chart's signature and dynamics written once.
 
 As astropy registers its frame transforms on a graph, each chart module registers one
 :class:`Chart` here, a star around the hub (the attitude quaternion ``q`` and the body
 angular momentum ``m`` of :class:`andoyer.State`): the chart's coordinate names, which of
-them are angles, and the two functions that :func:`install` makes the chart's methods
-``State.from_<name>`` (a class method) and ``State.as_<name>``. Those functions' signatures
-are the chart's signature: whether it needs the body's moments and its keyword options are
-read from them, and the columns are checked against them when the chart registers. The
-``State`` methods, the command line's chart table (:mod:`andoyer.cli.chart_table`) and the
-documentation's table (:func:`charts_markdown`, in ``docs/charts.md``) are generated from
-:data:`CHARTS`.
+them are angles, the two functions that :func:`install` makes the chart's methods
+``State.from_<name>`` (a class method) and ``State.as_<name>``, and the chart's free-body
+Hamiltonian and equations of motion. Those functions' signatures are the chart's signature:
+whether it needs the body's moments and its keyword options are read from them, and the
+columns are checked against them when the chart registers. The ``State`` methods, the command
+line's chart table (:mod:`andoyer.cli.chart_table`) and the documentation's table
+(:func:`charts_markdown`, in ``docs/charts.md``) are generated from :data:`CHARTS`.
 
-The functions receive the state class (or a state) rather than importing it, so this
-layer stays below :mod:`andoyer.state`; :meth:`Chart.to_state` and :meth:`Chart.from_state`
-call them with the columns as a sequence:
+This module knows neither the state class nor any chart: the hub (:mod:`andoyer.state.hub`)
+and each chart module import it, and a chart module registers with
+``register(chart, State)``, which installs the methods; the package's ``__init__`` imports the
+chart modules, in the order of the tables. The functions receive the state class (or a state);
+:meth:`Chart.to_state` and :meth:`Chart.from_state` call them with the columns as a sequence:
 
 ``to_state(cls, values, body, **options) -> cls`` and
 ``from_state(state, body, **options) -> coordinates``.
 
+Adding a chart is adding one module that registers a :class:`Chart` (``docs/charts.md``).
+
 Examples
 --------
 >>> from andoyer import State
->>> from andoyer.charts.registry import charts
+>>> from andoyer.state.registry import charts
 >>> chart = charts()["andoyer"]
 >>> chart.columns, chart.angles
 (('l', 'g', 'h', 'L', 'G', 'H'), ('l', 'g', 'h'))
@@ -34,21 +38,13 @@ True
 
 from __future__ import annotations
 
-import importlib
 import inspect
 import types
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any, NamedTuple
 
-import numpy as np
-
 __all__ = ["CHARTS", "Chart", "Hub", "charts", "charts_markdown", "install", "register"]
-
-# The chart modules that register their charts on import.
-_MODULES = ("euler", "andoyer", "sadov", "serret", "sam")
-# The order of the tables (import order varies with what the caller imported first).
-_ORDER = ("state", "euler", "andoyer", "initial_andoyer", "sadov", "serret", "sam")
 
 
 class Hub(NamedTuple):
@@ -101,6 +97,14 @@ class Chart:
     needs_body : bool
         Whether the methods take the body's :class:`~andoyer.RigidBody` (a parameter ``body``);
         read from their signatures.
+    hamiltonian : callable or None
+        The free-body Hamiltonian in the chart's variables,
+        ``hamiltonian(body, *columns, **options) -> array`` of the columns' broadcast shape
+        (``None``: the chart gives none).
+    equations : callable or None
+        Hamilton's equations of the free body in the chart,
+        ``equations(body, *columns, **options) -> rates``, a NamedTuple with one rate a column
+        (``None``: the chart gives none).
     options : tuple of str
         The keyword options of the methods (``t``, ``epoch``, ``mode``): their parameters other
         than the columns and ``body``, in order of appearance; read from their signatures.
@@ -114,6 +118,8 @@ class Chart:
     as_method: Callable[..., Any]
     method: bool = True
     source: str = ""
+    hamiltonian: Callable[..., Any] | None = None
+    equations: Callable[..., Any] | None = None
     needs_body: bool = field(init=False)
     options: tuple[str, ...] = field(init=False)
 
@@ -135,6 +141,15 @@ class Chart:
         if in_build != any(p.name == "body" for p in read):
             msg = f"expected from_{self.name} and as_{self.name} both to take the body or neither"
             raise ValueError(msg)
+        for kind in ("hamiltonian", "equations"):
+            function = getattr(self, kind)
+            if function is None:
+                continue
+            given = [p.name for p in _parameters(function, "body", f"the {kind} of {self.name}")]
+            if given[: len(self.columns)] != list(self.columns):
+                msg = f"expected the {kind} of {self.name} to take body, then the columns {self.columns}"
+                msg += f", got {given}"
+                raise ValueError(msg)
         options = dict.fromkeys(p.name for p in (*build, *read) if p.name not in {*self.columns, "body"})
         object.__setattr__(self, "needs_body", in_build)
         object.__setattr__(self, "options", tuple(options))
@@ -161,7 +176,7 @@ class Chart:
         Examples
         --------
         >>> from andoyer import State
-        >>> from andoyer.charts.registry import charts
+        >>> from andoyer.state.registry import charts
         >>> charts()["euler"].to_state(State, (0.1, 0.5, 0.2, 1.0, 0.3, 0.8), None).shape
         ()
         """
@@ -194,7 +209,7 @@ class Chart:
         Examples
         --------
         >>> from andoyer import State
-        >>> from andoyer.charts.registry import charts
+        >>> from andoyer.state.registry import charts
         >>> s = State.from_euler(0.1, 0.5, 0.2, 1.0, 0.3, 0.8)
         >>> round(float(charts()["euler"].from_state(s, None).Theta), 12)
         0.3
@@ -207,17 +222,20 @@ class Chart:
 CHARTS: dict[str, Chart] = {}
 
 
-def register(chart: Chart) -> Chart:
-    """Add ``chart`` to :data:`CHARTS` (a second chart of the same name is refused).
+def register(chart: Chart, state: type | None = None) -> Chart:
+    """Add ``chart`` to :data:`CHARTS` and give the state class its methods.
 
-    :class:`andoyer.State` takes the methods of the charts registered when :mod:`andoyer.state`
-    loads (the chart modules register on import); a chart registered later gets them on a state
-    class through :func:`install`.
+    A chart module calls ``register(chart, State)`` once, when it is imported: the chart joins
+    the tables and :func:`install` gives ``State`` its ``from_<name>``/``as_<name>`` methods. A
+    second chart of the same name is refused, before anything is installed.
 
     Parameters
     ----------
     chart : Chart
         The chart to register.
+    state : type, optional
+        The state class (:class:`andoyer.State`) that gets the chart's methods (none: only the
+        tables get the chart).
 
     Returns
     -------
@@ -226,7 +244,7 @@ def register(chart: Chart) -> Chart:
 
     Examples
     --------
-    >>> from andoyer.charts.registry import CHARTS, register
+    >>> from andoyer.state.registry import CHARTS, register
     >>> register(CHARTS["state"])
     Traceback (most recent call last):
     ...
@@ -235,28 +253,31 @@ def register(chart: Chart) -> Chart:
     if chart.name in CHARTS:
         msg = f"expected a new chart name, got {chart.name!r} (already registered)"
         raise ValueError(msg)
+    if state is not None:
+        install(state, {chart.name: chart})
     CHARTS[chart.name] = chart
     return chart
 
 
 def charts() -> Mapping[str, Chart]:
-    """Every registered chart, the chart modules imported first (they register on import).
+    """Every registered chart, in the order they registered.
+
+    The package :mod:`andoyer.state` imports its chart modules in the order of the tables
+    (``docs/charts.md``), so the built-in charts are all here whenever this module is.
 
     Returns
     -------
     Mapping of str to Chart
-        The hub chart ``state`` first, then the charts in the order of ``docs/charts.md``.
+        The hub chart ``state`` first, then the charts in the order of ``docs/charts.md``, then
+        any registered later.
 
     Examples
     --------
-    >>> from andoyer.charts.registry import charts
+    >>> from andoyer.state.registry import charts
     >>> list(charts())
     ['state', 'euler', 'andoyer', 'initial_andoyer', 'sadov', 'serret', 'sam']
     """
-    for module in _MODULES:
-        importlib.import_module(f"andoyer.charts.{module}")
-    rank = {name: i for i, name in enumerate(_ORDER)}
-    return dict(sorted(CHARTS.items(), key=lambda item: rank.get(item[0], len(rank))))
+    return dict(CHARTS)
 
 
 def _method(owner: type, name: str, function: Callable[..., Any]) -> types.FunctionType:
@@ -291,14 +312,15 @@ def install(cls: type, registered: Mapping[str, Chart]) -> None:
     Parameters
     ----------
     cls : type
-        The state class (:class:`andoyer.State`, which calls this once on its creation).
+        The state class (:class:`andoyer.State`, on which :func:`register` installs each chart's
+        methods).
     registered : Mapping of str to Chart
         The charts (:func:`charts`).
 
     Examples
     --------
     >>> from andoyer import State
-    >>> from andoyer.charts.registry import charts, install
+    >>> from andoyer.state.registry import charts, install
     >>> class Sub(State):
     ...     __slots__ = ()
     >>> install(Sub, {"euler": charts()["euler"]})
@@ -331,41 +353,21 @@ def charts_markdown() -> str:
 
     Examples
     --------
-    >>> from andoyer.charts.registry import charts_markdown
+    >>> from andoyer.state.registry import charts_markdown
     >>> print(charts_markdown().splitlines()[0])
-    | chart | columns | angles | body | options | summary |
+    | chart | columns | angles | body | options | dynamics | summary |
     """
-    lines = ["| chart | columns | angles | body | options | summary |", "|" + " --- |" * 6]
+    lines = ["| chart | columns | angles | body | options | dynamics | summary |", "|" + " --- |" * 7]
     for chart in charts().values():
+        dynamics = [kind for kind in ("hamiltonian", "equations") if getattr(chart, kind) is not None]
         cells = (
             f"`{chart.name}`",
             ", ".join(f"`{c}`" for c in chart.columns),
             ", ".join(f"`{c}`" for c in chart.angles) or "none",
             "yes" if chart.needs_body else "no",
             ", ".join(f"`{o}`" for o in chart.options) or "none",
+            ", ".join(dynamics) or "none",
             chart.summary,
         )
         lines.append("| " + " | ".join(cells) + " |")
     return "\n".join(lines) + "\n"
-
-
-def _hub_from(cls: Any, qx: Any, qy: Any, qz: Any, qw: Any, m1: Any, m2: Any, m3: Any) -> Any:
-    return cls.from_quaternion(np.stack([qx, qy, qz, qw], -1), np.stack([m1, m2, m3], -1))
-
-
-def _hub_as(self: Any) -> Hub:
-    return Hub(*np.moveaxis(self.quaternion, -1, 0), *np.moveaxis(self.m_body, -1, 0))
-
-
-register(
-    Chart(
-        "state",
-        Hub._fields,
-        (),
-        "the hub: attitude quaternion (scalar last) and body angular momentum",
-        _hub_from,
-        _hub_as,
-        method=False,
-        source="andoyer.state",
-    )
-)

@@ -9,7 +9,7 @@ Hamiltonian in Andoyer variables (Gurfil eq. 89) is, exactly,
 
 The SAM chart is taken about the axis of maximum inertia, the LAM chart about the axis of
 minimum inertia: the body axes are relabelled cyclically (a proper rotation of the body frame)
-so that this axis becomes the third (Lara eqs. 37–39 for LAM).  See :mod:`andoyer.charts.sam`.
+so that this axis becomes the third (Lara eqs. 37–39 for LAM).  See :mod:`andoyer.state.sam`.
 """
 
 from __future__ import annotations

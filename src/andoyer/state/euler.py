@@ -17,13 +17,17 @@ momenta (eqs. 25–27, 40–42) are
 and the body angular momentum follows as
 ``m1 = Θ cos ψ + X sin ψ``, ``m2 = -Θ sin ψ + X cos ψ``, ``m3 = Ψ`` with
 ``X = (Φ - Ψ cos θ)/sin θ``.
+
+The chart's dynamics are here too: the free-body Hamiltonian (Gurfil eq. 23,
+:func:`euler_hamiltonian`) and Hamilton's equations (:func:`euler_equations`), registered with
+the chart.
 """
 
 from __future__ import annotations
 
 import math
 from types import ModuleType
-from typing import TYPE_CHECKING, Any, NamedTuple
+from typing import Any, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -38,14 +42,22 @@ from andoyer._validation import (
     check_angle,
     check_magnitude,
 )
-from andoyer.charts import _kernels
-from andoyer.charts.registry import Chart, register
-from andoyer.charts.singular import warn_if_singular
+from andoyer.body import RigidBody
+from andoyer.state import _kernels
+from andoyer.state.hub import State
+from andoyer.state.registry import Chart, register
+from andoyer.state.singular import warn_if_singular
 
-if TYPE_CHECKING:
-    from andoyer.state import State
-
-__all__ = ["Euler", "euler_matrix", "euler_to_hub", "hub_to_euler", "transverse_momentum"]
+__all__ = [
+    "Euler",
+    "EulerRates",
+    "euler_equations",
+    "euler_hamiltonian",
+    "euler_matrix",
+    "euler_to_hub",
+    "hub_to_euler",
+    "transverse_momentum",
+]
 
 Array = NDArray[np.float64]
 
@@ -69,14 +81,14 @@ COMPILED_MIN = 2048
 
 
 def compiled_conversions(size: int) -> ModuleType | None:
-    """The numba loops of :mod:`andoyer.charts._compiled` for ``size`` states, or ``None``.
+    """The numba loops of :mod:`andoyer.state._compiled` for ``size`` states, or ``None``.
 
     ``None`` (the numpy path) below :data:`COMPILED_MIN` states or without numba. The module
     is imported on the first large conversion, so a single state costs no numba start-up.
     """
     if size < COMPILED_MIN:
         return None
-    from andoyer.charts import _compiled
+    from andoyer.state import _compiled
 
     return _compiled if _compiled.NUMBA else None
 
@@ -153,7 +165,7 @@ def transverse_momentum(big: Array, small: Array, theta: Array) -> tuple[Array, 
     Near ``θ = 0`` the physical state has ``big ≈ small`` and the difference is
     ``(big - small) + 2 small sin²(θ/2)``; near ``θ = π`` it is
     ``(big + small) - 2 small cos²(θ/2)``. Both forms are exact rearrangements
-    (the kernel :func:`andoyer.charts._kernels.transverse_momentum_one`, on arrays).
+    (the kernel :func:`andoyer.state._kernels.transverse_momentum_one`, on arrays).
 
     Parameters
     ----------
@@ -192,7 +204,7 @@ def euler_to_hub(
     with ``Φ ≠ ±Ψ`` there (infinite momentum) are rejected. The quaternions come
     divided by their norm as :class:`~andoyer.State` stores them (``unit``, kept for
     the callers that ask for it, changes nothing), from the kernel
-    :func:`andoyer.charts._kernels.euler_to_hub_one`: as Python for one state,
+    :func:`andoyer.state._kernels.euler_to_hub_one`: as Python for one state,
     compiled for arrays (numba), or on whole arrays (numpy).
     """
     del unit  # every path normalises
@@ -241,7 +253,7 @@ def hub_to_euler(q: Array, m: Array, stacklevel: int = 2) -> Euler:
     :class:`SingularChartWarning`. Attitudes within ``2ε`` of the singularity
     (``sin(θ/2)`` or ``cos(θ/2)`` below ``2ε``) are snapped onto it, and there
     ``Φ = Ψ cos θ`` exactly, so the rotation round trip stays exact to ``4ε``.
-    One state goes through the kernel :func:`andoyer.charts._kernels.hub_to_euler_one`
+    One state goes through the kernel :func:`andoyer.state._kernels.hub_to_euler_one`
     as Python (fields are numpy scalars), arrays through it compiled when numba is
     there, else through it on whole arrays (numpy).
     """
@@ -261,7 +273,7 @@ def hub_to_euler(q: Array, m: Array, stacklevel: int = 2) -> Euler:
     return Euler(*(v.reshape(shape) for v in out))
 
 
-# The chart's methods of State (installed by andoyer.charts.registry.install): their signatures
+# The chart's methods of State (installed when the chart registers, below): their signatures
 # are the chart's, written once here. ``cls`` and ``self`` are the State class and a state.
 
 
@@ -306,7 +318,7 @@ def _as_euler(self) -> Euler:
     """Euler 3-1-3 angles and conjugate momenta ``(phi, theta, psi, Phi, Theta, Psi)``.
 
     At ``sin θ = 0`` the convention is ``ψ = 0`` with a
-    :class:`~andoyer.charts.SingularChartWarning`.
+    :class:`~andoyer.state.SingularChartWarning`.
 
     Returns
     -------
@@ -323,6 +335,127 @@ def _as_euler(self) -> Euler:
     return hub_to_euler(self._q, self._m, stacklevel=2)
 
 
+# ---------------------------------------------------------------- the chart's dynamics
+
+
+class EulerRates(NamedTuple):
+    """Time derivatives of the Euler chart's variables."""
+
+    phi: Array
+    theta: Array
+    psi: Array
+    Phi: Array
+    Theta: Array
+    Psi: Array
+
+
+def euler_hamiltonian(
+    body: RigidBody,
+    phi: ArrayLike,
+    theta: ArrayLike,
+    psi: ArrayLike,
+    Phi: ArrayLike,
+    Theta: ArrayLike,
+    Psi: ArrayLike,
+) -> Array:
+    """Gurfil eq. 23: the free Hamiltonian in Euler angles and momenta.
+
+    ``½ (s_ψ²/I1 + c_ψ²/I2) X² + Ψ²/(2 I3) + ½ (c_ψ²/I1 + s_ψ²/I2) Θ² + (1/I1 - 1/I2) X Θ s_ψ c_ψ``
+    with ``X = (Φ - Ψ c_θ)/s_θ``: the kinetic energy ``½ m·I⁻¹m``. ``φ`` is cyclic and does
+    not enter. ``(Φ - Ψ cos θ)`` is formed without cancellation near ``sin θ = 0``, where the
+    chart is singular (``sin θ = 0`` raises unless ``Φ = ±Ψ`` there).
+
+    Parameters
+    ----------
+    body : RigidBody
+    phi, theta, psi, Phi, Theta, Psi : array_like, shape (...)
+        Euler 3-1-3 angles and conjugate momenta; they broadcast.
+
+    Returns
+    -------
+    numpy.ndarray, shape (...)
+
+    Examples
+    --------
+    >>> from andoyer import RigidBody, State
+    >>> body = RigidBody(1.0, 2.0, 2.5)
+    >>> e = (0.1, 0.5, 0.2, 1.0, 0.3, 0.8)
+    >>> bool(abs(euler_hamiltonian(body, *e) - State.from_euler(*e).energy(body)) < 1e-15)
+    True
+    """
+    names = ("phi", "theta", "psi", "Phi", "Theta", "Psi")
+    _, theta, psi, Phi, Theta, Psi = broadcast_finite(names, (phi, theta, psi, Phi, Theta, Psi))
+    numerator, st = transverse_momentum(Phi, Psi, theta)
+    if np.any(st == 0):
+        msg = "expected sin(theta) != 0 in the Euler-chart Hamiltonian, got sin(theta) = 0"
+        raise ValueError(msg)
+    X = numerator / st
+    I1, I2, I3 = body.moments
+    s2, c2 = np.sin(psi) ** 2, np.cos(psi) ** 2
+    return (
+        0.5 * (s2 / I1 + c2 / I2) * X * X
+        + Psi * Psi / (2 * I3)
+        + 0.5 * (c2 / I1 + s2 / I2) * Theta * Theta
+        + (I2 - I1) / (I1 * I2) * X * Theta * np.sin(psi) * np.cos(psi)
+    )
+
+
+def euler_equations(
+    body: RigidBody,
+    phi: ArrayLike,
+    theta: ArrayLike,
+    psi: ArrayLike,
+    Phi: ArrayLike,
+    Theta: ArrayLike,
+    Psi: ArrayLike,
+) -> EulerRates:
+    r"""Hamilton's equations of the Euler-chart Hamiltonian (eq. 23).
+
+    With ``ω = I⁻¹ m`` and ``S = ω1 sin ψ + ω2 cos ψ``, the chain rule through
+    eqs. 25–27 gives ``dφ/dt = S / sin θ``, ``dθ/dt = ω1 cos ψ - ω2 sin ψ``,
+    ``dψ/dt = ω3 - S cot θ``, ``dΦ/dt = 0``, ``dΘ/dt = -S (Ψ - X cot θ)``,
+    ``dΨ/dt = c3 m1 m2``, which reproduce the kinematic eqs. 5–7.
+
+    Parameters
+    ----------
+    body : RigidBody
+    phi, theta, psi, Phi, Theta, Psi : array_like, shape (...)
+        They broadcast; ``sin θ ≠ 0``.
+
+    Returns
+    -------
+    EulerRates
+
+    Examples
+    --------
+    >>> from andoyer import RigidBody
+    >>> rates = euler_equations(RigidBody(1.0, 2.0, 2.5), 0.1, 0.5, 0.2, 1.0, 0.3, 0.8)
+    >>> float(rates.Phi)
+    0.0
+    """
+    names = ("phi", "theta", "psi", "Phi", "Theta", "Psi")
+    _, theta, psi, Phi, Theta, Psi = broadcast_finite(names, (phi, theta, psi, Phi, Theta, Psi))
+    numerator, st = transverse_momentum(Phi, Psi, theta)
+    if np.any(st == 0):
+        msg = "expected sin(theta) != 0 in the Euler-chart equations, got sin(theta) = 0"
+        raise ValueError(msg)
+    X = numerator / st
+    cot = np.cos(theta) / st
+    cp, sp = np.cos(psi), np.sin(psi)
+    m1, m2 = Theta * cp + X * sp, -Theta * sp + X * cp
+    I1, I2, I3 = body.moments
+    w1, w2, w3 = m1 / I1, m2 / I2, Psi / I3
+    S = w1 * sp + w2 * cp
+    return EulerRates(
+        S / st,
+        w1 * cp - w2 * sp,
+        w3 - S * cot,
+        np.zeros_like(Phi),
+        -S * (Psi - X * cot),
+        body.euler_coefficients[2] * m1 * m2,
+    )
+
+
 register(
     Chart(
         "euler",
@@ -331,6 +464,9 @@ register(
         "Euler 3-1-3 angles and their conjugate momenta (Gurfil §2)",
         _from_euler,
         _as_euler,
-        source="andoyer.charts.euler",
-    )
+        source="andoyer.state.euler",
+        hamiltonian=euler_hamiltonian,
+        equations=euler_equations,
+    ),
+    State,
 )

@@ -35,11 +35,21 @@ Singularity.  At ``L = 0`` (``N = ±M``, rotation exactly about ``±b3``) ``ℓ`
 the convention is ``sam_l = 0`` (``sam_g`` then carries the whole rotation angle ``μ + ν``),
 announced by a :class:`SingularChartWarning`.  Near it ``ℓ`` is ill-conditioned like Andoyer's
 ``l``; ``M − N`` is computed from the hub as ``(m1² + m2²)/(M + |N|)``, without cancellation.
+
+Dynamics, registered with the chart: the Hamiltonian is eq. 27 (:func:`sam_energy`) and
+Hamilton's equations follow from it by differentiation, with ``s = √(1 − β²)``:
+
+.. math:: \dot\ell = \frac{\alpha}{I_3}\big(sG - L(1 + \beta\cos 2\ell)\big),\quad
+          \dot g = \frac{G + \alpha s L}{I_3},\quad
+          \dot L = -\frac{\alpha\beta L^2 \sin 2\ell}{I_3},\quad
+          \dot h = \dot G = \dot H = 0,
+
+in either hemisphere (its chart is the same function of its own canonical variables).
 """
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, NamedTuple
+from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -48,15 +58,12 @@ from andoyer import _quaternion as quat
 from andoyer._fastmath import atan2_2pi, chunked, wrap_2pi
 from andoyer._validation import as_finite, as_vectors, broadcast, check_momenta
 from andoyer.body import RigidBody
-from andoyer.charts import _kernels
-from andoyer.charts.andoyer import Andoyer
-from andoyer.charts.registry import Chart, register
-from andoyer.charts.sam_axes import SAMAxes, andoyer_parameters, sam_axes
-from andoyer.charts.singular import warn_if_singular
-from andoyer.state_charts import check_body
-
-if TYPE_CHECKING:
-    from andoyer.state import State
+from andoyer.state import _kernels
+from andoyer.state.andoyer import Andoyer
+from andoyer.state.hub import State, check_body
+from andoyer.state.registry import Chart, register
+from andoyer.state.sam_axes import SAMAxes, andoyer_parameters, sam_axes
+from andoyer.state.singular import warn_if_singular
 
 __all__ = [
     "SAM",
@@ -292,7 +299,7 @@ def hub_to_sam(q: Array, m: Array, body: RigidBody, mode: str = "SAM", stackleve
 
     Examples
     --------
-    >>> from andoyer.charts.andoyer import andoyer_to_hub
+    >>> from andoyer.state.andoyer import andoyer_to_hub
     >>> body = RigidBody(0.5, 0.75, 1.0)
     >>> q, m = andoyer_to_hub(0.3, 0.2, 0.1, 0.99, 1.0, 0.5)
     >>> round(float(hub_to_sam(q, m, body).sam_L), 12)
@@ -391,14 +398,14 @@ def sam_energy(
     return G * G / (2 * I3) * (1 + alpha * x * (2 * s - x * (1 + beta * np.cos(2 * ell))))
 
 
-# The chart's methods of State (installed by andoyer.charts.registry.install): their signatures
+# The chart's methods of State (installed when the chart registers, below): their signatures
 # are the chart's, written once here. ``cls`` and ``self`` are the State class and a state.
 
 
 def _as_sam(self, body: RigidBody, mode: str = "SAM"):
     """Lara's SAM (or LAM) action–angle chart ``(sam_l, sam_g, h, sam_L, sam_G, H, sign)``.
 
-    See :mod:`andoyer.charts.sam` (Lara eqs. 18–25, any axis labelling).
+    See :mod:`andoyer.state.sam` (Lara eqs. 18–25, any axis labelling).
 
     Parameters
     ----------
@@ -467,6 +474,60 @@ def _from_sam(
     """
     return cls(*sam_to_hub(sam_l, sam_g, h, sam_L, sam_G, H, sign, body=check_body(body), mode=mode))
 
+
+def _dynamics_columns(
+    body: RigidBody, values: tuple[ArrayLike, ...], mode: str
+) -> tuple[list[Array], SAMAxes]:
+    """The seven columns broadcast, checked as :func:`sam_to_hub` checks them, and the chart's axes."""
+    columns = _check_sam(*values)
+    return columns, sam_axes(check_body(body), mode)
+
+
+def _hamiltonian(
+    body: RigidBody,
+    sam_l: ArrayLike,
+    sam_g: ArrayLike,
+    h: ArrayLike,
+    sam_L: ArrayLike,
+    sam_G: ArrayLike,
+    H: ArrayLike,
+    sign: ArrayLike = 1.0,
+    *,
+    mode: str = "SAM",
+) -> Array:
+    """The registry's form of :func:`sam_energy` (eq. 27): the chart's columns and the body in."""
+    (ell, _, _, L, G, _, _), axes = _dynamics_columns(body, (sam_l, sam_g, h, sam_L, sam_G, H, sign), mode)
+    return sam_energy(ell, L, G, axes.alpha, axes.beta, axes.moments[2])
+
+
+def _equations(
+    body: RigidBody,
+    sam_l: ArrayLike,
+    sam_g: ArrayLike,
+    h: ArrayLike,
+    sam_L: ArrayLike,
+    sam_G: ArrayLike,
+    H: ArrayLike,
+    sign: ArrayLike = 1.0,
+    *,
+    mode: str = "SAM",
+) -> SAM:
+    """Hamilton's equations of eq. 27 in the SAM (or LAM) chart (see :mod:`andoyer.state.sam`)."""
+    (ell, _, _, L, G, _, _), axes = _dynamics_columns(body, (sam_l, sam_g, h, sam_L, sam_G, H, sign), mode)
+    alpha, beta, I3 = axes.alpha, _check_beta(axes.beta), axes.moments[2]
+    s = np.sqrt((1 - beta) * (1 + beta))
+    zero = np.zeros_like(ell)
+    return SAM(
+        alpha / I3 * (s * G - L * (1 + beta * np.cos(2 * ell))),
+        (G + alpha * s * L) / I3,
+        zero,
+        -alpha * beta * L * L * np.sin(2 * ell) / I3,
+        zero.copy(),
+        zero.copy(),
+        zero.copy(),
+    )
+
+
 register(
     Chart(
         "sam",
@@ -475,6 +536,9 @@ register(
         "Lara's SAM (or LAM, `mode`) action–angle chart (Lara eqs. 18–25)",
         _from_sam,
         _as_sam,
-        source="andoyer.charts.sam",
-    )
+        source="andoyer.state.sam",
+        hamiltonian=_hamiltonian,
+        equations=_equations,
+    ),
+    State,
 )

@@ -8,7 +8,7 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from andoyer import State
-from andoyer.charts import andoyer_matrix, euler_matrix, inclinations
+from andoyer.state import andoyer_matrix, euler_matrix, inclinations
 from conftest import random_states, rotation_distance
 
 EPS = np.finfo(float).eps

@@ -14,8 +14,8 @@ from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 
 from andoyer import RigidBody, SingularChartWarning, bodies
-from andoyer.charts.andoyer import andoyer_to_hub, hub_to_andoyer
-from andoyer.charts.sam import (
+from andoyer.state.andoyer import andoyer_to_hub, hub_to_andoyer
+from andoyer.state.sam import (
     SAM,
     andoyer_from_sam,
     andoyer_parameters,

@@ -1,4 +1,26 @@
-"""The physical rotation state: attitude plus angular momentum, the hub of every chart."""
+"""The hub of the state package: the rotation state, attitude plus angular momentum.
+
+:class:`State` holds the attitude quaternion ``q`` and the body angular momentum ``m``; every
+chart converts to and from them. The hub knows none of its charts: each chart module of
+:mod:`andoyer.state` imports this one, registers its :class:`~andoyer.state.registry.Chart`
+and installs its methods ``State.from_<chart>``/``State.as_<chart>`` (so ``State.from_sadov``
+is written in :mod:`andoyer.state.sadov`); the package's ``__init__`` imports the charts. The
+hub's own chart (``state``: the columns ``qx, qy, qz, qw, m1, m2, m3``) and its dynamics are
+here: the free-body Hamiltonian ``½ m·I⁻¹m`` (:func:`state_hamiltonian`) and the equations of
+motion of ``m`` and ``q`` (:func:`euler_poinsot`, :func:`euler_poinsot_omega`,
+:func:`lie_poisson`, :func:`attitude_rate`), with the checks every chart shares
+(:func:`check_body`) and the free flow of the time-dependent charts (:func:`free_flow`).
+
+Right-hand sides are written without cancellation: the free Euler–Poinsot equations as
+``dm_i/dt = c_i m_j m_k`` with ``c_i = (I_j - I_k)/(I_j I_k)`` (cyclic ``i, j, k``), never as
+the literal cross product ``m × I⁻¹m``, which on a near-axisymmetric body (Earth:
+``(B - A)/A ≈ 2e-6``) subtracts two nearly equal products and loses about three digits.
+
+Signs: the body angular momentum obeys the so(3) Lie–Poisson bracket
+``{F, K}(m) = -m·(∇F × ∇K)``, so ``{m1, m2} = -m3`` (Gurfil eq. 28) and
+``dm/dt = {m, K} = m × ∇K``. The attitude ``q`` (body → reference) obeys
+``dq/dt = ½ q ⊗ (ω, 0)`` with ``ω = I⁻¹ m`` in body components.
+"""
 
 from __future__ import annotations
 
@@ -11,18 +33,18 @@ from scipy.spatial.transform import Rotation
 from andoyer import _quaternion as quat
 from andoyer._validation import as_vectors, check_magnitude, describe
 from andoyer.body import RigidBody
+from andoyer.state.registry import Chart, Hub, register
 
-# The chart modules register their charts on import, and State's chart methods are theirs
-# (installed at the end of this module): imported by name so that the import graph shows them.
-from andoyer.charts import andoyer as _andoyer  # noqa: F401
-from andoyer.charts import euler as _euler  # noqa: F401
-from andoyer.charts import sadov as _sadov  # noqa: F401
-from andoyer.charts import sam as _sam  # noqa: F401
-from andoyer.charts import serret as _serret  # noqa: F401
-from andoyer.charts.registry import charts, install
-from andoyer.state_charts import check_body
-
-__all__ = ["State"]
+__all__ = [
+    "State",
+    "attitude_rate",
+    "check_body",
+    "euler_poinsot",
+    "euler_poinsot_omega",
+    "free_flow",
+    "lie_poisson",
+    "state_hamiltonian",
+]
 
 Array = NDArray[np.float64]
 
@@ -47,7 +69,8 @@ class State:
     Build states with the ``from_*`` class methods and read charts with the
     ``as_*`` methods. Those of the charts (``from_euler``/``as_euler``, ``andoyer``,
     ``initial_andoyer``, ``sadov``, ``serret``, ``sam``) are written in the chart
-    modules and installed here from :mod:`andoyer.charts.registry`.
+    modules, ``State.from_<chart>`` in :mod:`andoyer.state.<chart>`, and installed
+    on this class when the chart registers (:func:`andoyer.state.registry.register`).
 
     Parameters
     ----------
@@ -197,7 +220,7 @@ class State:
         return cls(_check_rotation(rotation), omega * body.moments)
 
     # The chart methods, from_<chart> (class methods) and as_<chart>, are written once in each
-    # chart's module and installed below from the registry (andoyer.charts.registry.install).
+    # chart's module (andoyer.state.<chart>), which installs them when it registers.
 
     # -------------------------------------------------------------- properties
 
@@ -316,6 +339,232 @@ class State:
         return describe(value)
 
 
-# State.from_<chart> and State.as_<chart> for every registered chart: the chart modules' functions,
-# their signatures and docstrings as written there (andoyer.charts.registry).
-install(State, charts())
+
+def check_body(body: Any) -> RigidBody:
+    """Return ``body`` if it is a :class:`~andoyer.RigidBody`, else raise ``ValueError``.
+
+    Examples
+    --------
+    >>> check_body(None)
+    Traceback (most recent call last):
+    ...
+    ValueError: expected an andoyer.RigidBody, got NoneType
+    """
+    if not isinstance(body, RigidBody):
+        msg = f"expected an andoyer.RigidBody, got {type(body).__name__}"
+        raise ValueError(msg)
+    return body
+
+
+def free_flow(body: RigidBody, state: State, dt: ArrayLike) -> State:
+    """The states reached by the free flow after ``dt`` (``FreeRotation.propagate`` without the wrapper).
+
+    The time-dependent charts (the modified Andoyer set) carry a state along the free motion.
+
+    Parameters
+    ----------
+    body : RigidBody
+        The body.
+    state : State, shape (...)
+        The states at the start.
+    dt : array_like, shape (...)
+        The times of flight; broadcast with the state's shape.
+
+    Returns
+    -------
+    State
+        The states after ``dt``.
+
+    Examples
+    --------
+    >>> from andoyer import RigidBody, State
+    >>> from andoyer.state.hub import free_flow
+    >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.9, 1.0, 0.2)
+    >>> round(float(free_flow(RigidBody(1.0, 2.0, 3.0), s, 1.5).as_andoyer().G), 12)
+    1.0
+    """
+    # A downward import, made on first use so that a State costs no numba/theta-series start-up
+    # until a time-dependent chart is read (andoyer.free.motion loads numba).
+    from andoyer.free.motion import FreeMotion
+
+    m, q = FreeMotion(body.moments, state.m_body, state.quaternion).propagate(dt)
+    return type(state).from_quaternion(q, m)
+
+
+# ------------------------------------------------------------------ the hub's dynamics
+
+
+def state_hamiltonian(body: RigidBody, m_body: ArrayLike) -> Array:
+    """``½ m·I⁻¹m`` for body angular momenta (..., 3); shape (...) (Gurfil eq. 38).
+
+    Examples
+    --------
+    >>> from andoyer import RigidBody
+    >>> float(state_hamiltonian(RigidBody(1.0, 2.0, 2.5), [1.0, 2.0, 5.0]))
+    6.5
+    """
+    return body.energy(m_body)
+
+
+def euler_poinsot(body: RigidBody, m_body: ArrayLike, torque: ArrayLike | None = None) -> Array:
+    """``dm/dt`` of the body angular momentum (Gurfil eqs. 12, 14 in momentum form).
+
+    ``dm_i/dt = c_i m_j m_k + u_i`` with ``c = body.euler_coefficients``.
+
+    Parameters
+    ----------
+    body : RigidBody
+    m_body : array_like, shape (..., 3)
+        Body angular momentum.
+    torque : array_like, shape (..., 3), optional
+        External torque ``u`` in body components (the forced eq. 14).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+
+    Examples
+    --------
+    >>> from andoyer import RigidBody
+    >>> euler_poinsot(RigidBody(1.0, 2.0, 2.5), [1.0, 1.0, 1.0]).tolist()
+    [-0.1, 0.6, -0.5]
+    """
+    m = as_vectors(m_body, "m_body")
+    c = body.euler_coefficients
+    rate = np.stack(
+        [c[0] * m[..., 1] * m[..., 2], c[1] * m[..., 2] * m[..., 0], c[2] * m[..., 0] * m[..., 1]], axis=-1
+    )
+    if torque is not None:
+        rate = rate + as_vectors(torque, "torque")
+    return rate
+
+
+def euler_poinsot_omega(body: RigidBody, omega: ArrayLike, torque: ArrayLike | None = None) -> Array:
+    """``dω/dt`` from ``I dω/dt + ω × Iω = u`` (Gurfil eqs. 12, 14).
+
+    ``dω_1/dt = ((I2 - I3) ω2 ω3 + u1)/I1`` and cyclic.
+
+    Parameters
+    ----------
+    body : RigidBody
+    omega : array_like, shape (..., 3)
+        Body angular velocity.
+    torque : array_like, shape (..., 3), optional
+        External torque in body components.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+
+    Examples
+    --------
+    >>> from andoyer import RigidBody
+    >>> euler_poinsot_omega(RigidBody(1.0, 2.0, 2.5), [1.0, 1.0, 1.0]).tolist()
+    [-0.5, 0.75, -0.4]
+    """
+    w = as_vectors(omega, "omega")
+    I1, I2, I3 = body.moments
+    rate = np.stack(
+        [
+            (I2 - I3) * w[..., 1] * w[..., 2] / I1,
+            (I3 - I1) * w[..., 2] * w[..., 0] / I2,
+            (I1 - I2) * w[..., 0] * w[..., 1] / I3,
+        ],
+        axis=-1,
+    )
+    if torque is not None:
+        rate = rate + as_vectors(torque, "torque") / body.moments
+    return rate
+
+
+def lie_poisson(m_body: ArrayLike, grad_hamiltonian: ArrayLike) -> Array:
+    """Lie–Poisson equations ``dm/dt = {m, K} = m × ∇K`` for any Hamiltonian ``K(m)`` (eqs. 34–36).
+
+    Parameters
+    ----------
+    m_body : array_like, shape (..., 3)
+    grad_hamiltonian : array_like, shape (..., 3)
+        ``∂K/∂m`` at ``m_body`` (for the free body, the angular velocity).
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3)
+
+    Examples
+    --------
+    >>> lie_poisson([0.0, 0.0, 1.0], [1.0, 0.0, 0.0]).tolist()
+    [0.0, 1.0, 0.0]
+    """
+    m = as_vectors(m_body, "m_body")
+    grad = as_vectors(grad_hamiltonian, "grad_hamiltonian")
+    return quat.cross(m, grad)
+
+
+def attitude_rate(quaternion: ArrayLike, omega_body: ArrayLike) -> Array:
+    """``dq/dt = ½ q ⊗ (ω, 0)`` for attitude quaternions (body → reference), scalar last.
+
+    Parameters
+    ----------
+    quaternion : array_like, shape (..., 4)
+    omega_body : array_like, shape (..., 3)
+        Angular velocity in body components.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 4)
+
+    Examples
+    --------
+    >>> attitude_rate([0.0, 0.0, 0.0, 1.0], [0.0, 0.0, 2.0]).tolist()
+    [0.0, 0.0, 1.0, 0.0]
+    """
+    q = as_vectors(quaternion, "quaternion", 4)
+    w = as_vectors(omega_body, "omega_body")
+    w4 = np.concatenate([w, np.zeros((*w.shape[:-1], 1))], axis=-1)
+    return 0.5 * quat.multiply(*np.broadcast_arrays(q, w4))
+
+
+# ------------------------------------------------------------------ the hub's chart
+
+
+def _hub_arrays(columns: tuple[Any, ...]) -> tuple[Array, Array]:
+    """The quaternions (..., 4) and momenta (..., 3) of the seven hub columns, broadcast."""
+    values = np.broadcast_arrays(*(np.asarray(c, dtype=np.float64) for c in columns))
+    return np.stack(values[:4], -1), np.stack(values[4:], -1)
+
+
+def _hub_from(cls: type[State], qx: Any, qy: Any, qz: Any, qw: Any, m1: Any, m2: Any, m3: Any) -> State:
+    return cls.from_quaternion(np.stack([qx, qy, qz, qw], -1), np.stack([m1, m2, m3], -1))
+
+
+def _hub_as(self: State) -> Hub:
+    return Hub(*np.moveaxis(self.quaternion, -1, 0), *np.moveaxis(self.m_body, -1, 0))
+
+
+def _hub_hamiltonian(body: RigidBody, qx: Any, qy: Any, qz: Any, qw: Any, m1: Any, m2: Any, m3: Any) -> Array:
+    """``½ m·I⁻¹m`` of the hub's columns (the attitude does not enter)."""
+    return state_hamiltonian(check_body(body), _hub_arrays((qx, qy, qz, qw, m1, m2, m3))[1])
+
+
+def _hub_equations(body: RigidBody, qx: Any, qy: Any, qz: Any, qw: Any, m1: Any, m2: Any, m3: Any) -> Hub:
+    """``dq/dt = ½ q ⊗ (I⁻¹m, 0)`` and ``dm/dt`` (Euler–Poinsot) of the hub's columns."""
+    body = check_body(body)
+    q, m = _hub_arrays((qx, qy, qz, qw, m1, m2, m3))
+    rates = np.concatenate([attitude_rate(q, m / body.moments), euler_poinsot(body, m)], axis=-1)
+    return Hub(*np.moveaxis(rates, -1, 0))
+
+
+register(
+    Chart(
+        "state",
+        Hub._fields,
+        (),
+        "the hub: attitude quaternion (scalar last) and body angular momentum",
+        _hub_from,
+        _hub_as,
+        method=False,
+        source="andoyer.state.hub",
+        hamiltonian=_hub_hamiltonian,
+        equations=_hub_equations,
+    )
+)

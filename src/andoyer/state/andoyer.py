@@ -19,15 +19,34 @@ The chart is singular where ``sin J = 0`` (conventions: ``l = 0``) and where
 States within ``4ε G`` of a pole are snapped onto it (``L`` or ``H = ±G``).
 Near those points the momenta ``L`` or ``H`` determine ``J`` or ``I`` only to
 ``ε / sin J`` or ``ε / sin I``: this is the chart's conditioning, not round-off.
+
+The chart's dynamics are here too: the free-body Hamiltonian (Gurfil eq. 89,
+:func:`andoyer_hamiltonian`) and Hamilton's equations of ``K = T + ΔH``
+(:func:`andoyer_equations`; Gurfil eqs. 97–102 for the free body), registered with the
+chart. ``ΔH`` is given on the hub, ``ΔH(t, q, m)``, with its torque ``τ`` and its momentum
+gradient ``∂ΔH/∂m``. The Andoyer attitude turns, per unit change of each angle, about a
+body-frame axis ``e_a``: ``b3`` for ``l``, the node ``j = (cos l, -sin l, 0)`` for ``J``, the
+momentum direction ``m/G`` for ``g``, the node ``i`` for ``I`` and the vertical
+``γ = Rᵀ s3`` for ``h``. Since ``δΔH = -τ·δθ`` for a body-frame rotation ``δθ``,
+
+.. math::
+   \frac{\partial\Delta H}{\partial a} = -\boldsymbol\tau\cdot\mathbf e_a
+   + \frac{\partial\Delta H}{\partial\mathbf m}\cdot\frac{\partial\mathbf m}{\partial a},
+
+with ``I(H, G)`` and ``J(L, G)`` entering through
+``∂I/∂H = -1/(G sin I)``, ``∂I/∂G = cos I/(G sin I)`` and likewise for ``J``.
+The chart is singular at ``sin I = 0`` and ``sin J = 0``, and so are these
+equations there.
 """
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, NamedTuple
+from typing import Any, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from andoyer import _quaternion as quat
 from andoyer._fastmath import chunked, wrap_2pi
 from andoyer._validation import (
     MAX_ANGLE,
@@ -39,19 +58,19 @@ from andoyer._validation import (
     check_magnitude,
     check_momenta,
 )
-from andoyer.charts import _kernels
-from andoyer.charts.euler import Euler, compiled_conversions, scalars, transverse_momentum
-from andoyer.charts.registry import Chart, register
-from andoyer.charts.singular import warn_if_singular
-from andoyer.state_charts import check_body, free_flow
-
-if TYPE_CHECKING:
-    from andoyer.body import RigidBody
-    from andoyer.state import State
+from andoyer.body import RigidBody
+from andoyer.state import _kernels
+from andoyer.state.euler import Euler, compiled_conversions, scalars, transverse_momentum
+from andoyer.state.hub import State, check_body
+from andoyer.state.registry import Chart, register
+from andoyer.state.singular import warn_if_singular
 
 __all__ = [
     "Andoyer",
+    "AndoyerRates",
+    "andoyer_equations",
     "andoyer_from_euler",
+    "andoyer_hamiltonian",
     "andoyer_matrix",
     "andoyer_to_hub",
     "euler_from_andoyer",
@@ -167,7 +186,7 @@ def andoyer_to_hub(
 
     The quaternions come divided by their norm as :class:`~andoyer.State` stores them
     (``unit``, kept for the callers that ask for it, changes nothing), from the kernel
-    :func:`andoyer.charts._kernels.andoyer_to_hub_one`: as Python for one state, compiled
+    :func:`andoyer.state._kernels.andoyer_to_hub_one`: as Python for one state, compiled
     for arrays (numba), or on whole arrays (numpy).
     """
     del unit  # every path normalises
@@ -208,7 +227,7 @@ def hub_to_andoyer(q: Array, m: Array, stacklevel: int = 2) -> Andoyer:
     frame) to the node ``j = (cos l, -sin l, 0)`` (body frame). Building ``i``
     and ``j`` from the same ``h`` and ``l`` that are returned keeps the
     attitude round trip exact even where ``h`` or ``l`` is ill-conditioned.
-    One state goes through the kernel :func:`andoyer.charts._kernels.hub_to_andoyer_one`
+    One state goes through the kernel :func:`andoyer.state._kernels.hub_to_andoyer_one`
     as Python (fields are numpy scalars), arrays through it compiled when numba is
     there, else through it on whole arrays (numpy).
     """
@@ -345,7 +364,7 @@ def euler_from_andoyer(
     return Euler(wrap_2pi(phi), theta, wrap_2pi(psi), H, Theta, L)
 
 
-# The chart's methods of State (installed by andoyer.charts.registry.install): their signatures
+# The chart's methods of State (installed when the chart registers, below): their signatures
 # are the chart's, written once here. ``cls`` and ``self`` are the State class and a state.
 
 
@@ -389,7 +408,7 @@ def _as_andoyer(self) -> Andoyer:
     """Andoyer variables ``(l, g, h, L, G, H)``; angles in ``[0, 2π)``.
 
     At ``sin J = 0`` (``l = 0``) and ``sin I = 0`` (``h = 0``) a
-    :class:`~andoyer.charts.SingularChartWarning` is issued. A state with
+    :class:`~andoyer.state.SingularChartWarning` is issued. A state with
     zero angular momentum has no Andoyer chart and raises ``ValueError``.
 
     Returns
@@ -407,83 +426,173 @@ def _as_andoyer(self) -> Andoyer:
     return hub_to_andoyer(self._q, self._m, stacklevel=2)
 
 
-def _as_initial_andoyer(self, body: RigidBody, epoch: ArrayLike, t: ArrayLike = 0.0) -> Andoyer:
-    """The modified Andoyer set (Gurfil §4.1): Andoyer variables at ``epoch`` of the free motion.
+# ---------------------------------------------------------------- the chart's dynamics
 
-    The state is taken at time ``t``; the free flow carries it to ``epoch``.
-    ``(l0, g0, h, L0, G, H)`` are constants of the free motion.
+
+class AndoyerRates(NamedTuple):
+    """Time derivatives of the Andoyer variables."""
+
+    l: Array
+    g: Array
+    h: Array
+    L: Array
+    G: Array
+    H: Array
+
+
+def andoyer_hamiltonian(body: RigidBody, l: ArrayLike, L: ArrayLike, G: ArrayLike) -> Array:
+    """Gurfil eq. 89 (Lara eq. 1): the free Hamiltonian in Andoyer variables.
+
+    ``½ (s_l²/I1 + c_l²/I2)(G² - L²) + L²/(2 I3)``. Only ``l``, ``L`` and ``G`` enter: ``g``
+    and ``h`` are cyclic.
 
     Parameters
     ----------
     body : RigidBody
-        The body.
-    epoch, t : array_like, shape (...)
-        The epoch of the set and the time of the state; broadcast with the state's shape.
+    l, L, G : array_like, shape (...)
+        Andoyer angle ``l`` and momenta ``L``, ``G`` (``|L| <= G``); they broadcast.
 
     Returns
     -------
-    Andoyer of arrays, each of shape (...)
-        ``(l0, g0, h, L0, G, H)``, the fields named ``(l, g, h, L, G, H)``.
+    numpy.ndarray, shape (...)
 
     Examples
     --------
-    >>> from andoyer import FreeRotation, RigidBody, State
-    >>> body = RigidBody(1.0, 2.0, 3.0)
-    >>> s = State.from_andoyer(0.3, 0.4, 0.5, 0.9, 1.0, 0.2)
-    >>> later = FreeRotation(body).propagate(s, 2.5)
-    >>> a, b = s.as_initial_andoyer(body, 0.0), later.as_initial_andoyer(body, 0.0, t=2.5)
-    >>> bool(max(abs(x - y) for x, y in zip(a, b)) < 1e-12)
-    True
+    >>> from andoyer import RigidBody
+    >>> float(andoyer_hamiltonian(RigidBody(1.0, 2.0, 2.5), 0.0, 0.0, 2.0))  # G²/(2 I2)
+    1.0
     """
-    dt = np.asarray(epoch, dtype=float) - np.asarray(t, dtype=float)
-    return free_flow(check_body(body), self, dt).as_andoyer()
+    l, L, G = broadcast(("l", as_finite(l, "l")), ("L", as_finite(L, "L")), ("G", as_finite(G, "G")))
+    check_momenta(L, G, np.zeros_like(G))
+    I1, I2, I3 = body.moments
+    sl, cl = np.sin(l), np.cos(l)
+    return 0.5 * (sl * sl / I1 + cl * cl / I2) * (G - L) * (G + L) + L * L / (2 * I3)
 
 
-def _from_initial_andoyer(
-    cls: type[State],
+def _free_rates(body: RigidBody, l: Any, g: Any, h: Any, L: Any, G: Any, H: Any) -> AndoyerRates:
+    """Gurfil eqs. 97–102, written without cancellation (see :func:`andoyer_equations`)."""
+    names = ("l", "g", "h", "L", "G", "H")
+    l, g, h, L, G, H = broadcast_finite(names, (l, g, h, L, G, H))
+    check_momenta(L, G, H)
+    I1, I2, I3 = body.moments
+    s2, c2 = np.sin(l) ** 2, np.cos(l) ** 2
+    zero = np.zeros_like(G)
+    return AndoyerRates(
+        L * (s2 * (I1 - I3) / (I1 * I3) + c2 * (I2 - I3) / (I2 * I3)),
+        G * (s2 / I1 + c2 / I2),
+        zero,
+        -(G - L) * (G + L) * np.sin(l) * np.cos(l) * (I2 - I1) / (I1 * I2),
+        zero.copy(),
+        zero.copy(),
+    )
+
+
+def andoyer_equations(
     body: RigidBody,
-    l0: ArrayLike,
-    g0: ArrayLike,
+    l: ArrayLike,
+    g: ArrayLike,
     h: ArrayLike,
-    L0: ArrayLike,
+    L: ArrayLike,
     G: ArrayLike,
     H: ArrayLike,
-    epoch: ArrayLike,
+    *,
+    perturbation: Any = None,
     t: ArrayLike = 0.0,
-) -> State:
-    """State at time ``t`` of the free motion whose Andoyer variables at ``epoch`` are given.
+) -> AndoyerRates:
+    r"""Hamilton's equations of ``T + ΔH`` in Andoyer variables (Gurfil eqs. 97–102 for ``ΔH = 0``).
 
-    The inverse of :meth:`as_initial_andoyer` (Gurfil §4.1's modified Andoyer set
-    ``(l0, g0, h, L0, G, H)``): the free flow carries ``from_andoyer(l0, …, H)`` from
-    ``epoch`` to ``t``. All arguments broadcast.
+    The free part is written without cancellation:
+    ``dl/dt = L (s_l² (I1 - I3)/(I1 I3) + c_l² (I2 - I3)/(I2 I3))``,
+    ``dg/dt = G (s_l²/I1 + c_l²/I2)``, ``dh/dt = 0``,
+    ``dL/dt = -(G - L)(G + L) s_l c_l (I2 - I1)/(I1 I2)``, ``dG/dt = dH/dt = 0``.
+    A perturbation ``ΔH(t, q, m)`` given on the hub adds ``∂ΔH/∂(L, G, H)`` to the angles' rates
+    and ``-∂ΔH/∂(l, g, h)`` to the momenta's, through its torque and momentum gradient (see
+    :mod:`andoyer.state.andoyer`).
 
     Parameters
     ----------
     body : RigidBody
-        The body.
-    l0, g0, h : array_like, shape (...)
-        The Andoyer angles at ``epoch``, in radians.
-    L0, G, H : array_like, shape (...)
-        The momenta at ``epoch``.
-    epoch, t : array_like, shape (...)
-        The epoch of the set and the time of the state.
+    l, g, h, L, G, H : array_like, shape (...)
+        Andoyer variables; they broadcast (off the singular set ``sin I sin J = 0`` where a
+        perturbation is given).
+    perturbation : optional
+        A Hamiltonian term of the perturbation protocol (:class:`andoyer.perturbations.base.Perturbation`:
+        its ``hamiltonian`` flag, ``torque(t, q, m)`` and ``momentum_gradient(t, q, m)``), bound
+        to ``body``; ``None``: the free body.
+    t : array_like, shape (...)
+        The time of the perturbation; broadcast with the variables.
 
     Returns
     -------
-    State, shape (...)
-        The states at ``t`` (the broadcast shape of the arguments).
+    AndoyerRates
 
     Examples
     --------
-    >>> from andoyer import RigidBody, State
-    >>> body = RigidBody(1.0, 2.0, 3.0)
-    >>> s = State.from_initial_andoyer(body, 0.3, 0.4, 0.5, 0.9, 1.0, 0.2, epoch=1.0, t=2.5)
-    >>> a = s.as_initial_andoyer(body, 1.0, t=2.5)
-    >>> [round(float(x), 12) for x in a]
-    [0.3, 0.4, 0.5, 0.9, 1.0, 0.2]
+    >>> from andoyer import RigidBody
+    >>> rates = andoyer_equations(RigidBody(1.0, 2.0, 2.5), 0.0, 0.0, 0.0, 1.0, 2.0, 1.0)
+    >>> float(rates.g), float(rates.l)
+    (1.0, -0.1)
     """
-    dt = np.asarray(t, dtype=float) - np.asarray(epoch, dtype=float)
-    return free_flow(check_body(body), cls.from_andoyer(l0, g0, h, L0, G, H), dt)
+    free = _free_rates(body, l, g, h, L, G, H)
+    if perturbation is None:
+        return free
+    if not perturbation.hamiltonian:
+        msg = "expected Hamiltonian perturbations for the Andoyer-form equations, got a dissipative torque"
+        raise ValueError(msg)
+    t, l, g, h, L, G, H = broadcast_finite("tlghLGH", (t, l, g, h, L, G, H))
+    check_momenta(L, G, H)
+    q, m = andoyer_to_hub(l, g, h, L, G, H)
+    tau = perturbation.torque(t, q, m)
+    grad_m = perturbation.momentum_gradient(t, q, m)
+    GsJ, GsI = np.sqrt((G - L) * (G + L)), np.sqrt((G - H) * (G + H))
+    if np.any((GsJ == 0) | (GsI == 0)):
+        msg = "expected sin I != 0 and sin J != 0 for the Andoyer-form equations, got a singular state"
+        raise ValueError(msg)
+    sl, cl = np.sin(l), np.cos(l)
+    zero = np.zeros_like(l)
+    e_l = np.stack([zero, zero, zero + 1.0], -1)
+    e_J = np.stack([cl, -sl, zero], -1)
+    e_g = m / G[..., None]
+    gamma = quat.rotate(quat.conjugate(q), np.array([0.0, 0.0, 1.0]))
+    e_h = gamma
+    node_i = quat.rotate(quat.conjugate(q), np.stack([np.cos(h), np.sin(h), zero], -1))
+    e_I = node_i
+
+    def along(axis: Array) -> Array:
+        return -np.sum(tau * axis, axis=-1)
+
+    dm_dl = np.stack([GsJ * cl, -GsJ * sl, zero], -1)
+    dm_dL = np.stack([-L / GsJ * sl, -L / GsJ * cl, zero + 1.0], -1)
+    dm_dG = np.stack([G / GsJ * sl, G / GsJ * cl, zero], -1)
+
+    def dot_m(d: Array) -> Array:
+        return np.sum(grad_m * d, axis=-1)
+
+    dI_dH, dI_dG = -G / (G * GsI), H / (G * GsI)
+    dJ_dL, dJ_dG = -G / (G * GsJ), L / (G * GsJ)
+    d_l = along(e_l) + dot_m(dm_dl)
+    d_g = along(e_g)
+    d_h = along(e_h)
+    d_L = along(e_J) * dJ_dL + dot_m(dm_dL)
+    d_G = along(e_I) * dI_dG + along(e_J) * dJ_dG + dot_m(dm_dG)
+    d_H = along(e_I) * dI_dH
+    return AndoyerRates(
+        free.l + d_L,
+        free.g + d_G,
+        free.h + d_H,
+        free.L - d_l,
+        free.G - d_g,
+        free.H - d_h,
+    )
+
+
+def _hamiltonian(
+    body: RigidBody, l: ArrayLike, g: ArrayLike, h: ArrayLike, L: ArrayLike, G: ArrayLike, H: ArrayLike
+) -> Array:
+    """The registry's form of :func:`andoyer_hamiltonian`: the six columns in (``g``, ``h`` cyclic)."""
+    l, g, h, L, G, H = broadcast_finite(Andoyer._fields, (l, g, h, L, G, H))
+    check_momenta(L, G, H)
+    return andoyer_hamiltonian(check_body(body), l, L, G)
 
 
 register(
@@ -494,18 +603,9 @@ register(
         "Serret–Andoyer angles and momenta (Gurfil §3)",
         _from_andoyer,
         _as_andoyer,
-        source="andoyer.charts.andoyer",
-    )
-)
-# Gurfil §4.1's modified Andoyer set: the Andoyer variables at ``epoch`` of the free motion.
-register(
-    Chart(
-        "initial_andoyer",
-        ("l0", "g0", "h", "L0", "G", "H"),
-        ("l0", "g0", "h"),
-        "Andoyer variables at `epoch` of the free motion, the state taken at `t` (Gurfil §4.1)",
-        _from_initial_andoyer,
-        _as_initial_andoyer,
-        source="andoyer.charts.andoyer",
-    )
+        source="andoyer.state.andoyer",
+        hamiltonian=_hamiltonian,
+        equations=andoyer_equations,
+    ),
+    State,
 )

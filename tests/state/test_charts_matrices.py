@@ -7,7 +7,7 @@ import pytest
 from scipy.spatial.transform import Rotation
 
 from andoyer import State
-from andoyer.charts import andoyer_from_euler, andoyer_matrix, euler_from_andoyer, euler_matrix, inclinations
+from andoyer.state import andoyer_from_euler, andoyer_matrix, euler_from_andoyer, euler_matrix, inclinations
 from conftest import random_states
 
 

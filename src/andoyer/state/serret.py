@@ -13,9 +13,9 @@ The time-dependent generating function (eqs. 62, 67) is
 ``t`` the map Andoyer ``(l, g, h; L, G, H)`` → ``(g₀, h, −t₀; G, H, T)`` is symplectic.
 
 **Definitions used here** (the origin of time on each polhode is fixed through Sadov's angle,
-:mod:`andoyer.charts.sadov`). With ``(φ_ℓ, φ_g)`` Sadov's angles of the state at time ``t``
+:mod:`andoyer.state.sadov`). With ``(φ_ℓ, φ_g)`` Sadov's angles of the state at time ``t``
 and ``ω_ℓ = ∂H/∂I_ℓ``, ``ω_g = ∂H/∂I_g`` its frequencies (closed form, as in
-:func:`~andoyer.charts.sadov.sadov_frequencies`), the free flow is ``φ_ℓ(t') = φ_ℓ + ω_ℓ (t' − t)``
+:func:`~andoyer.state.sadov.sadov_frequencies`), the free flow is ``φ_ℓ(t') = φ_ℓ + ω_ℓ (t' − t)``
 and ``t₀`` is the time of the last passage through ``φ_ℓ = 0`` at or before ``t``:
 
 .. math:: t - t_0 = \Delta, \qquad \Delta \equiv \frac{\varphi_\ell}{\omega_\ell}
@@ -53,16 +53,21 @@ Where the chart is undefined, ``ValueError`` is raised:
 
 At a **libration centre** (a steady rotation about ``±b_e``, ``I_ℓ = 0``) every time is a
 passage: the convention ``t₀ = t``, ``g₀ = g`` is applied with a
-:class:`~andoyer.charts.SingularChartWarning`. The poles ``L = ±G`` inherit the Andoyer
+:class:`~andoyer.state.SingularChartWarning`. The poles ``L = ±G`` inherit the Andoyer
 chart's convention (``l = 0``) and round-trip exactly.
 
 Near the separatrix the chart is ill-conditioned (``P_ℓ`` grows like ``log(1/|distance|)``).
+
+The chart's dynamics, registered with it: Serret's elements are constants of the free motion
+(Gurfil §4.1: "Serret variables (which are, in the unperturbed case, merely constants of
+motion)"; the time-dependent generating function takes the Hamiltonian ``T`` away), so with a
+fixed ``epoch`` the chart's Hamiltonian is nil and every rate vanishes.
 """
 
 from __future__ import annotations
 
 import warnings
-from typing import TYPE_CHECKING, NamedTuple
+from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -70,15 +75,12 @@ from numpy.typing import ArrayLike, NDArray
 from andoyer._fastmath import wrap_2pi
 from andoyer._validation import broadcast_finite, check_momenta
 from andoyer.body import RigidBody
-from andoyer.charts.andoyer import Andoyer, hub_to_andoyer
-from andoyer.charts.registry import Chart, register
-from andoyer.charts.sadov_frame import SadovFrame
-from andoyer.charts.sadov_orbit import Orbit, angles, orbit, point
-from andoyer.charts.singular import SingularChartWarning
-from andoyer.state_charts import check_body
-
-if TYPE_CHECKING:
-    from andoyer.state import State
+from andoyer.state.andoyer import Andoyer, hub_to_andoyer
+from andoyer.state.hub import State, check_body
+from andoyer.state.registry import Chart, register
+from andoyer.state.sadov_frame import SadovFrame
+from andoyer.state.sadov_orbit import Orbit, angles, orbit, point
+from andoyer.state.singular import SingularChartWarning
 
 __all__ = ["Serret", "andoyer_to_serret", "serret_to_andoyer"]
 
@@ -184,7 +186,7 @@ def andoyer_to_serret(
     epoch : array_like, shape (...), optional
         Selects the branch of ``t₀``: ``epoch − P_ℓ < t₀ <= epoch``. Default ``t``.
     stacklevel : int
-        Where a :class:`~andoyer.charts.SingularChartWarning` points (2: the caller).
+        Where a :class:`~andoyer.state.SingularChartWarning` points (2: the caller).
 
     Returns
     -------
@@ -340,7 +342,7 @@ def serret_to_andoyer(
 
 
 # On the command line Serret's t0 is measured from each row's own instant (the state at t = 0).
-# The chart's methods of State (installed by andoyer.charts.registry.install): their signatures
+# The chart's methods of State (installed when the chart registers, below): their signatures
 # are the chart's, written once here. ``cls`` and ``self`` are the State class and a state.
 
 
@@ -350,7 +352,7 @@ def _as_serret(self, body: RigidBody, t: ArrayLike = 0.0, *, epoch: ArrayLike | 
     ``(g0, h, -t0)`` are conjugate to ``(G, H, T)``, ``T`` the kinetic energy; ``t0`` is
     the last passage at or before ``epoch`` (default ``t``) of the body momentum through the
     reference point ``φ_ℓ = 0`` of its polhode, ``t - t0 ≡ φ_ℓ/ω_ℓ (mod P_ℓ)``, and ``g0``
-    is ``g`` at ``t0``. See :mod:`andoyer.charts.serret` for the definitions and the
+    is ``g`` at ``t0``. See :mod:`andoyer.state.serret` for the definitions and the
     states where the chart is undefined (``ValueError``).
 
     Parameters
@@ -430,6 +432,41 @@ def _from_serret(
     """
     return cls.from_andoyer(*serret_to_andoyer(check_body(body), g0, h, t0, G, H, T, sign, t))
 
+
+def _columns(body: RigidBody, values: tuple[ArrayLike, ...]) -> list[Array]:
+    """The seven columns, finite and broadcast, for a body."""
+    check_body(body)
+    return broadcast_finite(Serret._fields, values)
+
+
+def _hamiltonian(
+    body: RigidBody,
+    g0: ArrayLike,
+    h: ArrayLike,
+    t0: ArrayLike,
+    G: ArrayLike,
+    H: ArrayLike,
+    T: ArrayLike,
+    sign: ArrayLike = 1.0,
+) -> Array:
+    """The free Hamiltonian in Serret's elements at a fixed epoch: nil (their constants of motion)."""
+    return np.zeros_like(_columns(body, (g0, h, t0, G, H, T, sign))[0])
+
+
+def _equations(
+    body: RigidBody,
+    g0: ArrayLike,
+    h: ArrayLike,
+    t0: ArrayLike,
+    G: ArrayLike,
+    H: ArrayLike,
+    T: ArrayLike,
+    sign: ArrayLike = 1.0,
+) -> Serret:
+    """Hamilton's equations of the free body in Serret's elements at a fixed epoch: every rate zero."""
+    return Serret(*(np.zeros_like(v) for v in _columns(body, (g0, h, t0, G, H, T, sign))))
+
+
 register(
     Chart(
         "serret",
@@ -438,6 +475,9 @@ register(
         "Serret's elements, `(g0, h, -t0)` conjugate to `(G, H, T)`, of the state at `t`",
         _from_serret,
         _as_serret,
-        source="andoyer.charts.serret",
-    )
+        source="andoyer.state.serret",
+        hamiltonian=_hamiltonian,
+        equations=_equations,
+    ),
+    State,
 )

@@ -7,7 +7,7 @@ import pytest
 from scipy.spatial.transform import Rotation
 
 from andoyer import State
-from andoyer.charts import andoyer_from_euler, euler_from_andoyer
+from andoyer.state import andoyer_from_euler, euler_from_andoyer
 
 J6 = np.block([[np.zeros((3, 3)), np.eye(3)], [-np.eye(3), np.zeros((3, 3))]])
 

@@ -1,6 +1,6 @@
 r"""One orbit of the ``(l', L)`` cylinder in Sadov's standard frame: its action and its angles.
 
-Notation (see :mod:`andoyer.charts.sadov_frame` for ``ρ``): ``x = L/G``, ``s = sin l'``,
+Notation (see :mod:`andoyer.state.sadov_frame` for ``ρ``): ``x = L/G``, ``s = sin l'``,
 ``c = cos l'``, and the normalised energy
 
 .. math:: \tau = \frac{2T/G^2 - a_3}{a_e - a_3} = (1 - x^2)(1 - \rho c^2) \in [0, 1],
@@ -31,8 +31,8 @@ import numpy as np
 from numpy.typing import NDArray
 from scipy import special as sc
 
-from andoyer.charts.sadov_frame import SadovFrame
 from andoyer.special import am, ellipf, ellipk
+from andoyer.state.sadov_frame import SadovFrame
 
 __all__ = ["Orbit", "angles", "orbit", "point"]
 

@@ -1,4 +1,9 @@
-"""The exact torque-free rotation of a body, on :class:`~andoyer.State` arrays."""
+"""The exact torque-free rotation of a body, on :class:`~andoyer.State` arrays.
+
+:class:`FreeRotation` joins two layers below it: the state package (:mod:`andoyer.state`)
+and the exact solution on arrays (:mod:`andoyer.free`: moments, momenta and quaternions in,
+arrays out), which knows nothing of ``State``. ``andoyer.FreeRotation`` is this class.
+"""
 
 from __future__ import annotations
 
@@ -10,6 +15,7 @@ from andoyer.free.backends import resolve
 from andoyer.free.motion import FreeMotion, FreePeriods
 from andoyer.regime import regime_names
 from andoyer.state import State
+from andoyer.state.hub import check_body
 
 __all__ = ["FreeRotation"]
 
@@ -45,10 +51,7 @@ class FreeRotation:
     """
 
     def __init__(self, body: RigidBody, backend: str | None = None) -> None:
-        if not isinstance(body, RigidBody):
-            msg = f"expected an andoyer.RigidBody, got {type(body).__name__}"
-            raise ValueError(msg)
-        self.body = body
+        self.body = check_body(body)
         self.backend = resolve(backend)
 
     def _motion(self, state: State) -> FreeMotion:

@@ -10,7 +10,7 @@ and the angles come from the generating function ``W = I_g g + I_h h + V(l; I_�
 = g + (V − I_ℓ φ_ℓ)/G`` (``V`` is homogeneous of degree 1 in ``(I_ℓ, G)``),
 ``φ_h = h``. The body must have ``b3`` along an axis of extreme inertia (either one);
 ``b_i`` is the intermediate in-plane axis and ``b_e`` the other one (see
-:mod:`andoyer.charts.sadov_frame`; ``b_i = b2`` when ``I1 = I2``).
+:mod:`andoyer.state.sadov_frame`; ``b_i = b2`` when ``I1 = I2``).
 
 Conventions (``u = |I_ℓ|/G``, ``u_s = (2/π) arctan κ`` the separatrix value):
 
@@ -31,18 +31,22 @@ Conventions (``u = |I_ℓ|/G``, ``u_s = (2/π) arctan κ`` the separatrix value)
   at ``L = 0``) with ``φ_ℓ = 0``, ``φ_g = g``; ``sadov_to_andoyer`` returns the unstable
   equilibrium ``+b_i`` (or, when ``I_i = I3``, the pole ``L = sign(I_ℓ) G`` of the circle of
   equilibria); ``sadov_frequencies`` returns the limits ``ω_ℓ = 0``, ``ω_g = G/I_i``; each
-  issues a :class:`~andoyer.charts.SingularChartWarning`.
+  issues a :class:`~andoyer.state.SingularChartWarning`.
 * **Libration centres** ``m ∥ ±b_e`` (``I_ℓ = 0``): ``φ_ℓ`` is undefined; the forward map
   sets ``φ_ℓ = 0``, ``φ_g = g`` with a warning, and the inverse map picks the lobe from the
   sign bit of ``I_ℓ`` (``+0.0`` or ``−0.0``).
 
 Angles are returned in ``[0, 2π)``. The formulas and the corrections to the printed ones are
 derived in ``docs/errata-sadov.md``.
+
+The chart's dynamics, registered with it: the Hamiltonian ``H(I_ℓ, I_g)``
+(:func:`sadov_hamiltonian`) and Hamilton's equations, ``dφ/dt = (ω_ℓ, ω_g, 0)`` with the
+frequencies of :func:`sadov_frequencies` and constant actions.
 """
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, NamedTuple
+from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -50,16 +54,13 @@ from numpy.typing import ArrayLike, NDArray
 from andoyer._fastmath import wrap_2pi
 from andoyer._validation import broadcast_finite, check_momenta
 from andoyer.body import RigidBody
-from andoyer.charts.andoyer import Andoyer
-from andoyer.charts.registry import Chart, register
-from andoyer.charts.sadov_frame import SadovFrame
-from andoyer.charts.sadov_orbit import angles, orbit, point
-from andoyer.charts.sadov_solve import solve
-from andoyer.charts.singular import warn_if_singular
-from andoyer.state_charts import check_body
-
-if TYPE_CHECKING:
-    from andoyer.state import State
+from andoyer.state.andoyer import Andoyer
+from andoyer.state.hub import State, check_body
+from andoyer.state.registry import Chart, register
+from andoyer.state.sadov_frame import SadovFrame
+from andoyer.state.sadov_orbit import angles, orbit, point
+from andoyer.state.sadov_solve import solve
+from andoyer.state.singular import warn_if_singular
 
 __all__ = [
     "Sadov",
@@ -162,7 +163,7 @@ def andoyer_to_sadov(
     r"""Sadov's action–angle variables of Andoyer states (eqs. 139–147, corrected).
 
     ``I_g = G``, ``I_h = H``, ``φ_h = h``; ``I_ℓ = σ G u`` and ``φ_ℓ``, ``φ_g`` from
-    :func:`andoyer.charts.sadov_orbit.angles`, with the conventions of this module's
+    :func:`andoyer.state.sadov_orbit.angles`, with the conventions of this module's
     docstring.
 
     Parameters
@@ -238,7 +239,7 @@ def sadov_to_andoyer(
     r"""Andoyer variables of Sadov states: the inverse of :func:`andoyer_to_sadov`.
 
     The orbit of ``u = |I_ℓ|/I_g`` is found by a bracketed Newton iteration
-    (:mod:`andoyer.charts.sadov_solve`), then ``z = am(2K(φ_ℓ − φ_0)/π | m)`` (circulation)
+    (:mod:`andoyer.state.sadov_solve`), then ``z = am(2K(φ_ℓ − φ_0)/π | m)`` (circulation)
     or ``ζ = am(2Kφ_ℓ/π | m)`` (libration) gives ``l``, ``L`` and ``g − φ_g``.
 
     Parameters
@@ -321,7 +322,7 @@ def sadov_hamiltonian(body: RigidBody, I_l: ArrayLike, I_g: ArrayLike) -> Array:
     Examples
     --------
     >>> from andoyer import RigidBody
-    >>> from andoyer.hamiltonians import andoyer_hamiltonian
+    >>> from andoyer.state.andoyer import andoyer_hamiltonian
     >>> body = RigidBody(1.0, 2.0, 2.5)
     >>> s = andoyer_to_sadov(body, 0.3, 0.2, 0.1, 0.9, 1.0, 0.5)
     >>> bool(abs(sadov_hamiltonian(body, s.I_l, s.I_g) - andoyer_hamiltonian(body, 0.3, 0.9, 1.0)) < 1e-15)
@@ -383,7 +384,7 @@ def sadov_frequencies(body: RigidBody, I_l: ArrayLike, I_g: ArrayLike) -> SadovF
     return SadovFrequencies(np.reshape(omega_l, shape), np.reshape(omega_g, shape))
 
 
-# The chart's methods of State (installed by andoyer.charts.registry.install): their signatures
+# The chart's methods of State (installed when the chart registers, below): their signatures
 # are the chart's, written once here. ``cls`` and ``self`` are the State class and a state.
 
 
@@ -397,7 +398,7 @@ def _from_sadov(
     I_g: ArrayLike,
     I_h: ArrayLike,
 ) -> State:
-    """State from Sadov's action–angle variables (Gurfil §5); see :mod:`andoyer.charts.sadov`.
+    """State from Sadov's action–angle variables (Gurfil §5); see :mod:`andoyer.state.sadov`.
 
     Parameters
     ----------
@@ -447,6 +448,38 @@ def _as_sadov(self, body: RigidBody):
     """
     return andoyer_to_sadov(check_body(body), *self.as_andoyer())
 
+
+def _hamiltonian(
+    body: RigidBody,
+    phi_l: ArrayLike,
+    phi_g: ArrayLike,
+    phi_h: ArrayLike,
+    I_l: ArrayLike,
+    I_g: ArrayLike,
+    I_h: ArrayLike,
+) -> Array:
+    """The registry's form of :func:`sadov_hamiltonian`: the six columns in, the angles cyclic."""
+    columns = broadcast_finite(Sadov._fields, (phi_l, phi_g, phi_h, I_l, I_g, I_h))
+    return sadov_hamiltonian(check_body(body), columns[3], columns[4])
+
+
+def _equations(
+    body: RigidBody,
+    phi_l: ArrayLike,
+    phi_g: ArrayLike,
+    phi_h: ArrayLike,
+    I_l: ArrayLike,
+    I_g: ArrayLike,
+    I_h: ArrayLike,
+) -> Sadov:
+    """Hamilton's equations in Sadov's chart: the angles turn at ``(ω_ℓ, ω_g, 0)``, the actions stay."""
+    columns = broadcast_finite(Sadov._fields, (phi_l, phi_g, phi_h, I_l, I_g, I_h))
+    _actions(columns[3], columns[4], columns[5])
+    omega = sadov_frequencies(check_body(body), columns[3], columns[4])
+    zero = np.zeros_like(columns[3])
+    return Sadov(omega.omega_l, omega.omega_g, zero, zero.copy(), zero.copy(), zero.copy())
+
+
 register(
     Chart(
         "sadov",
@@ -455,6 +488,9 @@ register(
         "Sadov's action–angle variables of the free body (Gurfil §5)",
         _from_sadov,
         _as_sadov,
-        source="andoyer.charts.sadov",
-    )
+        source="andoyer.state.sadov",
+        hamiltonian=_hamiltonian,
+        equations=_equations,
+    ),
+    State,
 )

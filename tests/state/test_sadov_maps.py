@@ -20,8 +20,8 @@ from test_sadov_support import (
 )
 
 from andoyer import RigidBody, State
-from andoyer.charts import Andoyer, SingularChartWarning
-from andoyer.charts.sadov import (
+from andoyer.state import Andoyer, SingularChartWarning
+from andoyer.state.sadov import (
     Sadov,
     andoyer_to_sadov,
     sadov_frequencies,

@@ -7,7 +7,7 @@ formula serves three paths:
 - on floats it is the single-state fast path (no array is built, no numba is imported),
   as the ``*_floats`` functions below: the same source with each ``select`` compiled as a
   conditional expression (:func:`andoyer._jit.on_floats`), which is what numba makes of it;
-- :mod:`andoyer.charts._compiled` compiles the loops at the end of this module, which apply
+- :mod:`andoyer.state._compiled` compiles the loops at the end of this module, which apply
   it over arrays of states: the same bits as the single state;
 - :func:`andoyer._jit.on_arrays` runs the same code on whole numpy arrays (numpy's
   functions in place of :mod:`math`'s, :func:`numpy.where` for ``select``): the ``*_arrays``
@@ -254,7 +254,7 @@ def hub_to_andoyer_one(
 
 
 # --------------------------------------------------------------------------------------
-# Loops over arrays of states, compiled by andoyer.charts._compiled (plain Python here: the
+# Loops over arrays of states, compiled by andoyer.state._compiled (plain Python here: the
 # *_arrays functions, not these, serve arrays where numba is missing).
 
 

@@ -23,8 +23,8 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
-from andoyer.charts.sadov_frame import SadovFrame
-from andoyer.charts.sadov_orbit import Orbit, orbit
+from andoyer.state.sadov_frame import SadovFrame
+from andoyer.state.sadov_orbit import Orbit, orbit
 
 __all__ = ["solve"]
 

@@ -24,8 +24,8 @@ from test_sadov_support import (
 )
 
 from andoyer import FreeRotation, RigidBody, State, bodies
-from andoyer.charts import Serret, SingularChartWarning, andoyer_to_serret, serret_to_andoyer
-from andoyer.charts.sadov import andoyer_to_sadov, sadov_frequencies
+from andoyer.state import Serret, SingularChartWarning, andoyer_to_serret, serret_to_andoyer
+from andoyer.state.sadov import andoyer_to_sadov, sadov_frequencies
 from conftest import rotation_distance
 
 EPS = np.finfo(float).eps

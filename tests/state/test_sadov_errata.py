@@ -14,8 +14,8 @@ from scipy.integrate import solve_ivp
 from test_sadov_support import circle, reference_action
 
 from andoyer import RigidBody
-from andoyer.charts.sadov import andoyer_to_sadov, sadov_frequencies
-from andoyer.equations import andoyer_equations
+from andoyer.state import andoyer_equations
+from andoyer.state.sadov import andoyer_to_sadov, sadov_frequencies
 
 mp.mp.dps = 30
 BODY = RigidBody(1.0, 2.0, 2.5)  # I1 < I2 < I3, Gurfil's ordering; κ² = 5

@@ -18,15 +18,15 @@ from test_sadov_support import (
 )
 
 from andoyer import RigidBody
-from andoyer.charts.sadov import (
+from andoyer.state import andoyer_hamiltonian
+from andoyer.state.sadov import (
     andoyer_to_sadov,
     sadov_frequencies,
     sadov_hamiltonian,
     separatrix_action,
 )
-from andoyer.charts.sadov_frame import SadovFrame
-from andoyer.charts.sadov_solve import solve
-from andoyer.hamiltonians import andoyer_hamiltonian
+from andoyer.state.sadov_frame import SadovFrame
+from andoyer.state.sadov_solve import solve
 
 EPS = np.finfo(float).eps
 

@@ -1,8 +1,8 @@
 """The Euler and Andoyer kernels, written once, give the same numbers on every path.
 
-Each kernel of ``andoyer.charts._kernels`` runs as written (Python, ``select`` called), as its
+Each kernel of ``andoyer.state._kernels`` runs as written (Python, ``select`` called), as its
 float copy (``*_floats``: each ``select`` a conditional expression), inside the compiled loops
-of ``andoyer.charts._compiled`` (numba; plain Python under ``ANDOYER_NUMBA=0``) and as its
+of ``andoyer.state._compiled`` (numba; plain Python under ``ANDOYER_NUMBA=0``) and as its
 array copy (``*_arrays``: numpy's functions). The first three must agree bit for bit, the
 array copy within 2 ulp (numpy's ``sin``, ``cos``, ``arctan`` against the C library's); the
 singular flags (θ = 0 or π, sin J = 0, sin I = 0) and the statuses of ``euler_to_hub`` exactly,
@@ -15,7 +15,7 @@ import numpy as np
 from hypothesis import example, given
 from hypothesis import strategies as st
 
-from andoyer.charts import _compiled, _kernels
+from andoyer.state import _compiled, _kernels
 
 ULP_2PI = float(np.spacing(2 * np.pi))
 ULP_1 = float(np.spacing(1.0))

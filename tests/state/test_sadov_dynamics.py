@@ -1,7 +1,7 @@
 """Sadov's angles advance uniformly at ∂H/∂I along trajectories integrated in Andoyer variables.
 
 The reference is a DOP853 integration (rtol = atol = 1e-12) of Hamilton's equations of the
-Andoyer Hamiltonian (``andoyer.equations.andoyer_equations``); nothing in it uses Sadov's
+Andoyer Hamiltonian (``andoyer.state.andoyer.andoyer_equations``); nothing in it uses Sadov's
 variables. The frequencies are also checked against the period of ``l(t)`` located by the
 integrator's event finder.
 """
@@ -23,8 +23,8 @@ from test_sadov_support import (
     separatrix_distance,
 )
 
-from andoyer.charts.sadov import andoyer_to_sadov, sadov_frequencies
-from andoyer.equations import andoyer_equations
+from andoyer.state import andoyer_equations
+from andoyer.state.sadov import andoyer_to_sadov, sadov_frequencies
 
 
 def integrate(body, y0, t_end, n_out=200, events=None, tol=1e-12):

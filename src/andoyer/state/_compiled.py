@@ -1,11 +1,11 @@
 """Compiled loops of the Euler and Andoyer conversions over arrays of states (numba).
 
-Each loop (defined in :mod:`andoyer.charts._kernels`, beside the scalar kernel it
+Each loop (defined in :mod:`andoyer.state._kernels`, beside the scalar kernel it
 applies state by state) is compiled here, so an array conversion gives the same bits as
 the single-state fast path. The module
 imports numba (through :mod:`andoyer._jit`); the chart modules import it only for
 arrays, and only use it when ``NUMBA`` is true, else the same kernels on whole arrays
-(the ``*_arrays`` functions of :mod:`andoyer.charts._kernels`).
+(the ``*_arrays`` functions of :mod:`andoyer.state._kernels`).
 """
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from andoyer._jit import NUMBA, jit, jitable
-from andoyer.charts import _kernels
+from andoyer.state import _kernels
 
 __all__ = ["NUMBA", "andoyer_to_hub", "euler_to_hub", "hub_to_andoyer", "hub_to_euler"]
 

@@ -15,15 +15,15 @@ from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 
 from andoyer import RigidBody, State
-from andoyer.charts import registry
-from andoyer.charts.andoyer import Andoyer, hub_to_andoyer
-from andoyer.charts.euler import hub_to_euler
-from andoyer.charts.registry import Chart, charts, charts_markdown, install
-from andoyer.charts.sadov import andoyer_to_sadov
-from andoyer.charts.sam import hub_to_sam
-from andoyer.charts.serret import andoyer_to_serret
 from andoyer.cli import chart_table
 from andoyer.free.motion import FreeMotion
+from andoyer.state import registry
+from andoyer.state.andoyer import Andoyer, hub_to_andoyer
+from andoyer.state.euler import hub_to_euler
+from andoyer.state.registry import Chart, charts, charts_markdown, install
+from andoyer.state.sadov import andoyer_to_sadov
+from andoyer.state.sam import hub_to_sam
+from andoyer.state.serret import andoyer_to_serret
 from conftest import rotation_distance
 
 DOCS = Path(__file__).resolve().parents[2] / "docs" / "charts.md"
