@@ -86,7 +86,7 @@ def test_state_methods_generated_from_registry(name):
     for method, function, prefix in pairs:
         assert method.__name__ == f"{prefix}_{name}"
         assert method.__qualname__ == f"State.{prefix}_{name}"
-        assert method.__module__ == "andoyer.state"
+        assert method.__module__ == State.__module__ == "andoyer.state.hub"
         assert method.__doc__ == function.__doc__
         assert "Examples\n" in method.__doc__
         assert ">>> " in method.__doc__
