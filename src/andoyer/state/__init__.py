@@ -15,10 +15,13 @@ chart is adding one module that registers itself.
 
 Examples
 --------
+>>> from pathlib import Path
 >>> from andoyer.state import State
+>>> Path(State.from_sadov.__code__.co_filename).name    # written in the Sadov chart's module
+'sadov.py'
 >>> from andoyer.state.registry import charts
->>> State.from_sadov.__module__, charts()["sadov"].source
-('andoyer.state.hub', 'andoyer.state.sadov')
+>>> list(charts())
+['state', 'euler', 'andoyer', 'initial_andoyer', 'sadov', 'serret', 'sam']
 """
 
 # isort: off
