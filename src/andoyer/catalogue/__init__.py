@@ -61,7 +61,9 @@ def _expand_sources(body: dict[str, Any], sources: dict[str, str]) -> dict[str, 
 
     out = {k: cite(v) if isinstance(v, dict) and k in FIELDS else v for k, v in body.items()}
     if "moment_sets" in body:
-        out["moment_sets"] = {s: {k: cite(v) for k, v in vals.items()} for s, vals in body["moment_sets"].items()}
+        out["moment_sets"] = {
+            s: {k: cite(v) for k, v in vals.items()} for s, vals in body["moment_sets"].items()
+        }
     return out
 
 

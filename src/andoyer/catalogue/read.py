@@ -75,7 +75,9 @@ def _quantity(key: str, raw: Any, origin: str, default_source: str, unit_of: str
         msg = f"expected {unit_of} {spec.describe_bounds()}, got {shown} {_where(key, origin)}"
         raise ValueError(msg)
     uncertainty = raw.get("uncertainty")
-    if uncertainty is not None and not (_number(uncertainty) and math.isfinite(uncertainty) and uncertainty >= 0):
+    if uncertainty is not None and not (
+        _number(uncertainty) and math.isfinite(uncertainty) and uncertainty >= 0
+    ):
         msg = f"expected a finite uncertainty >= 0 or none, got {uncertainty!r} {_where(key, origin)}"
         raise ValueError(msg)
     source = raw.get("source", default_source)
@@ -87,8 +89,13 @@ def _quantity(key: str, raw: Any, origin: str, default_source: str, unit_of: str
     if not source.strip():
         msg = f"expected a source, got an empty one {_where(key, origin)}"
         raise ValueError(msg)
-    return Quantity(value if isinstance(value, float) else float(value), unit,
-                    None if uncertainty is None else float(uncertainty), source, note)
+    return Quantity(
+        value if isinstance(value, float) else float(value),
+        unit,
+        None if uncertainty is None else float(uncertainty),
+        source,
+        note,
+    )
 
 
 def _check_moments(body: Body, origin: str) -> None:
@@ -103,11 +110,15 @@ def _check_moments(body: Body, origin: str) -> None:
             msg = f"expected 0 < A/C <= B/C <= 1, got A/C = {a!r}, B/C = {b!r} ({label} in {origin})"
             raise ValueError(msg)
         if a + b < 1:
-            msg = f"expected A + B >= C (triangle inequality), got A/C + B/C = {a + b!r} ({label} in {origin})"
+            msg = (
+                f"expected A + B >= C (triangle inequality), got A/C + B/C = {a + b!r} ({label} in {origin})"
+            )
             raise ValueError(msg)
 
 
-def body_from_dict(data: Mapping[str, Any], origin: str = "a mapping", default_source: str | None = None) -> Body:
+def body_from_dict(
+    data: Mapping[str, Any], origin: str = "a mapping", default_source: str | None = None
+) -> Body:
     """A checked :class:`~andoyer.catalogue.Body` from the keys ``andoyer bodies NAME --format json`` prints.
 
     Parameters
@@ -153,7 +164,9 @@ def body_from_dict(data: Mapping[str, Any], origin: str = "a mapping", default_s
         msg = f"expected a kind among {', '.join(KINDS)}, got {text['kind']!r} {_where('kind', origin)}"
         raise ValueError(msg)
     source = default_source or f"given in {origin}"
-    values = {k: _quantity(k, data[k], origin, source, k) for k in FIELDS if k in data and data[k] is not None}
+    values = {
+        k: _quantity(k, data[k], origin, source, k) for k in FIELDS if k in data and data[k] is not None
+    }
     sets: dict[str, dict[str, Quantity]] = {}
     raw_sets = data.get("moment_sets") or {}
     if not isinstance(raw_sets, Mapping):
@@ -166,7 +179,9 @@ def body_from_dict(data: Mapping[str, Any], origin: str = "a mapping", default_s
             raise ValueError(msg)
         bad = sorted(set(raw) - set(MOMENT_SET_FIELDS))
         if bad:
-            msg = f"expected keys among {', '.join(MOMENT_SET_FIELDS)}, got {bad[0]!r} {_where(where, origin)}"
+            msg = (
+                f"expected keys among {', '.join(MOMENT_SET_FIELDS)}, got {bad[0]!r} {_where(where, origin)}"
+            )
             raise ValueError(msg)
         sets[str(set_name)] = {k: _quantity(f"{where}.{k}", raw[k], origin, source, k) for k in raw}
     body = Body(name=name.strip(), **text, **values, moment_sets=sets)

@@ -88,7 +88,7 @@ class Field:
 INF = math.inf
 
 
-def _f(name, dim, unit, low, high, low_open, high_open, group, description) -> Field:  # noqa: ANN001
+def _f(name, dim, unit, low, high, low_open, high_open, group, description) -> Field:
     if UNITS[unit][0] != dim:  # a wrong table is a programming error, caught at import
         raise AssertionError(name)
     return Field(name, dim, unit, low, high, low_open, high_open, group, description)
@@ -103,20 +103,52 @@ _TABLE = (
     _f("dynamical_ellipticity", "1", "1", 0, 0.5, False, True, "physical", "H = (C - (A+B)/2)/C"),
     _f("a_over_c", "1", "1", 0, 1, True, False, "physical", "A/C, smallest principal moment over C"),
     _f("b_over_c", "1", "1", 0, 1, True, False, "physical", "B/C, middle principal moment over C"),
-    _f("j0", "angle", "arcsec", 0, 180 * 3600, False, False, "spin", "angle J between momentum and figure axis"),
+    _f(
+        "j0",
+        "angle",
+        "arcsec",
+        0,
+        180 * 3600,
+        False,
+        False,
+        "spin",
+        "angle J between momentum and figure axis",
+    ),
     _f("rotation_period", "time", "d", 0, INF, True, True, "spin", "sidereal rotation period"),
-    _f("rotation_rate", "angular rate", "deg/d", -INF, INF, True, True, "spin", "IAU W-dot (negative: retrograde)"),
+    _f(
+        "rotation_rate",
+        "angular rate",
+        "deg/d",
+        -INF,
+        INF,
+        True,
+        True,
+        "spin",
+        "IAU W-dot (negative: retrograde)",
+    ),
     _f("prime_meridian", "angle", "deg", -INF, INF, True, True, "spin", "IAU W0 at J2000"),
     _f("pole_ra", "angle", "deg", -INF, INF, True, True, "spin", "IAU pole right ascension alpha0, ICRF"),
     _f("pole_ra_rate", "angular rate", "deg/cy", -INF, INF, True, True, "spin", "IAU alpha0 rate"),
     _f("pole_dec", "angle", "deg", -90, 90, False, False, "spin", "IAU pole declination delta0, ICRF"),
     _f("pole_dec_rate", "angular rate", "deg/cy", -INF, INF, True, True, "spin", "IAU delta0 rate"),
     _f("obliquity", "angle", "deg", 0, 180, False, False, "spin", "obliquity: spin axis to orbit normal"),
-    _f("precession_rate", "angular rate", "arcsec/yr", -INF, INF, True, True, "spin", "measured precession rate of the spin axis"),
+    _f(
+        "precession_rate",
+        "angular rate",
+        "arcsec/yr",
+        -INF,
+        INF,
+        True,
+        True,
+        "spin",
+        "measured precession rate of the spin axis",
+    ),
     _f("resonance", "1", "1", 0, INF, True, True, "spin", "spin-orbit ratio p = omega/n (1 synchronous)"),
     _f("semi_major_axis", "length", "km", 0, INF, True, True, "orbit", "semi-major axis"),
     _f("eccentricity", "1", "1", 0, 1, False, True, "orbit", "eccentricity"),
-    _f("inclination", "angle", "deg", 0, 180, False, False, "orbit", "inclination to the orbit_frame's plane"),
+    _f(
+        "inclination", "angle", "deg", 0, 180, False, False, "orbit", "inclination to the orbit_frame's plane"
+    ),
     _f("node", "angle", "deg", -INF, INF, True, True, "orbit", "longitude of the ascending node"),
     _f("periapsis_longitude", "angle", "deg", -INF, INF, True, True, "orbit", "longitude of periapsis"),
     _f("argument_of_periapsis", "angle", "deg", -INF, INF, True, True, "orbit", "argument of periapsis"),
@@ -125,9 +157,39 @@ _TABLE = (
     _f("orbital_period", "time", "d", 0, INF, True, True, "orbit", "sidereal orbital period"),
     _f("node_period", "time", "yr", 0, INF, True, True, "orbit", "period of the node's regression"),
     _f("apsis_period", "time", "yr", 0, INF, True, True, "orbit", "period of the apsis's advance"),
-    _f("laplace_pole_ra", "angle", "deg", -INF, INF, True, True, "orbit", "right ascension of the Laplace-plane pole, ICRF"),
-    _f("laplace_pole_dec", "angle", "deg", -90, 90, False, False, "orbit", "declination of the Laplace-plane pole, ICRF"),
-    _f("laplace_tilt", "angle", "deg", 0, 180, False, False, "orbit", "angle between the primary's equator and the Laplace plane"),
+    _f(
+        "laplace_pole_ra",
+        "angle",
+        "deg",
+        -INF,
+        INF,
+        True,
+        True,
+        "orbit",
+        "right ascension of the Laplace-plane pole, ICRF",
+    ),
+    _f(
+        "laplace_pole_dec",
+        "angle",
+        "deg",
+        -90,
+        90,
+        False,
+        False,
+        "orbit",
+        "declination of the Laplace-plane pole, ICRF",
+    ),
+    _f(
+        "laplace_tilt",
+        "angle",
+        "deg",
+        0,
+        180,
+        False,
+        False,
+        "orbit",
+        "angle between the primary's equator and the Laplace plane",
+    ),
 )
 
 #: Every numeric key, in the order the catalogue prints them.
