@@ -29,7 +29,7 @@ from dataclasses import dataclass
 from andoyer import catalogue
 from andoyer.body import RigidBody
 
-__all__ = ["LARA_SET", "BodyInfo", "get", "info", "names"]
+__all__ = ["BodyInfo", "get", "info", "names"]
 
 #: The catalogue's name of Lara's (2013) Table 1 moment set.
 LARA_SET = "lara2013"
