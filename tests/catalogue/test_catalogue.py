@@ -18,7 +18,27 @@ from andoyer.catalogue.schema import FIELDS, MOMENT_SET_FIELDS
 from andoyer.cli import main
 
 #: The bodies issue 23 asks for.
-REQUIRED = ["sun", "mercury", "venus", "earth", "mars", "jupiter", "saturn", "uranus", "neptune", "pluto", "moon", "io", "europa", "ganymede", "callisto", "titan", "enceladus", "triton", "eros"]
+REQUIRED = [
+    "sun",
+    "mercury",
+    "venus",
+    "earth",
+    "mars",
+    "jupiter",
+    "saturn",
+    "uranus",
+    "neptune",
+    "pluto",
+    "moon",
+    "io",
+    "europa",
+    "ganymede",
+    "callisto",
+    "titan",
+    "enceladus",
+    "triton",
+    "eros",
+]
 
 
 def _quantities(body):
