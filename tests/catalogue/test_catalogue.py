@@ -9,6 +9,7 @@ import math
 from pathlib import Path
 
 import pytest
+from catalogue_docs_table import rows as docs_rows
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -453,3 +454,13 @@ def test_catalogue_cli_bad_body_file_names_the_key(tmp_path, capsys):
     err = capsys.readouterr().err
     assert "expected eccentricity in [0, 1), got 1.5 (key 'eccentricity' in" in err
     assert str(path) in err
+
+
+# -- the documentation page ----------------------------------------------------------------------
+
+
+def test_catalogue_docs_page_holds_the_table_and_every_key():
+    page = (Path(__file__).resolve().parents[2] / "docs" / "catalogue.md").read_text(encoding="utf-8")
+    missing = [row for row in docs_rows() if row not in page.splitlines()]
+    assert missing == [], "regenerate the table: python3 tests/catalogue/catalogue_docs_table.py"
+    assert all(f"| `{key}` |" in page for key in FIELDS)
