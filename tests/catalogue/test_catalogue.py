@@ -194,6 +194,7 @@ def test_catalogue_synchronous_satellites_rotate_at_their_orbital_period(name):
     [
         # planets: Standish's a (J2000 mean) with DE440's GM; Mercury's mean motion is unperturbed to 1e-5
         ("mercury", 2e-5),
+        ("earth", 1e-5),  # the IERS sidereal year; Standish's a is the Earth-Moon barycentre's
         # satellites: JPL mean a, the planet system's GM; the planet's J2 speeds the mean motion by
         # ~(3/2) J2 (R/a)² (Io: 6e-4) and the rounded a (4 digits) adds up to 1.5e-4
         ("io", 1.5e-3),
@@ -464,3 +465,9 @@ def test_catalogue_docs_page_holds_the_table_and_every_key():
     missing = [row for row in docs_rows() if row not in page.splitlines()]
     assert missing == [], "regenerate the table: python3 tests/catalogue/catalogue_docs_table.py"
     assert all(f"| `{key}` |" in page for key in FIELDS)
+
+
+def test_catalogue_docs_page_lists_every_source():
+    raw = json.loads((Path(catalogue.__file__).parent / "data" / "bodies.json").read_text(encoding="utf-8"))
+    page = (Path(__file__).resolve().parents[2] / "docs" / "catalogue.md").read_text(encoding="utf-8")
+    assert all(f"- **{key}** — {text}" in page for key, text in raw["sources"].items())

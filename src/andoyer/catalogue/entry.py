@@ -148,6 +148,7 @@ class Body:
     orbital_period: Q = None
     node_period: Q = None
     apsis_period: Q = None
+    laplace_inclination: Q = None
     laplace_pole_ra: Q = None
     laplace_pole_dec: Q = None
     laplace_tilt: Q = None

@@ -158,6 +158,17 @@ _TABLE = (
     _f("node_period", "time", "yr", 0, INF, True, True, "orbit", "period of the node's regression"),
     _f("apsis_period", "time", "yr", 0, INF, True, True, "orbit", "period of the apsis's advance"),
     _f(
+        "laplace_inclination",
+        "angle",
+        "deg",
+        0,
+        180,
+        False,
+        False,
+        "orbit",
+        "inclination to the Laplace plane (when orbit_frame is another plane)",
+    ),
+    _f(
         "laplace_pole_ra",
         "angle",
         "deg",
