@@ -25,6 +25,7 @@ Examples
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cache
 
 from andoyer import catalogue
 from andoyer.body import RigidBody
@@ -78,6 +79,12 @@ def info(name: str) -> BodyInfo:
             f".rigid_body() for the other catalogued bodies), got {name!r}"
         )
         raise ValueError(msg)
+    return _info(key)
+
+
+@cache
+def _info(key: str) -> BodyInfo:
+    """The entry of ``key``, built once: every call gives the same body object."""
     entry = catalogue.get(key)
     values = entry.moment_sets[LARA_SET]
     a, b = entry.moments(LARA_SET)
