@@ -32,6 +32,7 @@ _moved.install()
 if TYPE_CHECKING:  # the eager names, for type checkers and IDEs
     from andoyer import (
         bodies,
+        catalogue,
         free,
         integrate,
         liepoisson,
@@ -64,6 +65,7 @@ _LAZY = {
         name: f"andoyer.{name}"
         for name in (
             "bodies",
+            "catalogue",
             "free",
             "integrate",
             "liepoisson",
@@ -87,6 +89,7 @@ __all__ = [
     "State",
     "Symmetry",
     "bodies",
+    "catalogue",
     "free",
     "integrate",
     "liepoisson",
