@@ -29,6 +29,8 @@ FORMATS = ("png", "svg")
 DEFAULT_STATE = (0.5, 0.0, 0.0, 0.9, 1.0, 0.9)
 #: Largest side of a PNG in pixels (matplotlib's Agg renderer refuses 2^16 and more).
 MAX_PIXELS = 2**16
+#: Smallest side of a PNG in pixels: Agg writes no image below 1.5 (rounded to one), 2 keeps clear.
+MIN_PIXELS = 2
 
 
 def register(commands: argparse._SubParsersAction) -> None:
@@ -177,10 +179,14 @@ def run(args: argparse.Namespace) -> int:
         msg = f"expected a finite --dpi > 0, got {args.dpi!r}"
         raise CliError(msg)
     figure = _figure(args)
-    pixels = max(figure.get_size_inches()) * args.dpi
-    if fmt == "png" and pixels >= MAX_PIXELS:
-        limit = MAX_PIXELS / max(figure.get_size_inches())
+    sides = figure.get_size_inches()
+    if fmt == "png" and max(sides) * args.dpi >= MAX_PIXELS:
+        limit = MAX_PIXELS / max(sides)
         msg = f"expected --dpi below {limit:.0f} for this picture, got {args.dpi!r}"
+        raise CliError(msg)
+    if fmt == "png" and min(sides) * args.dpi < MIN_PIXELS:
+        limit = MIN_PIXELS / min(sides)
+        msg = f"expected --dpi of at least {limit:.3g} (sides of {MIN_PIXELS} px), got {args.dpi!r}"
         raise CliError(msg)
     with atomic_output(path, binary=True) as stream:
         figure.savefig(stream, format=fmt, dpi=args.dpi)
