@@ -80,11 +80,15 @@ def _plot_format(path: str) -> str:
 
 def run(args: argparse.Namespace) -> int:
     """Compute the nutation and write it (and the terms, and the picture)."""
+    from andoyer.perturbations.lunar_theory import check_span
     from andoyer.planetary import nutation
     from andoyer.planetary.precession import check_dynamical_ellipticity
 
     H = check_dynamical_ellipticity(args.dynamical_ellipticity)
     t0, t1 = args.span
+    check_span(t0, t1, "--span T0 T1")
+    end = max(t1, t0 + nutation.minimum_span() * 1.001)  # the integration covers one 18.6-year node
+    check_span(t0, end, f"--span T0 T1 and the integration's {end - t0:.4g} years from T0")
     t = _times(t0, t1, args.step)
     fmt_plot = None if args.plot is None else _plot_format(args.plot)
     table = nutation.terms_table((t0, t1), H, args.axis) if args.terms else None
