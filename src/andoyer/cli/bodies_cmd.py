@@ -14,7 +14,7 @@ HEADER = ("name", "I1", "I2", "I3", "alpha", "beta", "kappa", "rotation_period_s
 def register(commands: argparse._SubParsersAction) -> None:
     """Add the sub-command to the parser."""
     parser = commands.add_parser("bodies")
-    parser.add_argument("--format", choices=("table", "csv", "json"), default="table")
+    parser.add_argument("--format", choices=("table", "csv", "json"), default="table", help="default table")
     parser.set_defaults(run=run)
 
 

@@ -37,7 +37,9 @@ def register(commands: argparse._SubParsersAction) -> None:
         epilog=EXAMPLES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    parser.add_argument("body", type=str.lower, choices=tuple(DEFAULT_ORBIT), metavar="BODY")
+    parser.add_argument(
+        "body", type=str.lower, choices=tuple(DEFAULT_ORBIT), metavar="BODY", help="earth or mars"
+    )
     parser.add_argument(
         "--orbit", metavar="SOURCE", help="vondrak|nbody|secular|PATH (default: earth vondrak, mars nbody)"
     )
@@ -77,7 +79,7 @@ def register(commands: argparse._SubParsersAction) -> None:
         default=0.0,
         help="modern tidal rates times TD, Earth only (default 0: none; 0 <= TD <= 1.2)",
     )
-    parser.add_argument("--format", choices=("json", "csv", "table"), default="table")
+    parser.add_argument("--format", choices=("json", "csv", "table"), default="table", help="default table")
     add_output_argument(parser)
     add_output_argument(parser, "--plot", "PNG of obliquity and climatic precession")
     parser.set_defaults(run=run)

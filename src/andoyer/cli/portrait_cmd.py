@@ -69,14 +69,24 @@ def register(commands: argparse._SubParsersAction) -> None:
             sub.add_argument("--ratio-min", type=float, default=0.88, help="lower edge in N/M (default 0.88)")
         if kind in ("polhode", "precession"):
             sub.add_argument(
-                "--values", nargs=6, type=float, metavar=("l", "g", "h", "L", "G", "H"), default=DEFAULT_STATE
+                "--values",
+                nargs=6,
+                type=float,
+                metavar=("l", "g", "h", "L", "G", "H"),
+                default=DEFAULT_STATE,
+                help="the state in Andoyer variables (default 0.5 0 0 0.9 1 0.9)",
             )
             sub.add_argument(
                 "--duration", type=float, help="time span (default: one period of m, five for precession)"
             )
         if kind == "precession":
             sub.add_argument("--steps", type=int, default=2001, help="number of output times (default 2001)")
-            sub.add_argument("--axis", choices=("figure", "momentum"), default="figure")
+            sub.add_argument(
+                "--axis",
+                choices=("figure", "momentum"),
+                default="figure",
+                help="the axis drawn (default figure)",
+            )
             sub.add_argument("--degrees", action="store_true", help="angles in degrees")
         sub.set_defaults(run=run)
     _register_cassini(kinds)
