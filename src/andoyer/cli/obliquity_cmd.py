@@ -18,8 +18,11 @@ T0, T1 and DT are Julian years from J2000 (negative = past); output at T0, T0+DT
 --precession-rate P is the rate of the luni-solar precession psi_A at J2000 in arcsec per Julian
 year (default: Earth 50.38481507, IAU 2006; Mars 7.597); --dynamical-ellipticity H sets
 (C - (A+B)/2)/C instead. --tidal-dissipation TD scales the modern tidal rates of the Earth-Moon
-system (Zeebe & Lourens 2022; 0 = none). Orbit sources: vondrak (the Earth's ecliptic of
-Vondrak et al. 2011, +-200 kyr, no eccentricity), nbody, secular, or a table file PATH.
+system (Zeebe & Lourens 2022; 0 = none). Ranges (andoyer.planetary.parameters): 0 < H < 1/2
+(A + B >= C), P > 0 up to the rate of H = 1/2, 0 <= TD <= 1.2. DT must be below half the period
+of the fastest angle printed (the precession, or the perihelion from the equinox), else the
+table would alias it: such a request is refused. Orbit sources: vondrak (the Earth's ecliptic of
+Vondrak et al. 2011, +-200 kyr, no eccentricity), nbody (+-50 Myr), secular, or a table file PATH.
 JSON keys: t (years), obliquity (deg), precession (deg, p_A accumulated since J2000), axis (N x 3),
 orbit_normal (N x 3, J2000 ecliptic frame), eccentricity and climatic_precession (e sin varpi,
 varpi heliocentric from the moving equinox; null without eccentricity), precession_rate (arcsec/yr).
