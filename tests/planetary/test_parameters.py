@@ -68,7 +68,7 @@ def test_parameters_angles_in_degrees_use_the_same_bounds():
 
 def test_precession_rate_bound_is_the_rate_of_half_ellipticity():
     """P_max/P = (1/2)/H: against the IERS H and the IAU rate, which the model matches to 5e-4."""
-    with pytest.raises(ValueError, match=r"expected a precession rate P < ([0-9.]+) arcsec/yr for earth") as info:
+    with pytest.raises(ValueError, match=r"expected a precession rate P < [0-9.]+ arcsec/yr") as info:
         SpinAxisModel.from_precession_rate("earth", 1e10, EPS0)
     top = float(str(info.value).split("P < ")[1].split()[0])
     assert top == pytest.approx(PSI_A_RATE * 0.5 / H_IERS, rel=1e-3)
@@ -88,10 +88,10 @@ def test_precession_rate_bound_is_the_rate_of_half_ellipticity():
     ],
 )
 def test_obliquity_and_api_refuse_a_parameter_with_the_same_words(kwargs, flag, value, name, capsys):
-    with pytest.raises(ValueError) as info:
+    with pytest.raises(ValueError, match=r"^expected") as info:
         spin_axis_history(VondrakEcliptic(), "earth", [0.0, 100.0], **kwargs)
     words = str(info.value)
-    with pytest.raises(ValueError, match=None) as direct:
+    with pytest.raises(ValueError, match=r"^expected") as direct:
         check(name, float(value))
     assert words == str(direct.value)
     code = _code(["obliquity", "earth", "--span", "0", "100", "--step", "100", flag, value])
@@ -109,7 +109,7 @@ def test_precession_nutation_and_obliquity_answer_one_ellipticity_alike(capsys):
     ):
         assert _code(argv) == 2
         answers.add(capsys.readouterr().err.split(": error: ", 1)[1])
-    with pytest.raises(ValueError) as info:
+    with pytest.raises(ValueError, match=r"^expected a dynamical ellipticity") as info:
         precession_rates("earth", dynamical_ellipticity=0.9)
     assert answers == {f"argument --dynamical-ellipticity: {info.value}\n"}
 
@@ -122,7 +122,7 @@ def test_cassini_command_and_api_share_the_ranges(capsys):
         ("j2", -1e-4, "--j2", "-1e-4"),
         ("c22", -1e-5, "--c22", "-1e-5"),
     ):
-        with pytest.raises(ValueError, match="^expected an? ") as info:
+        with pytest.raises(ValueError, match=r"^expected an? ") as info:
             moon.replace(**{field: value})
         assert _code(["cassini", "moon", flag, text]) == 2
         err = capsys.readouterr().err
@@ -136,7 +136,7 @@ def test_ellipticity_drift_must_keep_the_ellipticity_in_range():
     drift = 1e-6  # per year: H vanishes 1e6 years ago
     h = spin_axis_history(VondrakEcliptic(), "earth", [-1000.0, 0.0], ellipticity_drift=drift)
     assert h.model.ellipticity_drift == drift
-    with pytest.raises(ValueError, match="expected an ellipticity drift that keeps 0 < H < 0.5"):
+    with pytest.raises(ValueError, match=r"expected an ellipticity drift that keeps 0 < H < 0\.5"):
         SpinAxisModel.from_precession_rate("earth", PSI_A_RATE, EPS0, ellipticity_drift=drift).check_span(
             -1.0e6, 0.0
         )
@@ -145,9 +145,9 @@ def test_ellipticity_drift_must_keep_the_ellipticity_in_range():
 
 
 def test_model_eccentricity_and_obliquity_ranges():
-    with pytest.raises(ValueError, match="expected an eccentricity 0 <= e < 1"):
+    with pytest.raises(ValueError, match=r"expected an eccentricity 0 <= e < 1 "):
         SpinAxisModel.from_precession_rate("mars", 7.597, 0.44, eccentricity=1.5)
-    with pytest.raises(ValueError, match="expected an obliquity at J2000 0 <= eps0 < 1.570796327 rad"):
+    with pytest.raises(ValueError, match=r"expected an obliquity at J2000 0 <= eps0 < 1\.570796327 rad"):
         SpinAxisModel.from_precession_rate("mars", 7.597, np.pi / 2)
 
 

@@ -91,6 +91,7 @@ def test_obliquity_refuses_outputs_that_alias_the_precession(argv, refused, tmp_
 
 
 def test_obliquity_refuses_a_precession_rate_no_body_can_have(capsys):
-    code = main(["obliquity", "earth", "--precession-rate", "1e10", "--span", "-1000", "1000", "--step", "500"])
+    argv = ["obliquity", "earth", "--precession-rate", "1e10", "--span", "-1000", "1000", "--step", "500"]
+    code = main(argv)
     assert code == 2
     assert "expected a precession rate P < 7" in capsys.readouterr().err
