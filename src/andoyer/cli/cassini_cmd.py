@@ -83,8 +83,8 @@ def register(commands: argparse._SubParsersAction) -> None:
     parser = commands.add_parser(
         "cassini",
         description="The Cassini states of the Moon or of Mercury, from their numbers or from the "
-        "J2, C22, C/MR^2, node period and inclination given here (the API, andoyer.planetary.cassini."
-        "CassiniBody, takes any body).",
+        "J2, C22, C/MR^2, node period and inclination given here (other bodies: andoyer.planetary."
+        "cassini.CassiniBody in Python).",
         epilog=EXAMPLES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
