@@ -93,4 +93,6 @@ def physical(name: str, degrees: bool = False) -> Callable[[str], float]:
             raise argparse.ArgumentTypeError(str(exc)) from None
 
     convert.__name__ = name  # argparse names the type in some of its messages
+    convert.parameter = parameter  # type: ignore[attr-defined]  # for the tests' bad-input table
+    convert.degrees = degrees  # type: ignore[attr-defined]
     return convert
