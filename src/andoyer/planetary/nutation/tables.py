@@ -103,7 +103,7 @@ def numeric_terms(
     key = _axis(axis)
     eps0 = float(obliquity)
     t0, t1 = (float(v) for v in span)
-    check_span(t0, t1, "a span")  # the user's span, before its middle is used as an epoch
+    check_span(t0, t1)  # the user's span, before its middle is used as an epoch
     chosen = list(PRINCIPAL_TERMS.values()) if multipliers is None else multipliers
     wanted = np.atleast_2d(np.asarray(chosen, dtype=float))
     need = minimum_span(wanted, 0.5 * (t0 + t1))
