@@ -94,14 +94,13 @@ def _resolve(path: str | os.PathLike[str]) -> tuple[Path, int | None]:
 
 def _refusal(exc: OSError, path: str | os.PathLike[str], folder: Path) -> str:
     """What a file system's refusal to create a file in ``folder`` means, as a message's end."""
+    where = repr(str(folder))
     if exc.errno in (errno.EACCES, errno.EPERM):
-        why = f"the folder {str(folder)!r} is not writable"
+        why = f"{exc.strerror}: no permission to write in the folder {where}"
     elif exc.errno == errno.EROFS:
-        why = f"the folder {str(folder)!r} is on a read-only file system"
-    elif exc.errno == errno.ENOSPC:
-        why = f"no space left in {str(folder)!r}"
+        why = f"{exc.strerror}: the folder {where} cannot be written"
     elif exc.errno in (errno.ENOENT, errno.EOPNOTSUPP, errno.EINVAL) and folder.is_dir():
-        why = f"the folder {str(folder)!r} takes no new files: a special file system, like /proc or /sys"
+        why = f"the folder {where} takes no new files: a special file system, like /proc or /sys"
     else:
         why = exc.strerror or str(exc)
     return f"expected a writable place for the output, got {os.fspath(path)!r} ({why})"

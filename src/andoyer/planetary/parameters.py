@@ -104,14 +104,21 @@ class Parameter:
         """The range as the messages write it, e.g. ``0 < H < 0.5`` (angles in degrees if asked)."""
         scale = 180.0 / math.pi if degrees and self.unit == "rad" else 1.0
         unit = "deg" if scale != 1.0 else self.unit
-        parts = []
-        if math.isfinite(self.low):
-            parts.append(f"{_number(self.low * scale)} {'<=' if self.low_closed else '<'}")
-        parts.append(self.symbol)
-        if math.isfinite(self.high):
-            parts.append(f"{'<=' if self.high_closed else '<'} {_number(self.high * scale)}")
-        if len(parts) == 1:
-            parts.append("finite")
+        low, high = math.isfinite(self.low), math.isfinite(self.high)
+        if low and not high:  # one bound: "J2 > 0" reads better than "0 < J2"
+            parts = [self.symbol, ">=" if self.low_closed else ">", _number(self.low * scale)]
+        elif high and not low:
+            parts = [self.symbol, "<=" if self.high_closed else "<", _number(self.high * scale)]
+        elif not low:
+            parts = [self.symbol, "finite"]
+        else:
+            parts = [
+                _number(self.low * scale),
+                "<=" if self.low_closed else "<",
+                self.symbol,
+                "<=" if self.high_closed else "<",
+                _number(self.high * scale),
+            ]
         return " ".join(parts) + (f" {unit}" if unit else "")
 
     def contains(self, value: float, degrees: bool = False) -> bool:
@@ -188,9 +195,13 @@ PARAMETERS: dict[str, Parameter] = {
         "polar moment of inertia", "C/MR^2", 0.0, 1.0, False, True, "",
         "C = integral of (x^2 + y^2) dm <= M R^2 for a body within the radius R (1: a ring)",
     ),
-    "j2": Parameter("J2", "J2", 0.0, math.inf, False, False, "", "C > (A+B)/2: an oblate body"),
+    "j2": Parameter(
+        "second-degree zonal coefficient", "J2", 0.0, math.inf, False, False, "",
+        "C > (A+B)/2: an oblate body",
+    ),
     "c22": Parameter(
-        "C22", "C22", 0.0, math.inf, True, False, "", "B >= A; C22 <= J2/2 is checked with J2"
+        "second-degree sectoral coefficient", "C22", 0.0, math.inf, True, False, "",
+        "B >= A; C22 <= J2/2 is checked with J2",
     ),
     "node_period": Parameter(
         "node period", "T_node", 0.0, math.inf, False, False, "yr", "the period of a regressing node"

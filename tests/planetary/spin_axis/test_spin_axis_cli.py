@@ -68,7 +68,7 @@ def test_obliquity_writes_output_and_plot(tmp_path):
         (["earth", "--step", "0"], "expected --step DT > 0 years, got 0.0"),
         (["earth", "--step", "-5"], "expected --step DT > 0 years"),
         (["earth", "--span", "10", "-10"], "expected --span T0 T1 with T1 >= T0"),
-        (["earth", "--span", "0", "300000"], "expected times within the vondrak orbit's span"),
+        (["earth", "--span", "0", "300000"], "expected --span T0 T1 within the vondrak orbit's span"),
         (["earth", "--precession-rate", "-1"], "expected a precession rate P > 0 arcsec/yr"),
         (["earth", "--precession-rate", "50", "--dynamical-ellipticity", "0.003"], "not allowed with"),
         (["mars", "--orbit", "vondrak"], "vondrak"),
