@@ -156,7 +156,8 @@ def test_output_in_a_folder_without_write_permission_says_so(tmp_path, capsys):
     code, err = run([*OBLIQUITY, "--output", str(folder / "x.csv")], capsys)
     assert code == 2
     assert "expected a writable place for the output" in err
-    assert any(why in err for why in ("no permission to write in", "cannot be written", "special file system"))
+    reasons = ("no permission to write in", "cannot be written", "special file system")
+    assert any(why in err for why in reasons)
 
 
 @pytest.mark.parametrize("dpi", ["1e-3", "0.2"])
