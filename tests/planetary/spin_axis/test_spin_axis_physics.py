@@ -188,7 +188,7 @@ def test_climatic_precession_at_j2000_convention():
 def test_model_rejects_bad_parameters_with_expected_messages():
     with pytest.raises(ValueError, match="expected a body in earth, mars, got 'venus'"):
         SpinAxisModel.from_precession_rate("venus", 1.0, 0.4)
-    with pytest.raises(ValueError, match="expected a positive precession rate"):
+    with pytest.raises(ValueError, match="expected a precession rate P > 0 arcsec/yr"):
         SpinAxisModel.from_precession_rate("earth", -1.0, 0.4)
     with pytest.raises(ValueError, match="expected tidal dissipation 0 for a planet without a moon"):
         SpinAxisModel.from_dynamical_ellipticity("mars", 0.005, tidal_dissipation=1.0)
