@@ -7,10 +7,11 @@ import numpy as np
 import pytest
 
 from andoyer import RigidBody, bodies
+from andoyer.compositions import COMPOSITIONS
 from andoyer.integrate.secular import propagate_momentum
-from andoyer.integrate.secular_steps import COMPOSITIONS, propagate_controlled, propagate_rotations
+from andoyer.integrate.secular.rotations import propagate_controlled, propagate_rotations
 from andoyer.perturbations import KeplerOrbit, PointMass
-from andoyer.perturbations.secular import SecularGravityGradient
+from andoyer.perturbations.averaged_gravity import SecularGravityGradient
 from andoyer.perturbations.solar_system import JULIAN_YEAR, OBLIQUITY, mean_perturbers
 
 ARCSEC = np.pi / 648000
@@ -158,7 +159,7 @@ def test_secular_fast_interpreted_loop_agrees_with_compiled():
 )
 def test_secular_fast_richardson_pair_equals_two_runs(order, times):
     """The coarse and fine runs overlapped in one compiled loop: bit for bit the two separate runs."""
-    from andoyer.integrate.secular_steps import _run_pair
+    from andoyer.integrate.secular.rotations import _run_pair
 
     model = strong_model()
     M0, c0, k0, coef, normals = strong_arguments(model)
