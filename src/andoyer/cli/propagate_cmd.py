@@ -18,7 +18,7 @@ from andoyer.cli.chart_table import (
 from andoyer.cli.named_models import MODELS, add_model_arguments, model_from_args
 from andoyer.cli.output import CliError, add_output_argument, atomic_output, format_rows
 from andoyer.free import FreeRotation
-from andoyer.propagation import propagate
+from andoyer.integrate.propagation import propagate
 
 EXAMPLES = """examples:
   andoyer propagate --body eros --from andoyer --values 0.1 0.2 0.3 0.99 1.0 0.5 --times 0 10 100

@@ -16,7 +16,7 @@ Andoyer pair ``(h, H/G)`` of a frame with ``k`` as the reference axis: ``s·k = 
 and the last term is the precessing frame's ``ΔH = −μ·M`` (Gurfil et al. eq. 126) with
 ``μ = g K`` (:class:`~andoyer.perturbations.PrecessingFrame`). The sign convention is the
 project's: ``dM/dt = ∇H × M`` for reference-frame momenta
-(:class:`~andoyer.perturbations.secular.SecularGravityGradient`).
+(:class:`~andoyer.perturbations.averaged_gravity.SecularGravityGradient`).
 
 **The constants.** The orbit-averaged MacCullagh energy of a body rotating about ``C``,
 ``U = (3μ_p/2r³) r̂·I r̂``, with ``C − A = MR²(J2 + 2C22)``, ``B − A = 4MR²C22``,

@@ -16,7 +16,7 @@ reported in arcseconds per Julian year (the observed luni-solar precession
 of the Earth is 50.38″/yr; Mars' 7.58″/yr). Two computations:
 
 * **secular**: the averaged model (``method="secular"`` of
-  :func:`andoyer.propagation.propagate`) over ``secular_years``;
+  :func:`andoyer.integrate.propagation.propagate`) over ``secular_years``;
 * **integrated**: the full torque (``method="splitting"``) over ``integrate``
   years, resolving the orbital motion of the perturbers and the daily
   rotation exactly in the free flow.
@@ -72,12 +72,12 @@ from andoyer import bodies
 from andoyer._limits import check_size
 from andoyer.body import RigidBody
 from andoyer.integrate.output import OUTPUT_BYTES
+from andoyer.integrate.propagation import propagate
 from andoyer.integrate.splitting import splitting_coefficients
 from andoyer.perturbations.gravity import GravityGradient, PointMass
 from andoyer.perturbations.model import Model
 from andoyer.perturbations.solar_system import JULIAN_YEAR, OBLIQUITY, mean_perturbers
 from andoyer.planetary.parameters import check
-from andoyer.propagation import propagate
 from andoyer.state import State
 
 __all__ = [

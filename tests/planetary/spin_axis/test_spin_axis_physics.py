@@ -9,7 +9,7 @@ from scipy.integrate import solve_ivp
 from spin_cases import FixedOrbit, PrecessingOrbit, angle
 
 from andoyer import bodies
-from andoyer.perturbations.secular import SecularGravityGradient
+from andoyer.perturbations.averaged_gravity import SecularGravityGradient
 from andoyer.perturbations.solar_system import JULIAN_YEAR, mean_perturbers
 from andoyer.planetary.orbits import VondrakEcliptic
 from andoyer.planetary.spin_axis import (

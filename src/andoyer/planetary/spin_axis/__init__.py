@@ -3,7 +3,7 @@ r"""Secular spin-axis dynamics under a moving orbit: obliquity, precession, inso
 The averaged torque of the Sun (and, for the Earth, the Moon) on an oblate planet turns its
 unit spin axis ``s`` about the orbit normal of date ``n(t)`` of any
 :class:`~andoyer.planetary.orbits.OrbitHistory` (:mod:`andoyer.planetary.spin_axis.model` derives it from
-:class:`~andoyer.perturbations.secular.SecularGravityGradient`):
+:class:`~andoyer.perturbations.averaged_gravity.SecularGravityGradient`):
 
 .. math:: \dot{\mathbf s} = \alpha(t)\,(\mathbf s\cdot\mathbf n)\,(\mathbf s\times\mathbf n),
    \qquad \alpha(t) = \alpha_\odot\big[(1 - e(t)^2)^{-3/2} + \beta\big],

@@ -1,6 +1,6 @@
 r"""The averaged torque on a planet's spin axis: strengths, precession rate, tides.
 
-**Derivation.** :class:`~andoyer.perturbations.secular.SecularGravityGradient` averages the
+**Derivation.** :class:`~andoyer.perturbations.averaged_gravity.SecularGravityGradient` averages the
 gravity-gradient disturbance of a perturber ``p`` (gravitational parameter ``μ_p``, orbit
 ``a_p, e_p``, normal ``k_p``) over the body's rotation and the perturber's mean anomaly:
 ``⟨ΔH⟩ = κ_p (m̂·k_p)²`` with ``κ_p = −3μ_p (C − (A+B)/2)(3cos²J − 1)/(8 a_p³(1−e_p²)^{3/2})``
