@@ -46,7 +46,7 @@ if TYPE_CHECKING:  # the eager names, for type checkers and IDEs
     from andoyer._limits import PhasePrecisionWarning
     from andoyer.body import NonPhysicalInertiaWarning, RigidBody, Symmetry
     from andoyer.free_rotation import FreeRotation
-    from andoyer.propagation import propagate
+    from andoyer.integrate.propagation import propagate
     from andoyer.regime import Regime
     from andoyer.state import SingularChartWarning, State
 
@@ -60,7 +60,7 @@ _LAZY = {
     "SingularChartWarning": "andoyer.state",
     "State": "andoyer.state",
     "Symmetry": "andoyer.body",
-    "propagate": "andoyer.propagation",
+    "propagate": "andoyer.integrate.propagation",
     **{
         name: f"andoyer.{name}"
         for name in (
