@@ -68,6 +68,8 @@ def tidal_history_plot(
             ax.errorbar(ages, values, yerr=np.nan_to_num(errors), fmt="o", ms=4, color="k",
                         label="constraints")
         ax.set_ylabel(label)
+        if key == "precession_constant":
+            ax.set_yscale("log")  # it grows twentyfold as the Moon approaches
     axes[0].legend(loc="best", fontsize="small")
     axes[-1].set_xlabel("time from J2000 (Gyr)")
     fig.andoyer_data = items

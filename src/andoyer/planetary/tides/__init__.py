@@ -14,7 +14,7 @@ Examples
 --------
 >>> h = tidal_history([-1.4e9, 0.0], "ocean")
 >>> [round(float(d)) for d in h.lunar_distance]  # km; Meyers & Malinverno 2018: 340,900 ± 2,600 at 1.4 Ga
-[336760, 384399]
+[336881, 384399]
 """
 
 from __future__ import annotations

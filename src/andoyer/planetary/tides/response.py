@@ -195,8 +195,8 @@ class OceanTides(TidalResponse):
     Examples
     --------
     >>> tides = OceanTides()
-    >>> round(tides.resonance_frequency() * 1e5, 2)  # rad/s: below today's 2(ω − n) = 14.05e-5
-    10.31
+    >>> round(tides.resonance_frequency() * 1e5, 2)  # rad/s, ×1e-5: below today's 2(ω − n) = 14.05
+    9.67
     """
 
     depth: float = FITTED_DEPTH
