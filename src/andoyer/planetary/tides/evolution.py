@@ -113,13 +113,14 @@ def _start(system: EarthMoonSystem, obliquity: float | None) -> tuple[float, flo
 
 
 def present_rates(
-    response: TidalResponse, system: EarthMoonSystem | None = None, solar_tide: bool = True
+    response: str | TidalResponse, system: EarthMoonSystem | None = None, solar_tide: bool = True
 ) -> dict[str, float]:
     """Today's tidal rates from the model's own equations.
 
     Parameters
     ----------
-    response : TidalResponse
+    response : str or TidalResponse
+        A model's name (:func:`tidal_model`) or a response.
     system : EarthMoonSystem, optional
     solar_tide : bool
         Include the Sun's tide on the Earth (it slows the spin, not the Moon).
@@ -132,12 +133,12 @@ def present_rates(
 
     Examples
     --------
-    >>> rates = present_rates(tidal_model("constant-lag"))
+    >>> rates = present_rates("constant-lag")
     >>> round(rates["recession"], 3)  # cm/yr: the calibration (LLR, Williams & Boggs 2016)
     3.83
     """
     s = EarthMoonSystem() if system is None else system
-    c = kernel_constants(response, s)
+    c = kernel_constants(tidal_model(response, s) if isinstance(response, str) else response, s)
     x, w, e = _start(s, None)
     dx, dw, de = equations.rates(x, w, e, c, 1 if solar_tide else 0)
     omega_dot = dw * s.spin_rate / JULIAN_YEAR  # rad/s²
