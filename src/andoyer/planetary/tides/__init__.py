@@ -19,11 +19,8 @@ Examples
 
 from __future__ import annotations
 
-from andoyer.planetary.tides.coupling import (
-    TidalSpinAxisModel,
-    tidal_spin_axis_history,
-    tidal_spin_axis_model,
-)
+from typing import Any
+
 from andoyer.planetary.tides.evolution import (
     LUNAR_AGE,
     MEASURED_RECESSION,
@@ -53,3 +50,22 @@ __all__ = [
     "tidal_spin_axis_history",
     "tidal_spin_axis_model",
 ]
+
+#: Loaded on first use: the coupling imports the spin-axis package, which a tidal history alone
+#: does not need.
+_COUPLING = ("TidalSpinAxisModel", "tidal_spin_axis_history", "tidal_spin_axis_model")
+
+
+def __getattr__(name: str) -> Any:
+    if name not in _COUPLING:
+        msg = f"module 'andoyer.planetary.tides' has no attribute {name!r}"
+        raise AttributeError(msg)
+    from andoyer.planetary.tides import coupling
+
+    value = getattr(coupling, name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))
