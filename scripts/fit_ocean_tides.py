@@ -7,8 +7,8 @@ constraints, which this script imposes on this model:
 
 1. today's lunar recession, 3.830 cm/yr (lunar laser ranging; Williams & Boggs 2016);
 2. the age of the Moon, 4.425 Gyr (Maurice et al. 2020): integrated backwards, the Moon reaches
-   the end of the model's validity (the Laplace-plane transition, ~9–14 Earth radii; inside
-   it the remaining time to the Roche limit is below a Myr) 4.425 Gyr ago.
+   the end of the model's validity (the Laplace-plane transition, 13.8 Earth radii then; inside
+   it the remaining time to the Roche limit is about a Myr) 4.425 Gyr ago.
 
 For each ``H``, (1) fixes ``σ_R`` (the larger of the two roots: the smaller one, a narrow
 resonance, never brings the Moon close); (2) then fixes ``H`` by a bracketed root search. The
