@@ -24,6 +24,8 @@ Examples
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 from numpy.typing import ArrayLike
 
@@ -118,6 +120,7 @@ def spin_axis_history(
     axis: ArrayLike | None = None,
     step: float = DEFAULT_STEP,
     order: int = 8,
+    coupling: Callable[[SpinAxisModel, tuple[float, float]], SpinAxisModel] | None = None,
 ) -> SpinAxisHistory:
     r"""The spin axis of ``body`` along ``orbit`` at ``times`` (Julian years from J2000).
 
@@ -147,6 +150,10 @@ def spin_axis_history(
         Largest integration step (years).
     order : {2, 4, 6, 8}
         Order of the composition.
+    coupling : callable, optional
+        ``coupling(model, (T0, T1))`` returns the model to integrate in place of the one built
+        here (e.g. with ``α(t)`` following a tidal history:
+        ``andoyer.planetary.tides.tidal_spin_axis_history``).
 
     Returns
     -------
@@ -179,4 +186,6 @@ def spin_axis_history(
     model = build_model(
         orbit, body, s0, precession_rate, dynamical_ellipticity, tidal_dissipation, ellipticity_drift
     )
+    if coupling is not None:
+        model = coupling(model, (float(t[0]), float(t[-1])))
     return history(orbit, model, t, s0, step, order)

@@ -28,8 +28,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer._validation import as_finite
-from andoyer.planetary.orbits.protocol import OrbitHistory, check_times
-from andoyer.planetary.spin_axis.history import DEFAULT_STEP, SpinAxisHistory, build_model, history
+from andoyer.planetary.orbits.protocol import OrbitHistory
+from andoyer.planetary.spin_axis.history import DEFAULT_STEP, SpinAxisHistory
 from andoyer.planetary.spin_axis.model import SpinAxisModel
 from andoyer.planetary.tides import equations
 from andoyer.planetary.tides.evolution import (
@@ -200,9 +200,9 @@ def tidal_spin_axis_history(
 ) -> SpinAxisHistory:
     """The Earth's spin axis along ``orbit`` with ``α(t)`` from a tidal history.
 
-    What ``andoyer obliquity earth --tides MODEL`` runs: as
-    :func:`andoyer.planetary.spin_axis.spin_axis_history`, the model built from the precession
-    rate (or ``H``) at J2000, then coupled by :func:`tidal_spin_axis_model`.
+    What ``andoyer obliquity earth --tides MODEL`` runs:
+    :func:`andoyer.planetary.spin_axis.spin_axis_history` (the model built from the precession
+    rate, or ``H``, at J2000), coupled by :func:`tidal_spin_axis_model` over the output times.
 
     Parameters
     ----------
@@ -229,28 +229,23 @@ def tidal_spin_axis_history(
     >>> round(float(np.degrees(h.obliquity[0])), 4)  # 200 kyr ago; with α constant: 23.1077
     23.1101
     """
-    from andoyer.planetary.spin_axis import default_axis
+    from andoyer.planetary.spin_axis import spin_axis_history
 
     if str(body).strip().lower() != "earth":
         msg = f"expected the body 'earth' for the Earth–Moon tides, got {body!r}"
         raise ValueError(msg)
-    if not isinstance(orbit, OrbitHistory):
-        msg = f"expected an orbit history (andoyer.planetary.orbits), got {type(orbit).__name__}"
-        raise ValueError(msg)
-    t = as_finite(times, "times")
-    if t.ndim != 1 or t.size == 0 or np.any(np.diff(t) <= 0):
-        msg = f"expected increasing output times (1-D, non-empty), got shape {t.shape}"
-        raise ValueError(msg)
-    lo, hi = orbit.span
-    if not lo <= 0.0 <= hi:
-        msg = f"expected an orbit span containing J2000 (the axis starts there), got {lo:g} to {hi:g}"
-        raise ValueError(msg)
-    check_times(t, orbit.span, orbit.name)
-    s0 = default_axis("earth") if axis is None else as_finite(axis, "axis")
-    if s0.shape != (3,) or not np.linalg.norm(s0) > 0:
-        msg = f"expected a non-zero axis of shape (3,), got shape {s0.shape}"
-        raise ValueError(msg)
-    s0 = s0 / np.linalg.norm(s0)
-    base = build_model(orbit, "earth", s0, precession_rate, dynamical_ellipticity)
-    model = tidal_spin_axis_model(base, (float(t[0]), float(t[-1])), tides, system)
-    return history(orbit, model, t, s0, step, order)
+
+    def coupled(base: SpinAxisModel, span: tuple[float, float]) -> SpinAxisModel:
+        return tidal_spin_axis_model(base, span, tides, system)
+
+    return spin_axis_history(
+        orbit,
+        "earth",
+        times,
+        precession_rate=precession_rate,
+        dynamical_ellipticity=dynamical_ellipticity,
+        axis=axis,
+        step=step,
+        order=order,
+        coupling=coupled,
+    )
