@@ -22,7 +22,7 @@ its kernel parameters.
 
   a damped resonance at ``σ ≈ σ₂√(1 − (1+k'−h')κ)``. It acts on the semidiurnal band
   (``m = 2``) only: on a rotating Earth a uniform global ocean has no diurnal (``m = 1``)
-  tide of degree 2 (Laplace's result; Lamb 1932, §217), and the long-period tide (``m = 0``)
+  tide of degree 2 (Laplace's result; Lamb 1932, ch. VIII), and the long-period tide (``m = 0``)
   is in equilibrium. What Farhat et al.'s model has and this one does not: the continents
   (their hemispherical ocean and its drift over the last Gyr, which give the resonances of
   the Phanerozoic); see the docs page for what that costs.
