@@ -32,6 +32,11 @@ def test_coupling_rate_follows_the_history(tides):
     assert np.allclose(model.rate(times, e) / BASE.rate(0.0, e), expected, rtol=1e-10, atol=0)
 
 
+def test_coupling_at_j2000_alone_is_the_calibration():
+    model = tidal_spin_axis_model(BASE, (0.0, 0.0), "ocean")
+    assert model.precession_rate(np.radians(84381.406 / 3600)) == pytest.approx(50.38481507, rel=1e-14)
+
+
 def test_coupling_without_dissipation_is_the_plain_model():
     times = np.linspace(-2e5, 0.0, 9)
     plain = spin_axis_history(VondrakEcliptic(), "earth", times)

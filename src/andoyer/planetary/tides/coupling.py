@@ -110,6 +110,8 @@ class TidalSpinAxisModel(SpinAxisModel):
 
 def _knots(lo: float, hi: float) -> Array:
     lo, hi = min(lo, 0.0), max(hi, 0.0)
+    if lo == hi:  # J2000 alone: a year of history keeps the interpolants defined
+        hi = 1.0
     parts = []
     if lo < 0:
         count = max(math.ceil(-lo / KNOT_SPACING), 16)

@@ -8,7 +8,7 @@ integrated forward and backward to the requested times by a compiled Dormand–P
 * ``day_length`` = ``2π/(ω − n_⊙)`` (hours), the mean solar day (24 h today);
 * ``dynamical_ellipticity`` ``H(ω) = H₀ (ω/ω₀)²``: the hydrostatic flattening scales with the
   centrifugal potential, ``J₂ = k_f ω² R³/(3GM)`` at first order (Lambeck 1980, *The Earth's
-  variable rotation*, §2; Néron de Surgy & Laskar 1997; Farhat et al. 2022 scale ``C`` the same way);
+  variable rotation*; Néron de Surgy & Laskar 1997; Farhat et al. 2022 scale ``C`` the same way);
 * ``precession_constant`` ``p = α cos ε`` (″/yr), with the precession constant of Laskar et
   al. (2004, §7, their Eq. for ``α``)
 
@@ -305,13 +305,12 @@ def integrate_states(
             *start, np.ascontiguousarray(ordered), c, 1 if solar_tide else 0, rtol, buffer
         )
         if status == 1:
-            radius = (c[equations.LAPLACE]) ** 0.2 / 6378136.6
-            when = "before" if t_stop < 0 else "after"
+            bound, side_word = ("after", "before") if t_stop < 0 else ("before", "after")
+            got = targets.min() if t_stop < 0 else targets.max()
             msg = (
-                f"expected times {'after' if t_stop < 0 else 'before'} {t_stop:.4g} years: the {name} model "
-                f"brings the Moon to the Laplace-plane transition (a = r_L, {radius:.3g} Earth radii "
-                f"today and more for a faster Earth) there, {when} which its averaging over the lunar node "
-                f"does not hold; got {targets.min() if t_stop < 0 else targets.max():.4g}"
+                f"expected times {bound} {t_stop:.4g} years: the {name} model brings the Moon to the "
+                f"Laplace-plane transition there (a = r_L, 8 to 14 Earth radii), {side_word} which its "
+                f"averaging over the lunar node does not hold; got {got:.4g}"
             )
             raise ValueError(msg)
         if status != 0:
