@@ -60,14 +60,15 @@ def test_present_day_length_is_the_mean_solar_day():
 
 
 def test_present_precession_constant_from_the_model_parameters():
-    """p0 = α cos ε0 from H (IERS), the orbits and ε0 (IAU 2006): 50.4006″/yr.
+    """p0 = α cos ε0 from H (MHB 2002), the orbits and ε0 (IAU 2006): 50.4004″/yr.
 
-    An independent code, the spin-axis model built from the same H, gives ψ̇ = α cos ε0; La2004's
+    An independent code, the spin-axis model built from the same H, gives ψ̇ = α cos ε0 (to 2.5e-6:
+    its Sun is at 1 au, the catalogue's Earth orbit at Standish's 1.00000261 au); La2004's
     50.475838″/yr is α cos ε̄ with the long-term mean obliquity ε̄ = 23.24°, not J2000's 23.44°.
     """
     p0 = tidal_history([0.0], "ocean").precession_constant[0]
     spin_axis = SpinAxisModel.from_dynamical_ellipticity("earth", SYSTEM.dynamical_ellipticity)
-    assert p0 == pytest.approx(spin_axis.precession_rate(SYSTEM.obliquity), rel=1e-6)
+    assert p0 == pytest.approx(spin_axis.precession_rate(SYSTEM.obliquity), rel=4e-6)
     mean_obliquity = math.acos(50.475838 / p0 * math.cos(SYSTEM.obliquity))
     assert math.degrees(mean_obliquity) == pytest.approx(23.24, abs=0.005)
 

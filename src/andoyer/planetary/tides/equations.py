@@ -54,7 +54,7 @@ from __future__ import annotations
 from math import isfinite, sin, sqrt
 
 from andoyer._jit import jit
-from andoyer.perturbations.solar_system import JULIAN_YEAR
+from andoyer.catalogue.units import JULIAN_YEAR
 
 __all__ = [
     "CONSTANT_LAG",

@@ -35,8 +35,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer._validation import as_finite
-from andoyer.bodies import ARCSEC
-from andoyer.perturbations.solar_system import JULIAN_YEAR
+from andoyer.catalogue.units import ARCSEC, JULIAN_YEAR
 from andoyer.planetary.tides import equations
 from andoyer.planetary.tides.response import ConstantTimeLag, OceanTides, TidalResponse
 from andoyer.planetary.tides.system import EarthMoonSystem

@@ -165,7 +165,7 @@ class ConstantPhaseLag(TidalResponse):
 #: (Williams & Boggs 2016) and the Moon at the Laplace-plane transition 4.425 Gyr ago (the
 #: lunar age, Maurice et al. 2020).
 FITTED_DEPTH = 7935.09
-FITTED_DRAG = 9.44862e-5
+FITTED_DRAG = 9.44858e-5
 
 
 @dataclass(frozen=True)

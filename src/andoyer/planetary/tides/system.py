@@ -1,18 +1,20 @@
-r"""The Earth–Moon–Sun numbers of the tidal model: one cited dataclass of defaults.
+r"""The Earth–Moon–Sun numbers of the tidal model: one dataclass, its defaults from the catalogue.
 
-Every body number the tidal evolution needs is a field of :class:`EarthMoonSystem`, with its
-source. Derived quantities (masses, the polar moment ``C``, the lunar mean motion) are
-properties computed from the fields, so that changing a field changes everything that depends
-on it. Until the project's catalogue (``andoyer.catalogue``) holds these numbers, this class is
-their one place in the tidal package.
+Every body number the tidal evolution needs is a field of :class:`EarthMoonSystem`. The defaults
+are read from the project's catalogue (:func:`andoyer.catalogue.get`, where each value carries
+its source); four are cited here: the gravitational constant, the Earth's mean radius, its fluid
+Love number (the catalogue does not hold them) and its inertial spin rate (the catalogue's
+rotation rate is the prime meridian's, precession included). Derived quantities (masses, the
+polar moment ``C``, the lunar mean motion) are properties computed from the fields, so that
+changing a field changes everything that depends on it.
 
 Units: SI (m, kg, s, rad) unless a field's name says otherwise.
 
 Examples
 --------
 >>> earth_moon = EarthMoonSystem()
->>> round(earth_moon.moment_factor, 4)  # C/(M a_E²) = J2/H
-0.3307
+>>> round(earth_moon.moment_factor, 6)  # C/(M a_E²), MHB 2002 via the catalogue
+0.330698
 >>> round(earth_moon.day_length_hours, 4)  # sidereal day from ω0
 23.9345
 """
@@ -20,59 +22,62 @@ Examples
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, field, fields
 
-from andoyer.bodies import ARCSEC
-from andoyer.perturbations.solar_system import DAY
+from andoyer import catalogue
+from andoyer.catalogue.units import DAY
 
 __all__ = ["EarthMoonSystem"]
+
+
+def _catalogue(body: str, key: str):
+    """A factory of the catalogue's ``key`` of ``body`` in SI."""
+    return lambda: getattr(catalogue.get(body), key).si()
 
 
 @dataclass(frozen=True)
 class EarthMoonSystem:
     """The Earth, the Moon and the Sun as the tidal model sees them (present-day values).
 
+    Every default but four is the catalogue's (``andoyer bodies earth``, ``moon``, ``sun``
+    print each value with its source): the Earth's ``GM``, equatorial radius ``a_E``, ``J2``,
+    ``C/(M a_E²)``, ``H``, obliquity, orbit (``a``, ``e``, sidereal year); the Moon's ``GM``
+    and mean orbit (``a``, ``e``, ``i``); the Sun's ``GM``.
+
     Attributes
     ----------
     gravitational_constant : float
-        ``G`` = 6.67430e-11 m³ kg⁻¹ s⁻² (CODATA 2018).
-    gm_earth : float
-        3.986004418e14 m³ s⁻² (IERS Conventions 2010, Table 1.1).
-    gm_moon : float
-        4.9028e12 m³ s⁻² (JPL DE440, Park et al. 2021; as in
-        :mod:`andoyer.perturbations.solar_system`).
-    gm_sun : float
-        1.3271244e20 m³ s⁻² (IAU 2015 Resolution B3, nominal).
+        ``G`` = 6.67430e-11 m³ kg⁻¹ s⁻² (CODATA 2018): masses from ``GM``.
+    gm_earth, gm_moon, gm_sun : float
+        m³ s⁻² (catalogue).
     equatorial_radius : float
-        ``a_E`` = 6378136.6 m (IERS Conventions 2010, Table 1.1): the radius of the tidal
-        torques and of ``C = (C/M a_E²) M a_E²``.
+        ``a_E``, m (catalogue): the radius of the tidal torques and of ``C``.
     mean_radius : float
         6371000 m (IUGG mean radius, Moritz 2000): the radius of the ocean model's sphere.
     j2 : float
-        1.0826359e-3, the dynamical form factor (IERS Conventions 2010, Table 1.1).
+        The dynamical form factor (catalogue): the Laplace radius.
+    moment_factor : float
+        ``C/(M_E a_E²)`` (catalogue).
     dynamical_ellipticity : float
-        ``H = (C − (A+B)/2)/C`` = 3.2737949e-3 (IERS Conventions 2010, Table 1.1; Mathews et al.
-        2002). With ``j2``: ``C/(M a_E²) = J2/H`` = 0.33070.
+        ``H = (C − (A+B)/2)/C`` (catalogue).
     spin_rate : float
-        ``ω0`` = 7.292115e-5 rad s⁻¹ (IERS Conventions 2010, Table 1.1).
+        ``ω0`` = 7.292115e-5 rad s⁻¹, the Earth's inertial spin (IERS Conventions 2010, Table
+        1.1). Not the catalogue's ``rotation_rate``: that is the rate of the IAU prime meridian,
+        360.9856235°/d, which counts the precession of the equinox as well (1.5e-8 more).
     obliquity : float
-        ``ε0`` = 84381.406″ in radians (IAU 2006, Capitaine et al. 2003).
+        ``ε0``, radians (catalogue, IAU 2006).
     fluid_love_number : float
         ``k_f`` = 0.93, the Earth's fluid (secular) Love number in the centrifugal change of the
         polar moment ``C(ω) = C0 + (2/9) k_f a_E⁵ (ω² − ω0²)/G`` (the form and value of Farhat
         et al. 2022, A&A 665, L1, App. A; also in Eulenfeld & Heubeck 2023's code).
     lunar_semi_major_axis : float
-        ``a_M`` = 384399e3 m, the Moon's mean distance (as in
-        :mod:`andoyer.perturbations.solar_system`).
+        ``a_M``, m (catalogue: the mean lunar orbit).
     lunar_eccentricity, lunar_inclination : float
-        0.0549 and 5.145° (in radians) to the ecliptic: the mean lunar orbit (same source),
-        used by the precession constant only.
-    solar_semi_major_axis : float
-        1 au = 1.495978707e11 m (IAU 2012 Resolution B2).
-    solar_eccentricity : float
-        0.0167086, the Earth's orbit at J2000 (as in :mod:`andoyer.perturbations.solar_system`).
+        The mean lunar orbit (catalogue), used by the precession constant only.
+    solar_semi_major_axis, solar_eccentricity : float
+        The Earth's orbit (catalogue, J2000).
     sidereal_year_days : float
-        365.256363004 d (same source): the Sun's mean motion seen from the Earth.
+        The sidereal year (catalogue): the Sun's mean motion seen from the Earth.
 
     Examples
     --------
@@ -83,22 +88,23 @@ class EarthMoonSystem:
     """
 
     gravitational_constant: float = 6.67430e-11
-    gm_earth: float = 3.986004418e14
-    gm_moon: float = 4.9028e12
-    gm_sun: float = 1.3271244e20
-    equatorial_radius: float = 6378136.6
+    gm_earth: float = field(default_factory=_catalogue("earth", "gm"))
+    gm_moon: float = field(default_factory=_catalogue("moon", "gm"))
+    gm_sun: float = field(default_factory=_catalogue("sun", "gm"))
+    equatorial_radius: float = field(default_factory=_catalogue("earth", "radius"))
     mean_radius: float = 6371000.0
-    j2: float = 1.0826359e-3
-    dynamical_ellipticity: float = 3.2737949e-3
+    j2: float = field(default_factory=_catalogue("earth", "j2"))
+    moment_factor: float = field(default_factory=_catalogue("earth", "moment_of_inertia"))
+    dynamical_ellipticity: float = field(default_factory=_catalogue("earth", "dynamical_ellipticity"))
     spin_rate: float = 7.292115e-5
-    obliquity: float = 84381.406 * ARCSEC
+    obliquity: float = field(default_factory=_catalogue("earth", "obliquity"))
     fluid_love_number: float = 0.93
-    lunar_semi_major_axis: float = 384399e3
-    lunar_eccentricity: float = 0.0549
-    lunar_inclination: float = math.radians(5.145)
-    solar_semi_major_axis: float = 1.495978707e11
-    solar_eccentricity: float = 0.0167086
-    sidereal_year_days: float = 365.256363004
+    lunar_semi_major_axis: float = field(default_factory=_catalogue("moon", "semi_major_axis"))
+    lunar_eccentricity: float = field(default_factory=_catalogue("moon", "eccentricity"))
+    lunar_inclination: float = field(default_factory=_catalogue("moon", "inclination"))
+    solar_semi_major_axis: float = field(default_factory=_catalogue("earth", "semi_major_axis"))
+    solar_eccentricity: float = field(default_factory=_catalogue("earth", "eccentricity"))
+    sidereal_year_days: float = field(default_factory=lambda: catalogue.get("earth").orbital_period.to("d"))
 
     def __post_init__(self) -> None:
         for item in fields(self):
@@ -120,10 +126,10 @@ class EarthMoonSystem:
                 f"{self.lunar_eccentricity!r}, {self.solar_eccentricity!r}, {self.lunar_inclination!r}"
             )
             raise ValueError(msg)
-        if not self.dynamical_ellipticity < 0.5 or not self.j2 < self.dynamical_ellipticity:
+        if not (self.dynamical_ellipticity < 0.5 and self.j2 < 0.5 and self.moment_factor < 1):
             msg = (
-                "expected 0 < J2 < H < 1/2 (C/(M a²) = J2/H below 1), got "
-                f"J2 = {self.j2!r}, H = {self.dynamical_ellipticity!r}"
+                "expected H < 1/2, J2 < 1/2 and C/(M a²) < 1, got "
+                f"H = {self.dynamical_ellipticity!r}, J2 = {self.j2!r}, C/(M a²) = {self.moment_factor!r}"
             )
             raise ValueError(msg)
 
@@ -143,13 +149,8 @@ class EarthMoonSystem:
         return self.mass_earth * self.mass_moon / (self.mass_earth + self.mass_moon)
 
     @property
-    def moment_factor(self) -> float:
-        """``C/(M_E a_E²) = J2/H``."""
-        return self.j2 / self.dynamical_ellipticity
-
-    @property
     def polar_moment(self) -> float:
-        """``C0 = (J2/H) M_E a_E²``, kg m²: the polar moment of inertia today."""
+        """``C0 = (C/M a²) M_E a_E²``, kg m²: the polar moment of inertia today."""
         return self.moment_factor * self.mass_earth * self.equatorial_radius**2
 
     @property
