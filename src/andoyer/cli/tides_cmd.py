@@ -73,9 +73,10 @@ def run(args: argparse.Namespace) -> int:
     if (t1 - t0) / args.step >= _MAX_POINTS:
         msg = f"expected at most {_MAX_POINTS} output times, got {(t1 - t0) / args.step:.3g}"
         raise CliError(msg)
-    if args.obliquity is not None and not 0 <= args.obliquity < 90:
-        msg = f"expected --obliquity EPS in [0, 90) degrees, got {args.obliquity!r}"
-        raise CliError(msg)
+    if args.obliquity is not None:
+        from andoyer.planetary.parameters import check
+
+        check("obliquity", args.obliquity, degrees=True)
     if args.plot is not None and not args.plot.lower().endswith(".png"):
         msg = f"expected --plot PATH ending in .png, got {args.plot!r}"
         raise CliError(msg)

@@ -36,6 +36,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from andoyer._validation import as_finite
 from andoyer.catalogue.units import ARCSEC, JULIAN_YEAR
+from andoyer.planetary.parameters import check
 from andoyer.planetary.tides import equations
 from andoyer.planetary.tides.response import ConstantTimeLag, OceanTides, TidalResponse
 from andoyer.planetary.tides.system import EarthMoonSystem
@@ -104,10 +105,7 @@ def kernel_constants(response: TidalResponse, system: EarthMoonSystem) -> Array:
 
 
 def _start(system: EarthMoonSystem, obliquity: float | None) -> tuple[float, float, float]:
-    eps = system.obliquity if obliquity is None else obliquity
-    if not (isinstance(eps, int | float | np.floating) and 0 <= eps < math.pi / 2):
-        msg = f"expected an obliquity at J2000 in [0, π/2) radians, got {eps!r}"
-        raise ValueError(msg)
+    eps = system.obliquity if obliquity is None else check("obliquity", obliquity)
     return 1.0, 1.0, float(eps)
 
 

@@ -26,6 +26,7 @@ from dataclasses import dataclass, field, fields
 
 from andoyer import catalogue
 from andoyer.catalogue.units import DAY
+from andoyer.planetary.parameters import check
 
 __all__ = ["EarthMoonSystem"]
 
@@ -107,31 +108,25 @@ class EarthMoonSystem:
     sidereal_year_days: float = field(default_factory=lambda: catalogue.get("earth").orbital_period.to("d"))
 
     def __post_init__(self) -> None:
+        ranged = {
+            "obliquity": "obliquity",
+            "dynamical_ellipticity": "dynamical_ellipticity",
+            "j2": "j2",
+            "moment_factor": "moment_of_inertia",
+            "lunar_eccentricity": "eccentricity",
+            "solar_eccentricity": "eccentricity",
+            "lunar_inclination": "inclination",
+        }
         for item in fields(self):
             value = getattr(self, item.name)
             if not (isinstance(value, int | float) and math.isfinite(value)):
                 msg = f"expected a finite real {item.name}, got {value!r}"
                 raise ValueError(msg)
-            allowed_zero = item.name in ("fluid_love_number", "lunar_eccentricity", "lunar_inclination",
-                                         "solar_eccentricity")
-            if value < 0 or (value == 0 and not allowed_zero):
+            if item.name in ranged:
+                check(ranged[item.name], value)
+            elif value <= 0 and not (item.name == "fluid_love_number" and value == 0):
                 msg = f"expected a positive finite {item.name}, got {value!r}"
                 raise ValueError(msg)
-        if not 0 < self.obliquity < math.pi / 2:
-            msg = f"expected an obliquity in (0, π/2) radians, got {self.obliquity!r}"
-            raise ValueError(msg)
-        if not (self.lunar_eccentricity < 1 and self.solar_eccentricity < 1 and self.lunar_inclination < 0.6):
-            msg = (
-                "expected eccentricities below 1 and a lunar inclination below 0.6 rad, got "
-                f"{self.lunar_eccentricity!r}, {self.solar_eccentricity!r}, {self.lunar_inclination!r}"
-            )
-            raise ValueError(msg)
-        if not (self.dynamical_ellipticity < 0.5 and self.j2 < 0.5 and self.moment_factor < 1):
-            msg = (
-                "expected H < 1/2, J2 < 1/2 and C/(M a²) < 1, got "
-                f"H = {self.dynamical_ellipticity!r}, J2 = {self.j2!r}, C/(M a²) = {self.moment_factor!r}"
-            )
-            raise ValueError(msg)
 
     @property
     def mass_earth(self) -> float:
