@@ -37,17 +37,37 @@ def register(commands: argparse._SubParsersAction) -> None:
         epilog=EXAMPLES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    parser.add_argument("body", type=str.lower, choices=("earth",), metavar="BODY")
-    parser.add_argument("--model", choices=("ocean", "constant-lag"), default="ocean")
-    parser.add_argument("--span", nargs=2, type=finite_number, metavar=("T0", "T1"), default=DEFAULT_SPAN)
     parser.add_argument(
-        "--step", type=finite_number, metavar="DT", default=DEFAULT_STEP, help="output step, years"
+        "body", type=str.lower, choices=("earth",), metavar="BODY", help="earth (the Earth-Moon system)"
     )
     parser.add_argument(
-        "--obliquity", type=finite_number, metavar="EPS", help="obliquity at J2000, degrees (0 <= EPS < 90)"
+        "--model",
+        choices=("ocean", "constant-lag"),
+        default="ocean",
+        help="the Earth's tidal response: ocean (default, after Farhat et al. 2022) or constant-lag",
+    )
+    parser.add_argument(
+        "--span",
+        nargs=2,
+        type=finite_number,
+        metavar=("T0", "T1"),
+        default=DEFAULT_SPAN,
+        help="first and last output time, Julian years from J2000 (default -1e9 0)",
+    )
+    parser.add_argument(
+        "--step",
+        type=finite_number,
+        metavar="DT",
+        default=DEFAULT_STEP,
+        help="output step, years (default 1e7)",
+    )
+    parser.add_argument(
+        "--obliquity", type=finite_number, metavar="EPS", help="obliquity at J2000, degrees (default 23.4393)"
     )
     parser.add_argument("--no-solar-tide", action="store_true", help="leave out the Sun's tide on the Earth")
-    parser.add_argument("--format", choices=("json", "csv", "table"), default="table")
+    parser.add_argument(
+        "--format", choices=("json", "csv", "table"), default="table", help="output format (default table)"
+    )
     add_output_argument(parser)
     add_output_argument(parser, "--plot", "PNG of distance, day length, precession constant and obliquity")
     parser.set_defaults(run=run)
