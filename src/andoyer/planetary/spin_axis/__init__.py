@@ -24,22 +24,29 @@ Examples
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+
 import numpy as np
 from numpy.typing import ArrayLike
 
+from andoyer._limits import announce, check_size
 from andoyer._validation import as_finite
 from andoyer.planetary.orbits.protocol import OrbitHistory, check_times
 from andoyer.planetary.spin_axis.history import (
+    BLOCK_ROWS,
     DEFAULT_STEP,
     EPSILON_0,
+    HISTORY_ROW_BYTES,
     SpinAxisHistory,
     build_model,
     equinox,
     evolve_axes,
     general_precession,
     history,
+    history_blocks,
     mean_pole_j2000,
     output_times,
+    run_cost,
 )
 from andoyer.planetary.spin_axis.insolation import daily_insolation
 from andoyer.planetary.spin_axis.model import (
@@ -63,6 +70,8 @@ __all__ = [
     "general_precession",
     "mean_pole_j2000",
     "output_times",
+    "run_cost",
+    "spin_axis_blocks",
     "spin_axis_history",
 ]
 
@@ -152,6 +161,13 @@ def spin_axis_history(
     -------
     SpinAxisHistory
 
+    Raises
+    ------
+    ValueError
+        For bad arguments, and for a run that cannot fit in memory or time
+        (:func:`run_cost`, :func:`andoyer._limits.check_size`: the memory is that of the
+        output, 88 bytes per time, and of one block of the integration, whatever the span).
+
     Examples
     --------
     >>> from andoyer.planetary.orbits import VondrakEcliptic
@@ -159,6 +175,26 @@ def spin_axis_history(
     >>> round(float(h.precession[1] / ARCSEC), 2)  # p_A after a century; IAU 2006: 5029.90
     5029.9
     """
+    orbit, model, t, s0 = _prepare(
+        orbit, body, times, precession_rate, dynamical_ellipticity, tidal_dissipation, ellipticity_drift, axis
+    )
+    seconds, nbytes = run_cost(orbit, t, 1, step, order)
+    check_size("a spin-axis history", nbytes=nbytes + t.size * HISTORY_ROW_BYTES, seconds=seconds)
+    announce(seconds, f"integrating the spin axis of {body} over {t.size} output times")
+    return history(orbit, model, t, s0, step, order)
+
+
+def _prepare(
+    orbit: OrbitHistory,
+    body: str,
+    times: ArrayLike,
+    precession_rate: float | None,
+    dynamical_ellipticity: float | None,
+    tidal_dissipation: float,
+    ellipticity_drift: float,
+    axis: ArrayLike | None,
+) -> tuple[OrbitHistory, SpinAxisModel, np.ndarray, np.ndarray]:
+    """The checked orbit, model, times and J2000 axis of :func:`spin_axis_history`."""
     if not isinstance(orbit, OrbitHistory):
         msg = f"expected an orbit history (andoyer.planetary.orbits), got {type(orbit).__name__}"
         raise ValueError(msg)
@@ -179,4 +215,52 @@ def spin_axis_history(
     model = build_model(
         orbit, body, s0, precession_rate, dynamical_ellipticity, tidal_dissipation, ellipticity_drift
     )
-    return history(orbit, model, t, s0, step, order)
+    return orbit, model, t, s0
+
+
+def spin_axis_blocks(
+    orbit: OrbitHistory,
+    body: str,
+    times: ArrayLike,
+    *,
+    precession_rate: float | None = None,
+    dynamical_ellipticity: float | None = None,
+    tidal_dissipation: float = 0.0,
+    ellipticity_drift: float = 0.0,
+    axis: ArrayLike | None = None,
+    step: float = DEFAULT_STEP,
+    order: int = 8,
+    rows: int = BLOCK_ROWS,
+) -> Iterator[SpinAxisHistory]:
+    """:func:`spin_axis_history` a block of ``rows`` output times at a time, for streamed output.
+
+    The arguments are checked when it is called; the integration runs when the first block
+    is asked for. Nothing is refused for its size here: :func:`run_cost` gives it (memory
+    :data:`~andoyer.planetary.spin_axis.history.AXIS_ROW_BYTES` per output time and a block's),
+    and what a caller keeps of the blocks is its own.
+
+    Parameters
+    ----------
+    orbit, body, times, precession_rate, dynamical_ellipticity : see :func:`spin_axis_history`
+    tidal_dissipation, ellipticity_drift, axis, step, order : see :func:`spin_axis_history`
+    rows : int
+        Output times per block.
+
+    Returns
+    -------
+    iterator of SpinAxisHistory
+
+    Examples
+    --------
+    >>> from andoyer.planetary.orbits import VondrakEcliptic
+    >>> blocks = spin_axis_blocks(VondrakEcliptic(), "earth", [-1000.0, 0.0, 1000.0], rows=2)
+    >>> [b.t.tolist() for b in blocks]
+    [[-1000.0, 0.0], [1000.0]]
+    """
+    if not (isinstance(rows, int | np.integer) and rows >= 1):
+        msg = f"expected a positive whole number of rows per block, got {rows!r}"
+        raise ValueError(msg)
+    orbit, model, t, s0 = _prepare(
+        orbit, body, times, precession_rate, dynamical_ellipticity, tidal_dissipation, ellipticity_drift, axis
+    )
+    return history_blocks(orbit, model, t, s0, step, order, int(rows))
