@@ -29,7 +29,6 @@ from collections.abc import Iterator
 import numpy as np
 from numpy.typing import ArrayLike
 
-from andoyer._limits import announce, check_size
 from andoyer._validation import as_finite
 from andoyer.planetary.orbits.protocol import OrbitHistory, check_times
 from andoyer.planetary.spin_axis.history import (
@@ -39,6 +38,7 @@ from andoyer.planetary.spin_axis.history import (
     HISTORY_ROW_BYTES,
     SpinAxisHistory,
     build_model,
+    check_run,
     equinox,
     evolve_axes,
     general_precession,
@@ -63,6 +63,7 @@ __all__ = [
     "SpinAxisHistory",
     "SpinAxisModel",
     "build_model",
+    "check_run",
     "daily_insolation",
     "default_axis",
     "equinox",
@@ -178,9 +179,7 @@ def spin_axis_history(
     orbit, model, t, s0 = _prepare(
         orbit, body, times, precession_rate, dynamical_ellipticity, tidal_dissipation, ellipticity_drift, axis
     )
-    seconds, nbytes = run_cost(orbit, t, 1, step, order)
-    check_size("a spin-axis history", nbytes=nbytes + t.size * HISTORY_ROW_BYTES, seconds=seconds)
-    announce(seconds, f"integrating the spin axis of {body} over {t.size} output times")
+    check_run(orbit, t, "a spin-axis history", 1, step, order, row_bytes=HISTORY_ROW_BYTES)
     return history(orbit, model, t, s0, step, order)
 
 

@@ -43,6 +43,7 @@ __all__ = [
     "ORBIT_SAMPLE_BYTES",
     "SpinAxisHistory",
     "build_model",
+    "check_run",
     "equinox",
     "evolve_axes",
     "general_precession",
@@ -574,6 +575,62 @@ def run_cost(
     samples_at_once = max(min(steps, BLOCK_STEPS) * (stages + 1), min(t.size, BLOCK_ROWS))
     block = samples_at_once * (ORBIT_SAMPLE_BYTES + 8 * runs)
     return samples * per_sample, t.size * runs * AXIS_ROW_BYTES + block
+
+
+def check_run(
+    orbit: OrbitHistory,
+    times: ArrayLike,
+    what: str,
+    runs: int = 1,
+    step: float = DEFAULT_STEP,
+    order: int = 8,
+    row_bytes: float = 0.0,
+    row_seconds: float = 0.0,
+    fixed_bytes: float = 0.0,
+) -> float:
+    """Refuse a run that cannot fit (:func:`run_cost`), have the orbit ready, announce a long one.
+
+    In this order: the memory (which needs no measurement) is checked; the orbit is then
+    asked for the whole span once (an N-body orbit integrates what it lacks there, checked
+    and announced by itself); the time is measured (:func:`orbit_sample_seconds`), checked and,
+    past :data:`andoyer._limits.ANNOUNCE_SECONDS`, announced.
+
+    Parameters
+    ----------
+    orbit : OrbitHistory
+    times : array_like, shape (N,)
+        Increasing output times.
+    what : str
+        The run, for the messages (``"a spin-axis history"``).
+    runs, step, order
+        As :func:`run_cost`.
+    row_bytes, row_seconds : float
+        What the caller adds per output time (what it keeps, formatting).
+    fixed_bytes : float
+        What the caller adds once.
+
+    Returns
+    -------
+    float
+        The estimated seconds.
+
+    Raises
+    ------
+    ValueError
+        Naming what the run would need.
+    """
+    from andoyer._limits import announce, check_size
+
+    t = np.asarray(times, dtype=float)
+    _, nbytes = run_cost(orbit, t, runs, step, order, sample_seconds=0.0)
+    nbytes += t.size * row_bytes + fixed_bytes
+    check_size(what, nbytes=nbytes)
+    if t.size:
+        orbit.normal(np.array([min(float(t[0]), 0.0), max(float(t[-1]), 0.0)]))
+    seconds = run_cost(orbit, t, runs, step, order)[0] + t.size * row_seconds
+    check_size(what, nbytes=nbytes, seconds=seconds)
+    announce(seconds, f"integrating the spin axis to {t.size} output times")
+    return seconds
 
 
 def evolve_axes(
