@@ -161,6 +161,12 @@ def main(argv: Sequence[str] | None = None) -> int:
         except (CliError, ValueError) as exc:
             print(f"{name}: error: {exc}", file=sys.stderr)
             return 2
+        except MemoryError as exc:
+            # Every command estimates its memory before the work and refuses what cannot fit
+            # (andoyer._limits.check_size); this is the net under those estimates.
+            print(f"{name}: error: expected a request that fits in memory, got one that ran out ({exc})",
+                  file=sys.stderr)
+            return 2
         except BrokenPipeError:
             return 0
         except OSError as exc:

@@ -88,7 +88,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer._files import atomic_write_bytes
-from andoyer._limits import Interrupted, announce, check_size, format_bytes
+from andoyer._limits import Interrupted, announce, check_size
 from andoyer.planetary.orbits.elements import state_to_vectors
 from andoyer.planetary.orbits.planets import PLANETS, check_planet, planet_data
 from andoyer.planetary.orbits.protocol import check_times
@@ -247,9 +247,9 @@ class _Segment:
         self.normal = np.zeros((0, 3))
         self.ecc = np.zeros((0, 3))
         self.last_state = np.zeros((9, 6))
+        self._parts: list[tuple] = []  # pieces read and not yet joined to the arrays above
         if folder is not None:
             _clean_stale_parts(folder)
-            self._load()
 
     # -- reading ------------------------------------------------------------------------------
 
@@ -307,30 +307,51 @@ class _Segment:
         j = self.index
         return t, normal[:, j].copy(), ecc[:, j].copy(), state
 
-    def _load(self) -> None:
-        """The longest chain of good pieces from J2000: at each end, the piece that goes furthest."""
+    def _load(self, reach: float) -> None:
+        """Read the chain of good pieces from where the samples end until they cover ``reach`` years.
+
+        At each end, the piece that goes furthest; only what a request needs is read (a 10 kyr
+        request does not read a 50 Myr cache).
+        """
+        if self.folder is None or self.reach >= reach:
+            return
         pieces = self._pieces()
-        end = -1  # index of the last sample held
-        parts = []
-        state = None
-        while True:
-            usable = sorted((p for p in pieces if p[0] <= end + 1 < p[1] + 1), key=lambda p: -p[1])
+        end = self.t.size - 1  # index of the last sample held
+        while self.reach_of(end) < reach:
+            usable = sorted((p for p in pieces if p[0] <= end + 1 <= p[1]), key=lambda p: -p[1])
             for first, last, path in usable:
                 read = self._read(first, last, path)
                 pieces.remove((first, last, path))
                 if read is not None:
                     t, normal, ecc, state = read
                     skip = end + 1 - first
-                    parts.append((t[skip:], normal[skip:], ecc[skip:]))
+                    self._parts.append((t[skip:], normal[skip:], ecc[skip:]))
+                    self.last_state = state
                     end = last
                     break
             else:
                 break
-        if parts:
-            self.t = np.concatenate([p[0] for p in parts])
-            self.normal = np.concatenate([p[1] for p in parts])
-            self.ecc = np.concatenate([p[2] for p in parts])
-            self.last_state = state
+        if self._parts:
+            self.t = np.concatenate([self.t, *(p[0] for p in self._parts)])
+            self.normal = np.concatenate([self.normal, *(p[1] for p in self._parts)])
+            self.ecc = np.concatenate([self.ecc, *(p[2] for p in self._parts)])
+            self._parts = []
+
+    def reach_of(self, index: int) -> float:
+        """Years from J2000 of sample ``index`` (``-1``: none)."""
+        return index * self.sample if index >= 0 else -1.0
+
+    def cached_reach(self) -> float:
+        """How far (years) the pieces on disk go from J2000 along one chain, by their names only."""
+        if self.folder is None:
+            return max(self.reach, 0.0)
+        end = self.t.size - 1
+        pieces = self._pieces()
+        while True:
+            further = [p[1] for p in pieces if p[0] <= end + 1 <= p[1]]
+            if not further or max(further) <= end:
+                return self.reach_of(end)
+            end = max(further)
 
     # -- integrating --------------------------------------------------------------------------
 
@@ -340,13 +361,15 @@ class _Segment:
         return float(abs(self.t[-1])) if self.t.size else -1.0
 
     def years_to(self, reach: float) -> float:
-        """Years this direction must integrate to cover ``reach`` years from J2000."""
-        if self.reach >= reach:
+        """Years this direction must integrate to cover ``reach`` years from J2000 (cache by its names)."""
+        cached = max(self.reach, self.cached_reach())
+        if cached >= reach:
             return 0.0
-        return float(np.ceil(reach / CHUNK_YEARS) * CHUNK_YEARS) - max(self.reach, 0.0)
+        return float(np.ceil(reach / CHUNK_YEARS) * CHUNK_YEARS) - max(cached, 0.0)
 
     def extend(self, reach: float, progress: bool | None) -> None:
-        """Integrate until the samples cover ``reach`` years from J2000 in this direction."""
+        """Read the cache, then integrate, until the samples cover ``reach`` years from J2000."""
+        self._load(reach)
         if self.reach >= reach:
             return
         from tqdm import tqdm
@@ -551,16 +574,17 @@ class NBodyOrbit:
         need_forward = float(max(times.max(), 0.0)) + margin if times.size else margin
         need_backward = float(max(-times.min(), 0.0)) + margin if times.size else margin
         forward, backward = self._segments[1], self._segments[-1]
-        years = forward.years_to(need_forward) + backward.years_to(need_backward)
-        if years > 0:
+        if forward.reach < need_forward or backward.reach < need_backward:
+            # Refused before anything is read or integrated: the samples held (read from the cache
+            # or integrated, to whole chunks, and a piece's worth read beyond), and the time.
+            years = forward.years_to(need_forward) + backward.years_to(need_backward)
             seconds = years / 1e6 * SECONDS_PER_MYR
-            reach = max(need_forward, forward.reach) + max(need_backward, backward.reach)
-            samples = reach / self.sample_years
-            check_size(
-                f"an N-body integration of {_years(years)} ({format_bytes(samples * SAMPLE_BYTES)} held)",
-                nbytes=samples * SAMPLE_BYTES,
-                seconds=seconds,
+            reach = sum(
+                max(segment.reach, np.ceil(need / CHUNK_YEARS) * CHUNK_YEARS) + PIECE_YEARS
+                for segment, need in ((forward, need_forward), (backward, need_backward))
             )
+            nbytes = reach / self.sample_years * SAMPLE_BYTES
+            check_size(f"an N-body orbit of {_years(reach)}", nbytes=nbytes, seconds=seconds)
             where = cache_directory() if self.cache else None
             announce(seconds, f"integrating {_years(years)} of the Solar System (N-body)", where)
         forward.extend(need_forward, self.progress)

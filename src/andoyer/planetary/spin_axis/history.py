@@ -200,8 +200,12 @@ BLOCK_STEPS = 4096
 
 def _step_counts(knots: Array, step: float) -> tuple[Array, Array]:
     """Steps in each gap between successive knots (at least one, at most ``step`` long), and their sum."""
-    gaps = np.diff(knots)
-    counts = np.maximum(np.ceil(np.abs(gaps) / step - 1e-12), 1.0)
+    counts = np.diff(knots)  # the gaps, turned into counts in place: no temporaries of the knots' size
+    np.abs(counts, out=counts)
+    counts /= step
+    counts -= 1e-12
+    np.ceil(counts, out=counts)
+    np.maximum(counts, 1.0, out=counts)
     if not np.all(counts < 2.0**53):  # an integer count, exactly
         msg = f"expected at most 2^53 integration steps, got {float(np.sum(counts)):.3g}"
         raise ValueError(msg)
@@ -232,12 +236,31 @@ def step_count(times: ArrayLike, step: float = DEFAULT_STEP) -> int:
     >>> step_count([-2500.0, 0.0, 1000.0, 1500.0])  # 3 steps back, 1 + 1 forward
     5
     """
-    t = np.asarray(times, dtype=float)
+    t = np.asarray(times, dtype=float).ravel()
+    # The gaps of both ways are those between successive times with J2000 among them; a block
+    # of them at a time, so that the estimate of a run allocates nothing of the run's size.
+    k = int(np.searchsorted(t, 0.0))
+    if k == t.size or t[k] != 0.0:
+        t = np.concatenate([t[:k], [0.0], t[k:]]) if t.size <= BLOCK_ROWS else _WithZero(t, k)
     total = 0
-    for side in (t[t > 0], -t[t < 0][::-1]):
-        if side.size:
-            total += int(_step_counts(np.concatenate([[0.0], side]), step)[1][-1])
+    for first in range(0, t.size - 1, BLOCK_ROWS):
+        total += int(_step_counts(t[first : first + BLOCK_ROWS + 1], step)[1][-1])
     return total
+
+
+class _WithZero:
+    """``t[:k] + [0.0] + t[k:]`` without copying ``t``: slices only."""
+
+    def __init__(self, t: Array, k: int) -> None:
+        self.t, self.k, self.size = t, k, t.size + 1
+
+    def __getitem__(self, part: slice) -> Array:
+        start, stop = part.start, min(part.stop, self.size)
+        pieces = [self.t[start : min(stop, self.k)]]
+        if start <= self.k < stop:
+            pieces.append(np.zeros(1))
+        pieces.append(self.t[max(start, self.k + 1) - 1 : stop - 1])
+        return np.concatenate(pieces)
 
 
 def _step_blocks(knots: Array, step: float, size: int):  # type: ignore[no-untyped-def]
