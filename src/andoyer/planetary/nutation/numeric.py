@@ -349,6 +349,12 @@ def nutation_cost(t: ArrayLike, method: str = "numeric", passes: int = 1) -> tup
     (88, 128)
     """
     times = np.asarray(t, dtype=float).ravel()
+    if not np.all(np.isfinite(times)):
+        msg = "expected finite times, got NaN or infinity"
+        raise ValueError(msg)
+    if method not in ("numeric", "analytic"):
+        msg = f"expected method 'numeric' or 'analytic', got {method!r}"
+        raise ValueError(msg)
     if times.size == 0:
         return 0.0, 0.0
     outputs = times.size * OUTPUT_BYTES

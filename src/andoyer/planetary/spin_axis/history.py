@@ -590,7 +590,10 @@ def run_cost(
     (0.001602, 1651392)
     """
     _check_step(step)
-    t = np.asarray(times, dtype=float)
+    t = as_finite(times, "times").ravel()
+    if t.size > 1 and not np.all(t[1:] > t[:-1]):
+        msg = "expected increasing output times, got times out of order"
+        raise ValueError(msg)
     stages = len(stage_times(np.zeros(1), np.ones(1), order)[0])
     steps = step_count(t, step)
     per_sample = orbit_sample_seconds(orbit) if sample_seconds is None else float(sample_seconds)
