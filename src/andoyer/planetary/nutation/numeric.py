@@ -26,6 +26,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from andoyer._limits import check_size
 from andoyer.perturbations.lunar_theory import (
+    check_span,
     delaunay_arguments,
     ecliptic_vector,
     moon_ecliptic,
@@ -411,6 +412,7 @@ def nutation(
     if times.ndim != 1 or times.size == 0 or not np.all(np.isfinite(times)):
         msg = f"expected finite times (T,), got shape {np.shape(t)}"
         raise ValueError(msg)
+    check_span(float(times.min()), float(times.max()))  # the user's times, before any epoch of theirs
     if method not in ("numeric", "analytic"):
         msg = f"expected method 'numeric' or 'analytic', got {method!r}"
         raise ValueError(msg)

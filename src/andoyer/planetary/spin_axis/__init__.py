@@ -3,7 +3,7 @@ r"""Secular spin-axis dynamics under a moving orbit: obliquity, precession, inso
 The averaged torque of the Sun (and, for the Earth, the Moon) on an oblate planet turns its
 unit spin axis ``s`` about the orbit normal of date ``n(t)`` of any
 :class:`~andoyer.planetary.orbits.OrbitHistory` (:mod:`andoyer.planetary.spin_axis.model` derives it from
-:class:`~andoyer.perturbations.secular.SecularGravityGradient`):
+:class:`~andoyer.perturbations.averaged_gravity.SecularGravityGradient`):
 
 .. math:: \dot{\mathbf s} = \alpha(t)\,(\mathbf s\cdot\mathbf n)\,(\mathbf s\times\mathbf n),
    \qquad \alpha(t) = \alpha_\odot\big[(1 - e(t)^2)^{-3/2} + \beta\big],
@@ -24,7 +24,7 @@ Examples
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -42,7 +42,6 @@ from andoyer.planetary.spin_axis.history import (
     equinox,
     evolve_axes,
     general_precession,
-    history,
     history_blocks,
     mean_pole_j2000,
     output_times,
@@ -128,6 +127,7 @@ def spin_axis_history(
     axis: ArrayLike | None = None,
     step: float = DEFAULT_STEP,
     order: int = 8,
+    coupling: Callable[[SpinAxisModel, tuple[float, float]], SpinAxisModel] | None = None,
 ) -> SpinAxisHistory:
     r"""The spin axis of ``body`` along ``orbit`` at ``times`` (Julian years from J2000).
 
@@ -144,28 +144,35 @@ def spin_axis_history(
     times : array_like, shape (N,)
         Increasing output times within ``orbit.span``.
     precession_rate : float, optional
-        ″/yr.
+        ″/yr, positive, at most the rate of ``H = 1/2``.
     dynamical_ellipticity : float, optional
-        ``H = (C − (A+B)/2)/C``.
+        ``H = (C − (A+B)/2)/C``, ``0 < H < 1/2``.
     tidal_dissipation : float
-        ``T_d`` (Zeebe & Lourens 2022; 0: none, 1: modern rates). Earth only.
+        ``T_d`` (Zeebe & Lourens 2022; 0: none, 1: modern rates), in ``[0, 1.2]``. Earth only.
     ellipticity_drift : float
-        ``Ḣ/H`` per Julian year.
+        ``Ḣ/H`` per Julian year; ``H`` must stay within ``(0, 1/2)`` over the span.
     axis : array_like, shape (3,), optional
         Spin axis at J2000, J2000 ecliptic frame.
     step : float
-        Largest integration step (years).
+        Largest integration step (years), shortened where the axis would turn by more than
+        1/16 of a turn in one (:data:`~andoyer.planetary.spin_axis.history.MAX_TURN_PER_STEP`).
     order : {2, 4, 6, 8}
         Order of the composition.
+    coupling : callable, optional
+        ``coupling(model, (T0, T1))`` returns the model to integrate in place of the one built
+        here (e.g. with ``α(t)`` following a tidal history:
+        ``andoyer.planetary.tides.tidal_spin_axis_history``).
 
     Returns
     -------
     SpinAxisHistory
+        Its ``largest_turn`` says whether the output times sample the precession.
 
     Raises
     ------
     ValueError
-        For bad arguments, and for a run that cannot fit in memory or time
+        For a parameter out of its range (:mod:`andoyer.planetary.parameters`), times
+        outside the orbit's span, and a run that cannot fit in memory or time
         (:func:`run_cost`, :func:`andoyer._limits.check_size`: the memory is that of the
         output, 88 bytes per time, and of one block of the integration, whatever the span).
 
@@ -176,11 +183,22 @@ def spin_axis_history(
     >>> round(float(h.precession[1] / ARCSEC), 2)  # p_A after a century; IAU 2006: 5029.90
     5029.9
     """
-    orbit, model, t, s0 = _prepare(
-        orbit, body, times, precession_rate, dynamical_ellipticity, tidal_dissipation, ellipticity_drift, axis
+    blocks = spin_axis_blocks(
+        orbit,
+        body,
+        times,
+        precession_rate=precession_rate,
+        dynamical_ellipticity=dynamical_ellipticity,
+        tidal_dissipation=tidal_dissipation,
+        ellipticity_drift=ellipticity_drift,
+        axis=axis,
+        step=step,
+        order=order,
+        coupling=coupling,
+        row_bytes=HISTORY_ROW_BYTES,
+        what="a spin-axis history",
     )
-    check_run(orbit, t, "a spin-axis history", 1, step, order, row_bytes=HISTORY_ROW_BYTES)
-    return history(orbit, model, t, s0, step, order)
+    return SpinAxisHistory.concatenate(list(blocks))
 
 
 def _prepare(
@@ -192,6 +210,7 @@ def _prepare(
     tidal_dissipation: float,
     ellipticity_drift: float,
     axis: ArrayLike | None,
+    coupling: Callable[[SpinAxisModel, tuple[float, float]], SpinAxisModel] | None = None,
 ) -> tuple[OrbitHistory, SpinAxisModel, np.ndarray, np.ndarray]:
     """The checked orbit, model, times and J2000 axis of :func:`spin_axis_history`."""
     if not isinstance(orbit, OrbitHistory):
@@ -214,6 +233,9 @@ def _prepare(
     model = build_model(
         orbit, body, s0, precession_rate, dynamical_ellipticity, tidal_dissipation, ellipticity_drift
     )
+    model.check_span(min(t[0], 0.0), max(t[-1], 0.0))
+    if coupling is not None:
+        model = coupling(model, (float(t[0]), float(t[-1])))
     return orbit, model, t, s0
 
 
@@ -229,21 +251,31 @@ def spin_axis_blocks(
     axis: ArrayLike | None = None,
     step: float = DEFAULT_STEP,
     order: int = 8,
+    coupling: Callable[[SpinAxisModel, tuple[float, float]], SpinAxisModel] | None = None,
     rows: int = BLOCK_ROWS,
+    row_bytes: float = 0.0,
+    row_seconds: float = 0.0,
+    fixed_bytes: float = 0.0,
+    what: str = "a spin-axis run",
 ) -> Iterator[SpinAxisHistory]:
     """:func:`spin_axis_history` a block of ``rows`` output times at a time, for streamed output.
 
-    The arguments are checked when it is called; the integration runs when the first block
-    is asked for. Nothing is refused for its size here: :func:`run_cost` gives it (memory
-    :data:`~andoyer.planetary.spin_axis.history.AXIS_ROW_BYTES` per output time and a block's),
-    and what a caller keeps of the blocks is its own.
+    The arguments and the cost are checked when it is called (:func:`check_run`: the
+    integration's memory, 96 bytes per output time and a block's, and ``row_bytes`` per
+    output time and ``fixed_bytes`` that the caller keeps; its time, with ``row_seconds``
+    per output time of the caller's); the integration runs when the first block is asked for.
+    Every block carries the ``largest_turn`` of the whole history.
 
     Parameters
     ----------
     orbit, body, times, precession_rate, dynamical_ellipticity : see :func:`spin_axis_history`
-    tidal_dissipation, ellipticity_drift, axis, step, order : see :func:`spin_axis_history`
+    tidal_dissipation, ellipticity_drift, axis, step, order, coupling : see :func:`spin_axis_history`
     rows : int
         Output times per block.
+    row_bytes, row_seconds, fixed_bytes : float
+        What the caller adds to the cost.
+    what : str
+        The run, for the messages.
 
     Returns
     -------
@@ -260,6 +292,15 @@ def spin_axis_blocks(
         msg = f"expected a positive whole number of rows per block, got {rows!r}"
         raise ValueError(msg)
     orbit, model, t, s0 = _prepare(
-        orbit, body, times, precession_rate, dynamical_ellipticity, tidal_dissipation, ellipticity_drift, axis
+        orbit,
+        body,
+        times,
+        precession_rate,
+        dynamical_ellipticity,
+        tidal_dissipation,
+        ellipticity_drift,
+        axis,
+        coupling,
     )
+    _, step = check_run(orbit, t, what, 1, step, order, row_bytes, row_seconds, fixed_bytes, model)
     return history_blocks(orbit, model, t, s0, step, order, int(rows))

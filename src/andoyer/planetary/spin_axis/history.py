@@ -66,6 +66,12 @@ EPSILON_0 = 84381.406 * ARCSEC
 #: (DOP853's own level), 6.7e-12 at 2000. p_A is unwrapped between steps, so a step must stay
 #: below half a precession period.
 DEFAULT_STEP = 1000.0
+#: Largest turn of the axis about the orbit normal in one step (turns): a faster precession
+#: shortens the step to fit. Measured against DOP853 (rtol 1e-13, Vondrák ecliptic, order 8):
+#: at 1/16 turn per step the error is 1.1e-12 rad at 50″/yr, 1.9e-12 at 500″/yr and 1.9e-12
+#: at 5000″/yr (DOP853's own level there; the Earth's default, 1000 years, is 1/26 turn);
+#: at 1/4 turn it grows to 3e-8 rad. p_A, unwrapped between steps, needs less than 1/2 turn.
+MAX_TURN_PER_STEP = 1.0 / 16.0
 
 
 def mean_pole_j2000() -> Array:
@@ -296,11 +302,7 @@ def _sweep(orbit, model, knots, s0, step, order):  # type: ignore[no-untyped-def
     for starts, sizes, ends, last in _step_blocks(knots, step, BLOCK_STEPS):
         mid, dur = stage_times(starts, sizes, order)
         normals = np.ascontiguousarray(orbit.normal(mid))
-        e = np.linalg.norm(orbit.eccentricity_vector(mid), axis=-1) if orbit.has_eccentricity else None
-        if isinstance(model, SpinAxisModel):
-            alpha = np.broadcast_to(model.rate(mid, e), (len(s), mid.size))
-        else:
-            alpha = np.stack([m.rate(mid, e) for m in model])
+        alpha = _alpha(orbit, model, mid, len(s))
         out = np.empty((len(s), len(starts), 3))
         rotate_stages(s, normals, np.ascontiguousarray(alpha), dur, len(dur) // len(starts), out)
         s = np.ascontiguousarray(out[:, -1])
@@ -311,6 +313,35 @@ def _check_step(step: float) -> None:
     if not (np.isfinite(step) and step > 0):
         msg = f"expected a positive finite integration step in years, got {step!r}"
         raise ValueError(msg)
+
+
+def _alpha(orbit: OrbitHistory, model: SpinAxisModel | Sequence[SpinAxisModel], t: Array, runs: int) -> Array:
+    """``α`` of every run at the times ``t`` (the orbit's eccentricity where it knows it), shape (M, T)."""
+    e = np.linalg.norm(orbit.eccentricity_vector(t), axis=-1) if orbit.has_eccentricity else None
+    if isinstance(model, SpinAxisModel):
+        return np.broadcast_to(model.rate(t, e), (runs, t.size))
+    return np.stack([m.rate(t, e) for m in model])
+
+
+def _largest_step(
+    orbit: OrbitHistory, model: SpinAxisModel | Sequence[SpinAxisModel], times: Array, runs: int, step: float
+) -> float:
+    """``step``, shortened where ``α`` would turn the axis by more than :data:`MAX_TURN_PER_STEP`.
+
+    The axis turns about ``n`` at ``α (s·n) ≤ α``; ``α`` is sampled at the middle of every step
+    of ``step`` (it changes over the orbit's and the tides' slow times, not within a step), a
+    block of steps at a time.
+    """
+    times = np.asarray(times, dtype=float)
+    alpha = 0.0
+    for side in (times[times > 0], times[times < 0][::-1]):
+        if side.size == 0:
+            continue
+        for starts, sizes, _, _ in _step_blocks(np.concatenate([[0.0], side]), step, BLOCK_STEPS * 16):
+            rate = _alpha(orbit, model, starts + 0.5 * sizes, runs)
+            alpha = max(alpha, float(np.max(np.abs(rate), initial=0.0)))
+    most = 2 * np.pi * MAX_TURN_PER_STEP / alpha if alpha > 0 else np.inf
+    return min(step, most)
 
 
 def integrate_axis(
@@ -336,7 +367,8 @@ def integrate_axis(
     s0 : ndarray, shape (M, 3)
         Unit axes at J2000 (``M`` runs sharing the orbit).
     step : float
-        Largest step, years.
+        Largest step, years (taken as it is: :func:`evolve_axes` shortens it where the axis
+        would turn by more than :data:`MAX_TURN_PER_STEP` in one).
     order : {2, 4, 6, 8}
 
     Returns
@@ -389,6 +421,10 @@ class SpinAxisHistory:
         ``ψ̇`` at J2000 used, ″/yr.
     model : SpinAxisModel
     orbit_name : str
+    largest_turn : float
+        The largest angle (radians) by which ``p_A`` or ``ϖ`` turns between two consecutive
+        output times, measured on the integration grid: from ``π`` on, the outputs undersample
+        the precession (Nyquist) and a table or a picture of them aliases it.
     """
 
     t: Array
@@ -401,6 +437,34 @@ class SpinAxisHistory:
     precession_rate: float
     model: SpinAxisModel
     orbit_name: str = field(default="")
+    largest_turn: float = 0.0
+
+    @classmethod
+    def concatenate(cls, blocks: Sequence[SpinAxisHistory]) -> SpinAxisHistory:
+        """One history from consecutive blocks of it (:func:`history_blocks`).
+
+        Examples
+        --------
+        >>> from andoyer.planetary.orbits import VondrakEcliptic
+        >>> from andoyer.planetary.spin_axis import spin_axis_blocks
+        >>> blocks = list(spin_axis_blocks(VondrakEcliptic(), "earth", [-1e3, 0.0, 1e3], rows=2))
+        >>> SpinAxisHistory.concatenate(blocks).t.tolist()
+        [-1000.0, 0.0, 1000.0]
+        """
+        first = blocks[0]
+
+        def join(name: str) -> Array | None:
+            parts = [getattr(b, name) for b in blocks]
+            return None if parts[0] is None else np.concatenate(parts)
+
+        fields = ("t", "axis", "orbit_normal", "obliquity", "precession", "eccentricity", "perihelion")
+        return cls(
+            *(join(name) for name in fields),
+            first.precession_rate,
+            first.model,
+            first.orbit_name,
+            first.largest_turn,
+        )
 
     @property
     def climatic_precession(self) -> Array | None:
@@ -442,10 +506,13 @@ def describe_orbit(
     if not orbit.has_eccentricity:
         return n, obliquity, None, None
     ev = orbit.eccentricity_vector(t)
-    e = np.linalg.norm(ev, axis=-1)
+    return n, obliquity, np.linalg.norm(ev, axis=-1), _perihelion(s, n, ev)
+
+
+def _perihelion(s: Array, n: Array, ev: Array) -> Array:
+    """``ϖ`` in [0, 2π) of the eccentricity vectors ``ev`` from the equinox of ``(s, n)``."""
     g = equinox(s, n)
-    perihelion = np.mod(np.arctan2(np.sum(ev * np.cross(n, g), -1), np.sum(ev * g, -1)), 2 * np.pi)
-    return n, obliquity, e, perihelion
+    return np.mod(np.arctan2(np.sum(ev * np.cross(n, g), -1), np.sum(ev * g, -1)), 2 * np.pi)
 
 
 def history_blocks(
@@ -459,8 +526,9 @@ def history_blocks(
 ) -> Iterator[SpinAxisHistory]:
     """The history of :func:`history`, ``rows`` output times at a time (for streamed tables).
 
-    The axes are integrated first (:func:`evolve_axes`, ``32 N`` bytes); the orbit is then
-    sampled and described a block at a time, so that nothing else grows with ``N``.
+    The axes are integrated first (:func:`evolve_axes`, ``40 N`` bytes with ``ϖ`` for the
+    history's ``largest_turn``); the orbit is then sampled and described a block at a time, so
+    that nothing else grows with ``N``. Every block carries the ``largest_turn`` of the whole.
 
     Yields
     ------
@@ -469,7 +537,11 @@ def history_blocks(
     """
     s0 = as_vectors(s0, "initial axis")
     s0 = s0 / np.linalg.norm(s0)
-    axes, p = evolve_axes(orbit, model, times, s0, step, order)
+    axes, p, varpi = _evolve_outputs(orbit, model, times, s0, step, order, orbit.has_eccentricity)
+    # the largest turn of p_A or ϖ between consecutive outputs, both unwrapped step by step
+    turns = [p[0]] if varpi is None else [p[0], varpi]
+    largest = max(float(np.max(np.abs(np.diff(angle)), initial=0.0)) for angle in turns)
+    del varpi
     n0 = orbit.normal(0.0)
     e0 = np.linalg.norm(orbit.eccentricity_vector(0.0)) if orbit.has_eccentricity else None
     eps0 = float(np.arctan2(np.linalg.norm(np.cross(s0, n0)), s0 @ n0))
@@ -478,7 +550,7 @@ def history_blocks(
         part = slice(first, first + rows)
         t, s = times[part], axes[0, part]
         n, obliquity, e, perihelion = describe_orbit(orbit, t, s)
-        yield SpinAxisHistory(t, s, n, obliquity, p[0, part], e, perihelion, rate, model, orbit.name)
+        yield SpinAxisHistory(t, s, n, obliquity, p[0, part], e, perihelion, rate, model, orbit.name, largest)
 
 
 def history(
@@ -490,25 +562,7 @@ def history(
     order: int = 8,
 ) -> SpinAxisHistory:
     """Integrate and describe (the work of :func:`andoyer.planetary.spin_axis.spin_axis_history`)."""
-    blocks = list(history_blocks(orbit, model, times, s0, step, order))
-    first = blocks[0]
-
-    def joined(name: str) -> Array | None:
-        parts = [getattr(b, name) for b in blocks]
-        return None if parts[0] is None else np.concatenate(parts)
-
-    return SpinAxisHistory(
-        times,
-        joined("axis"),
-        joined("orbit_normal"),
-        joined("obliquity"),
-        joined("precession"),
-        joined("eccentricity"),
-        joined("perihelion"),
-        first.precession_rate,
-        model,
-        orbit.name,
-    )
+    return SpinAxisHistory.concatenate(list(history_blocks(orbit, model, times, s0, step, order)))
 
 
 #: Bytes an orbit source may use per time it is sampled at (a bound: measured at most 304 for
@@ -613,13 +667,17 @@ def check_run(
     row_bytes: float = 0.0,
     row_seconds: float = 0.0,
     fixed_bytes: float = 0.0,
-) -> float:
+    model: SpinAxisModel | Sequence[SpinAxisModel] | None = None,
+) -> tuple[float, float]:
     """Refuse a run that cannot fit (:func:`run_cost`), have the orbit ready, announce a long one.
 
     In this order: the memory (which needs no measurement) is checked; the orbit is then
     asked for the whole span once (an N-body orbit integrates what it lacks there, checked
-    and announced by itself); the time is measured (:func:`orbit_sample_seconds`), checked and,
-    past :data:`andoyer._limits.ANNOUNCE_SECONDS`, announced.
+    and announced by itself); the time is measured (:func:`orbit_sample_seconds`) and
+    checked, at ``step`` and, with ``model``, again at the step the model's precession
+    allows (:data:`MAX_TURN_PER_STEP`; scanning the model's rate over the span costs a
+    sixteenth of the run, after the first check); a run past
+    :data:`andoyer._limits.ANNOUNCE_SECONDS` is announced.
 
     Parameters
     ----------
@@ -634,11 +692,13 @@ def check_run(
         What the caller adds per output time (what it keeps, formatting).
     fixed_bytes : float
         What the caller adds once.
+    model : SpinAxisModel or sequence of them, optional
+        The run's model: the step is shortened as :func:`evolve_axes` will.
 
     Returns
     -------
-    float
-        The estimated seconds.
+    seconds, step : float
+        The estimated seconds, and the step the run will take.
 
     Raises
     ------
@@ -653,10 +713,15 @@ def check_run(
     check_size(what, nbytes=nbytes)
     if t.size:
         orbit.normal(np.array([min(float(t[0]), 0.0), max(float(t[-1]), 0.0)]))
-    seconds = run_cost(orbit, t, runs, step, order)[0] + t.size * row_seconds
+    sample = orbit_sample_seconds(orbit)
+    seconds = run_cost(orbit, t, runs, step, order, sample)[0] + t.size * row_seconds
     check_size(what, nbytes=nbytes, seconds=seconds)
+    if model is not None:
+        step = _largest_step(orbit, model, t, runs, step)
+        seconds = run_cost(orbit, t, runs, step, order, sample)[0] + t.size * row_seconds
+        check_size(what, nbytes=nbytes, seconds=seconds)
     announce(seconds, f"integrating the spin axis to {t.size} output times")
-    return seconds
+    return seconds, step
 
 
 def evolve_axes(
@@ -683,6 +748,8 @@ def evolve_axes(
     s0 : ndarray, shape (3,) or (M, 3)
         Unit axis at J2000 (shared, or one per run).
     step : float
+        Largest step, years, shortened where the axis would turn by more than
+        :data:`MAX_TURN_PER_STEP` in one (the unwrapping of ``p_A`` needs less than half a turn).
     order : {2, 4, 6, 8}
 
     Returns
@@ -691,6 +758,20 @@ def evolve_axes(
     precession : ndarray, shape (M, N)
         ``p_A`` (radians), unwrapped between integration steps, zero at J2000.
     """
+    axes, p, _ = _evolve_outputs(orbit, model, times, s0, step, order, perihelion=False)
+    return axes, p
+
+
+def _evolve_outputs(
+    orbit: OrbitHistory,
+    model: SpinAxisModel | Sequence[SpinAxisModel],
+    times: Array,
+    s0: Array,
+    step: float,
+    order: int,
+    perihelion: bool,
+) -> tuple[Array, Array, Array | None]:
+    """:func:`evolve_axes`, and ``ϖ`` of the first run (unwrapped step by step) at the times, or ``None``."""
     times = as_finite(times, "times")
     runs = 1 if isinstance(model, SpinAxisModel) else len(model)
     s0 = np.broadcast_to(as_finite(s0, "s0"), (runs, 3)) if np.ndim(s0) == 1 else np.asarray(s0)
@@ -698,6 +779,7 @@ def evolve_axes(
     _check_step(step)
     if times.size:  # one request for the whole span: an N-body orbit integrates it in one run
         orbit.normal(np.array([min(float(times[0]), 0.0), max(float(times[-1]), 0.0)]))
+    step = _largest_step(orbit, model, times, runs, step)
     n0 = orbit.normal(0.0)
     start = general_precession(s0[:, None, :], n0, s0, n0)[:, 0]  # p_A of J2000 itself: 0 to round-off
     axes = np.empty((runs, times.size, 3))
@@ -705,22 +787,35 @@ def evolve_axes(
     at_zero = times == 0
     axes[:, at_zero] = s0[:, None, :]
     p[:, at_zero] = 0.0
+    varpi = None
+    if perihelion:
+        varpi0 = _perihelion(s0[:1], n0[None, :], orbit.eccentricity_vector(np.zeros(1)))
+        varpi = np.empty(times.size)
+        varpi[at_zero] = varpi0[0]
     for side in (np.flatnonzero(times > 0), np.flatnonzero(times < 0)[::-1]):
         if side.size == 0:
             continue
         knots = np.concatenate([[0.0], times[side]])
-        previous, turns = start, np.zeros(runs)
+        previous, turns = start[:, None], np.zeros((runs, 1))
+        if perihelion:
+            previous = np.concatenate([previous, varpi0[None, :]])
+            turns = np.zeros((runs + 1, 1))
         for ends, out, last in _sweep(orbit, model, knots, s0, step, order):
-            raw = general_precession(out, orbit.normal(ends), s0, n0)
-            jumps = np.diff(np.concatenate([previous[:, None], raw], axis=1), axis=1)
-            # a wrap from +π to −π is a turn forward: count it, and add whole turns at the end
-            total = turns[:, None] + np.cumsum(np.round(-jumps / (2 * np.pi)), axis=1)
-            previous, turns = raw[:, -1], total[:, -1]
+            n = orbit.normal(ends)
+            raw = general_precession(out, n, s0, n0)
+            if perihelion:
+                raw = np.concatenate([raw, _perihelion(out[0], n, orbit.eccentricity_vector(ends))[None, :]])
+            jumps = np.diff(np.concatenate([previous, raw], axis=1), axis=1)
+            # a wrap from +π to −π (or 2π to 0) is a turn forward: count it, add whole turns at the end
+            total = turns + np.cumsum(np.round(-jumps / (2 * np.pi)), axis=1)
+            previous, turns = raw[:, -1:], total[:, -1:]
             hit = last >= 0
             rows = side[last[hit] - 1]
             axes[:, rows] = out[:, hit]
-            p[:, rows] = raw[:, hit] + 2 * np.pi * total[:, hit] - start[:, None]
-    return axes, p
+            p[:, rows] = raw[:runs, hit] + 2 * np.pi * total[:runs, hit] - start[:, None]
+            if perihelion:
+                varpi[rows] = raw[runs, hit] + 2 * np.pi * total[runs, hit]
+    return axes, p, varpi
 
 
 def build_model(
