@@ -165,6 +165,18 @@ VALID: dict[str, Valid] = {
 #: triangle inequality) or runs, with one warning line naming the triangle inequality.
 WARNS = {("--moments", "1e300")}
 
+#: Requests refused for their size (issue 26): (command, case, argument line).
+REFUSALS = (
+    ("obliquity", "steps", "obliquity earth --orbit secular --span -1e12 0 --step 1e10 --output {out}"),
+    ("obliquity", "rows", "obliquity earth --span -190000 0 --step 0.0001 --format table --output {out}"),
+    ("nutation", "time", "nutation earth --span 0 200000 --step 1000 --output {out}"),
+    ("precession", "memory", "precession earth --integrate 1e9 --output {out}"),
+    ("portrait cassini", "levels", "portrait cassini --levels 100000000 --out {out}"),
+    ("portrait phase", "levels", "portrait phase --body eros --levels 100000 --out {out}"),
+    ("portrait sphere", "levels", "portrait sphere --body eros --levels 100000 --out {out}"),
+    ("portrait precession", "points", "portrait precession --moments 1 1 1.5 --steps 100000000 --out {out}"),
+)
+
 INPUT_CSV = "phi,theta,psi,Phi,Theta,Psi\n0.3,0.8,1.2,0.5,0.2,0.9\n1.0,0.41,0.0,0.9,0.0,0.98\n"
 BAD_NUMBERS = ("nan", "inf", "-inf", "-1e300", "1e300")
 PATH_FLAGS = ("--out", "--output", "--input")
@@ -248,6 +260,10 @@ def mutations() -> list:
                     ("empty", ""),
                 ):
                     add(name, "output", f"{k}:{case}", (*argv[:i], path, *argv[i + 1 :]))
+    # Requests too large for memory or time, or drawing without bound (issue 26), refused before
+    # any work with what they would need.
+    for name, case, line in REFUSALS:
+        add(name, "size", case, tuple(line.split()))
     # Positional choices (precession's body) and an unknown sub-command.
     add("precession", "choice", "body", ("precession", "pluto"))
     add("bodies", "choice", "name", ("bodies", "vulcan"))

@@ -57,6 +57,7 @@ from andoyer.planetary.nutation import (
     minimum_span,
     numeric_terms,
     nutation,
+    nutation_cost,
     nutation_series,
     terms_table,
 )
@@ -90,6 +91,8 @@ from andoyer.planetary.spin_axis import (
     evolve_axes,
     general_precession,
     output_times,
+    run_cost,
+    spin_axis_blocks,
     spin_axis_history,
 )
 from andoyer.planetary.tides import (
@@ -414,6 +417,21 @@ CASES = [
         "expected",
     ),
     (output_times, output_times, (0.0, 1.0, -1.0), ValueError, "expected a positive"),
+    # -- their cost, known before the work (issue 26)
+    (run_cost, run_cost, (VondrakEcliptic(), [NAN]), ValueError, "expected finite"),
+    (run_cost, P(run_cost, step=INF), (VondrakEcliptic(), [0.0]), ValueError, "expected a positive finite"),
+    (run_cost, run_cost, (VondrakEcliptic(), [1.0, 0.0]), ValueError, "expected increasing"),
+    (
+        andoyer.planetary.spin_axis.check_run,
+        andoyer.planetary.spin_axis.check_run,
+        (SecularOrbit("earth"), [0.0, 1e15], "a test"),
+        ValueError,
+        "expected a test of at most about 3.6 hours",
+    ),
+    (spin_axis_blocks, spin_axis_blocks, (VondrakEcliptic(), "pluto", [0.0]), ValueError, "expected"),
+    (spin_axis_blocks, P(spin_axis_blocks, rows=0), (VondrakEcliptic(), "earth", [0]), ValueError, "whole"),
+    (nutation_cost, nutation_cost, ([NAN],), ValueError, "expected finite"),
+    (nutation_cost, P(nutation_cost, method="x"), ([0.0],), ValueError, "expected method"),
     (output_times, output_times, (0.0, HUGE, 1e-300), ValueError, "expected"),
     # -- the Earth–Moon tides
     (ConstantTimeLag, ConstantTimeLag, (-1.0,), ValueError, "expected k2"),
