@@ -9,6 +9,19 @@ spheres, steady spins and rest.  See :mod:`andoyer.free.motion`.
 :class:`FreeRotation` works on :class:`~andoyer.State` arrays, which sit above the
 array kernels (the state's time-dependent charts use :class:`FreeMotion`), so it loads
 on first use: importing ``andoyer.free.motion`` does not import the state.
+
+Layout.  :mod:`~andoyer.free.motion` (:class:`FreeMotion`) routes each state to its regime,
+one subpackage each: :mod:`~andoyer.free.triaxial` (SAM and LAM),
+:mod:`~andoyer.free.separatrix` and :mod:`~andoyer.free.uniform` (axisymmetric bodies,
+spheres, steady spins, rest), on what they share, :mod:`~andoyer.free.common` (the working
+frame, the scaling, the phases, the blocks of states × epochs).  One naming rule holds in
+every folder, so that a step's name leads to its file on every backend
+(:mod:`~andoyer.free.backends`): ``<step>.py`` holds the kernels of the step, each formula
+written once (plain arithmetic that runs compiled on floats and on numpy arrays), and
+``<step>_compiled.py``, ``<step>_numpy.py`` its drivers on the ``"compiled"`` and
+``"numpy"`` backends (``triaxial/setup.py``, ``triaxial/setup_compiled.py``,
+``triaxial/setup_numpy.py``).  The ``"scalar"`` backend, one step of one state, is
+:mod:`~andoyer.free.step_scalar`.
 """
 
 from __future__ import annotations

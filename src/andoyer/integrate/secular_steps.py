@@ -32,7 +32,7 @@ The steps are equal and span ``[0, t_K]``; every output time is reached by one p
 step off the grid (order ``p`` accurate, and not fed back), so dense outputs cost one
 step each and do not shorten the grid's step.
 
-The loop is compiled by :func:`andoyer.free.lean.jit` when numba is installed; the
+The loop is compiled by :func:`andoyer.free.step_scalar.jit` when numba is installed; the
 same source runs interpreted on arrays of states (one Python loop over the steps).
 Compiled, a state's loop (:func:`_advance_compiled`) takes ``sin φ`` and ``1 − cos φ`` of
 the small rotation angles from short series and the drifting normals by the addition
