@@ -1,30 +1,35 @@
 """The implementations (backends) of the exact torque-free solution: their names, which run here, the default.
 
 The closed-form solution runs three ways, each a *backend* chosen by name. The compiled and the
-numpy backends call the same kernels, each formula written once (:mod:`andoyer.free.common`:
-the frame, the set-up, the series, the uniform motions; :mod:`andoyer.regime`,
-:mod:`andoyer.special.compensated`): compiled per state in numba loops, or on whole arrays.
-The scalar backend is a different algorithm for a different use (one short step from a state
-that has just changed, with Carlson's integrals instead of theta series):
+numpy backends call the same kernels, each formula written once (``<step>.py`` in the folders
+of :mod:`andoyer.free`; :mod:`andoyer.regime`, :mod:`andoyer.special.compensated`): compiled
+per state in numba loops, or on whole arrays.  A backend's drivers carry its name,
+``<step>_<backend>.py``.  The scalar backend is a different algorithm for a different use (one
+short step from a state that has just changed, with Carlson's integrals instead of theta
+series):
 
 ``"compiled"``
-    numba loops: the classification and exact scaling (:mod:`~andoyer.free.common.scaling_compiled`),
-    the set-up of triaxial states (:mod:`~andoyer.free.triaxial.setup_compiled`), their evaluation
-    (:mod:`~andoyer.free.triaxial.evaluate_compiled`) and the fill of their periodic representation
-    (:func:`andoyer.free.triaxial.periodic_numpy.fill`), and the uniform rotations (axisymmetric bodies,
-    spheres, steady spins, rest: :mod:`~andoyer.free.uniform.evaluate_compiled`).  Available when numba is
+    numba loops, ``*_compiled.py``: the classification and exact scaling
+    (:mod:`~andoyer.free.common.scaling_compiled`), the set-up of triaxial states
+    (:mod:`~andoyer.free.triaxial.setup_compiled`), their evaluation
+    (:mod:`~andoyer.free.triaxial.evaluate_compiled`) and the fill of their periodic
+    representation (:mod:`~andoyer.free.triaxial.periodic_compiled`), and the uniform rotations
+    (axisymmetric bodies, spheres, steady spins, rest: :mod:`~andoyer.free.uniform.setup_compiled`,
+    :mod:`~andoyer.free.uniform.evaluate_compiled`).  Available when numba is
     (:data:`andoyer._jit.NUMBA`: installed, and not switched off by ``ANDOYER_NUMBA=0``).
 ``"numpy"``
-    vectorised numpy on arrays of states: :func:`~andoyer.free.common.scaling_numpy.normalise` and
-    :func:`~andoyer.free.common.scaling_numpy.classify_scaled`, :func:`andoyer.free.triaxial.setup_numpy.triaxial`,
-    :func:`andoyer.free.triaxial.evaluate_numpy.evaluate`, :mod:`andoyer.free.uniform` and
-    :func:`andoyer.free.triaxial.periodic_numpy.fill_numpy` (whose
-    piecewise kernels, :mod:`andoyer.free.triaxial.periodic`, numba compiles for arrays when
-    it is installed).  Always available.
+    vectorised numpy on arrays of states, ``*_numpy.py``:
+    :mod:`~andoyer.free.common.scaling_numpy`, :mod:`~andoyer.free.triaxial.setup_numpy`,
+    :mod:`~andoyer.free.triaxial.evaluate_numpy`, :mod:`~andoyer.free.uniform.setup_numpy`,
+    :mod:`~andoyer.free.uniform.evaluate_numpy` and
+    :func:`andoyer.free.triaxial.periodic_numpy.fill_numpy` (whose piecewise kernels,
+    :mod:`andoyer.free.triaxial.periodic`, numba compiles for arrays when it is installed).
+    Always available.
 ``"scalar"``
-    one state, one step, no set-up: :mod:`andoyer.free.step_scalar` (``_step_one``, compiled by numba
-    when it is available, plain Python otherwise), behind :func:`andoyer.free.step_scalar.free_step`
-    and the compiled splitting loop (:mod:`andoyer.integrate.split_kernel`).  Always available.
+    one state, one step, no set-up: :mod:`andoyer.free.step_scalar` (``_step_one``, compiled by
+    numba when it is available, plain Python otherwise), behind
+    :func:`andoyer.free.step_scalar.free_step` and the compiled splitting loop
+    (:mod:`andoyer.integrate.split_kernel`).  Always available.
 
 :class:`~andoyer.free.FreeMotion` offers the first two (:data:`MOTION_BACKENDS`, its keyword
 ``backend``; by default :func:`default`, the fastest available).  Both treat the separatrix

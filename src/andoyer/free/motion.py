@@ -372,10 +372,11 @@ def _flat(a, shape):
 
 
 class _NumpyPieces:
-    """The numpy backend's kernel of periodic groups: :func:`andoyer.free.triaxial.periodic_numpy.fill_numpy`, vectorised.
+    """The numpy backend's kernel of periodic groups: the vectorised fill (``periodic_numpy.fill_numpy``).
 
-    :func:`andoyer.free.triaxial.periodic_numpy.evaluate` fills through the compiled per-epoch loop whenever
-    numba is installed; :func:`andoyer.free.common.blocks.evaluate_blocks` calls only this ``fill``.
+    :func:`andoyer.free.triaxial.periodic_numpy.evaluate` fills through the compiled per-epoch
+    loop whenever numba is installed; :func:`andoyer.free.common.blocks.evaluate_blocks` calls
+    only this ``fill``.
     """
 
     fill = staticmethod(_periodic.fill_numpy)

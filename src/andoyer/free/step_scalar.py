@@ -1,4 +1,4 @@
-r"""A lean exact free flow for one step: scalar kernel, compiled by numba when it is installed.
+r"""The scalar backend: the exact free flow over one step, compiled by numba when it is installed.
 
 :class:`andoyer.free.FreeMotion` prepares per-state constants for evaluation at many
 epochs (double-double phases, theta series) and costs ~10 ms to build for a single
@@ -6,7 +6,7 @@ state. A splitting integrator needs the opposite: one short step from a state th
 previous kick has just changed. This module advances ``(q, m)`` by ``h`` with the same
 closed-form solution written for scalars:
 
-* triaxial SAM/LAM, in the working frame of :mod:`andoyer.free.common.polhode_numpy` (axis 3 the
+* triaxial SAM/LAM, in the working frame of :mod:`andoyer.free.common.polhode` (axis 3 the
   polhode axis, ``m₃ > 0``, ``s = +1`` SAM, ``−1`` LAM):
   ``m = (a₁ cn τ, s a₂ sn τ, a₃ dn τ)``, ``τ = τ₀ + ω h``, ``am τ`` by the AGM;
 * the attitude ``q(h) = q₀ ⊗ S(m₀)* ⊗ R_e(Δψ) ⊗ S(m(h))`` with ``S(m)`` the shortest
@@ -22,8 +22,8 @@ closed-form solution written for scalars:
   the cancellation near pure spin costs only ``eps·|Δφ|`` in absolute angle), with
   Carlson's ``R_F``, ``R_J`` (DLMF 19.25.14–15, 19.36);
 * two equal moments (and the sphere): ``q(h) = q₀ ⊗ R_{m̂₀}(G h/I_t) ⊗ R_e(λ h)``,
-  ``λ = m_e (1/I_s − 1/I_t)``, ``m(h) = R_e(−λ h) m₀``: the kernels of
-  :mod:`andoyer.free.uniform.setup` that :class:`~andoyer.free.FreeMotion` evaluates, at ``t = h``;
+  ``λ = m_e (1/I_s − 1/I_t)``, ``m(h) = R_e(−λ h) m₀``: the kernels of :mod:`andoyer.free.uniform`
+  (``setup``, ``evaluate``) that :class:`~andoyer.free.FreeMotion` evaluates, at ``t = h``;
 * steady spin about the polhode axis: ``q(h) = q₀ ⊗ R_e(G w₃ h)``.
 
 States on (or within ``10⁻¹²`` relative of) the separatrix are flagged and left to

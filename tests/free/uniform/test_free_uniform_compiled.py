@@ -1,4 +1,4 @@
-"""andoyer.free.uniform.evaluate_compiled (regular precession, steady spins) against numpy and closed forms."""
+"""The compiled uniform motions (regular precession, steady spins) against numpy and closed forms."""
 
 from __future__ import annotations
 

@@ -4,7 +4,7 @@ The numpy path (:mod:`andoyer.free.uniform`) applies the kernels to whole arrays
 component; the compiled path (:mod:`andoyer.free.uniform.evaluate_compiled`, and a loop here) calls them
 per state, compiled when numba is (plain Python on floats with ``ANDOYER_NUMBA=0``).  Both must
 agree bit for bit, the sign of zeros included; the values themselves are checked against
-closed forms in ``test_free_compiled_uniform.py`` and against a Taylor reference in
+closed forms in ``test_free_uniform_compiled.py`` and against a Taylor reference in
 ``test_free_accuracy.py``.
 """
 

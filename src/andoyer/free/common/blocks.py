@@ -7,8 +7,9 @@ one time per state, a grid of states by epochs); any other broadcast becomes one
 output element.  Each block of about ``_CHUNK`` elements calls the kernel once with the
 constants of its rows shaped ``(r, 1)``, so that numpy broadcasts them along the epochs.
 
-The kernels solve the state scaled by powers of two (:func:`andoyer.free.common.scaling_numpy.normalise`):
-times enter as ``2^{b−a} t`` and momenta leave as ``2^b m``, both exact.
+The kernels solve the state scaled by powers of two
+(:func:`andoyer.free.common.scaling_numpy.normalise`): times enter as ``2^{b−a} t`` and momenta
+leave as ``2^b m``, both exact.
 """
 
 from __future__ import annotations
@@ -32,9 +33,9 @@ class Group(NamedTuple):
     kernel : callable
         ``kernel(constants, t, attitude) -> (m, q)`` on component tuples, the constants
         of the block's states shaped as rows.  A kernel with an attribute ``fill``
-        (compiled, :func:`andoyer.free.triaxial.evaluate_compiled.fill`) is instead handed the whole
-        table, the positions, the output rows, the unscaled times, the exponents and the
-        output arrays, and fills them itself.
+        (compiled, e.g. :func:`andoyer.free.triaxial.evaluate_compiled.fill`) is instead handed
+        the whole table, the positions, the output rows, the unscaled times, the exponents and
+        the output arrays, and fills them itself.
     members : ndarray of int
         Flat indices of the states.
     const : NamedTuple

@@ -1,11 +1,11 @@
 """Per-state constant tables of the kernels: selecting states and shaping for broadcast.
 
-Each kernel (:mod:`andoyer.free.triaxial`, :mod:`andoyer.free.separatrix`,
-:mod:`andoyer.free.uniform`) keeps its constants as a NamedTuple of arrays whose last
-axis runs over states (scalars ``(N,)``, vectors ``(k, N)``), possibly nested
-(:class:`andoyer.free.common.cycles_numpy.Frequency`, plain tuples).  Evaluation takes a block of
-states as rows against epochs as columns, so the constants are shaped ``(r, 1)`` and
-``(k, r, 1)``.
+The numpy driver of each regime (:mod:`andoyer.free.triaxial.setup_numpy`,
+:mod:`andoyer.free.separatrix.setup_numpy`, :mod:`andoyer.free.uniform.setup_numpy`) keeps its
+constants as a NamedTuple of arrays whose last axis runs over states (scalars ``(N,)``, vectors
+``(k, N)``), possibly nested (:class:`andoyer.free.common.cycles_numpy.Frequency`, plain
+tuples).  Evaluation takes a block of states as rows against epochs as columns, so the
+constants are shaped ``(r, 1)`` and ``(k, r, 1)``.
 """
 
 from __future__ import annotations

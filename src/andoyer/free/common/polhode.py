@@ -1,16 +1,17 @@
 r"""The polhode-centred working frame, its invariants and the attitude anchor: one kernel each.
 
-Conventions of :mod:`andoyer.free.common.polhode_numpy`: working axis ``j`` is ``σⱼ b_{pⱼ}`` (body axis
-``pⱼ``, sign ``σⱼ``, ``σ₁ = +1``, a proper rotation ``P``, ``m_w = P m_body``), axis 3 the
+Conventions of :mod:`andoyer.free.common.polhode_numpy`: working axis ``j`` is ``σⱼ b_{pⱼ}``
+(body axis ``pⱼ``, sign ``σⱼ``, ``σ₁ = +1``, a proper rotation ``P``, ``m_w = P m_body``), axis 3 the
 polhode axis (``C`` for SAM and the separatrix, ``A`` for LAM), axis 2 the middle one, and
 ``m₃ ≥ 0``; ``s = +1`` SAM, ``−1`` LAM; ``e_{ij} = s(1/I_i − 1/I_j)``, ``P₁, P₂, P₃`` the
 invariants, ``G = |m|``, ``w₃ = 1/I₃``; double-doubles are ``(hi, lo)`` tuples.
 
 Each kernel is plain arithmetic with :func:`andoyer._jit.select` for its branches (axis indices
 are integers, chosen by ``select`` too), registered with :func:`andoyer._jit.jitable`: the
-compiled set-up (:mod:`andoyer.free.triaxial.setup_compiled`) and the lean step (:mod:`andoyer.free.step_scalar`)
-inline them on floats, :func:`andoyer.free.common.polhode_numpy.polhode_frame` and
-:func:`andoyer.free.common.polhode_numpy.attitude_anchor` call them on arrays.  The double-double operations
+compiled drivers (:mod:`andoyer.free.triaxial.setup_compiled`,
+:mod:`andoyer.free.triaxial.evaluate_compiled`, :mod:`andoyer.free.common.polhode_compiled`) and
+the scalar step (:mod:`andoyer.free.step_scalar`) inline them on floats, the numpy driver
+(:mod:`andoyer.free.common.polhode_numpy`) calls them on arrays.  The double-double operations
 are :mod:`andoyer.special.compensated` (error-free products by fused multiply-add compiled, by
 Dekker's splitting on arrays: the same exact values), so the two ways give the same bits.
 """
@@ -312,9 +313,9 @@ def anchor(q0x, q0y, q0z, q0w, pq, m1, m2, m3, g):
 def attitude(cz, sz, u, v, va, vb, sn, cn, m3, G):
     r"""Attitude ``(U cos + V sin)(Δψ/2) ⊗ (v, G + m₃)/√(2G(G + m₃))``, ``v = v_a sn + v_b cn``.
 
-    The per-epoch end of the anchored attitude (:func:`andoyer.free.common.polhode`
-    builds ``U``, ``V``): the constant quaternions turned by the half angle, times the
-    body-frame shortest arc from the momentum to ``+z``.
+    The per-epoch end of the anchored attitude (:func:`anchor` builds ``U``, ``V``): the
+    constant quaternions turned by the half angle, times the body-frame shortest arc from the
+    momentum to ``+z``.
 
     Parameters
     ----------

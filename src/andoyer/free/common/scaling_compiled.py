@@ -1,8 +1,9 @@
 """Regimes and power-of-two scaling of many states in one compiled loop.
 
 :func:`andoyer.regime.classify` and :func:`andoyer.free.common.scaling_numpy.normalise` for
-validated inputs, per state in a numba kernel: the same exponents and the same scaled
-values (:func:`andoyer.free.common.scaling_numpy.scale_exponents`) and the same regimes, from the same kernel
+validated inputs, per state in a numba kernel (the compiled driver of
+:mod:`~andoyer.free.common.scaling`): the same exponents and the same scaled values
+(:func:`andoyer.free.common.scaling.scale_exponents`) and the same regimes, from the same kernel
 (:func:`andoyer.regime.regime_code`, compiled here, run on arrays there), so the decision is
 the same bit for bit.  :class:`andoyer.free.FreeMotion` uses it when numba is installed.
 """

@@ -1,8 +1,9 @@
 r"""The columns of the compiled triaxial table: one row of floats per body, each column named here.
 
-:func:`andoyer.free.triaxial.setup_compiled.triaxial_table` writes one row per triaxial state and
-:mod:`andoyer.free.triaxial.evaluate_compiled` (and :mod:`andoyer.free.triaxial.periodic_numpy`) read it; the constants of a
-state lie together in memory, as the compiled evaluation reads them.  Every index into the
+:func:`andoyer.free.triaxial.setup_compiled.triaxial_table` writes one row per triaxial state
+and :mod:`andoyer.free.triaxial.evaluate_compiled` (and
+:mod:`andoyer.free.triaxial.periodic_numpy`) read it; the constants of a state lie together in
+memory, as the compiled evaluation reads them.  Every index into the
 table is one of the integer constants below: numba treats a module-level ``int`` as a
 compile-time constant, so ``c[r, Q]`` or ``c[r, WA + n]`` inside a kernel costs what
 ``c[r, 6]`` did.  A field of several columns is named by its first column and has a width
@@ -49,7 +50,7 @@ name                width  meaning
 ==================  =====  ======================================================================
 
 :data:`FIELDS` lists them as ``(name, first column, width)`` in column order; they tile
-``range(NCOLUMNS)`` (``tests/free/test_free_table.py``).
+``range(NCOLUMNS)`` (``tests/free/triaxial/test_free_triaxial_columns.py``).
 """
 
 from __future__ import annotations

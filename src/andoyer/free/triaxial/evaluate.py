@@ -17,7 +17,7 @@ complementary nome, the phase reduced by half periods to ``|τ| ≤ K``) sums of
 only (branches on the number of terms, a Python integer), so the same text runs on
 floats in the compiled loops of :mod:`andoyer.free.triaxial.evaluate_compiled` (registered with
 :func:`andoyer._jit.jitable`) and on whole arrays in :mod:`andoyer.free.triaxial.evaluate_numpy`, with the
-same bits (``tests/free/test_free_kernels_series.py``).
+same bits (``tests/free/triaxial/test_free_triaxial_evaluate.py``).
 
 The number of terms is a parameter: the compiled path takes them all (a per-state count
 for the growing ``ϑ₁`` series), the numpy path the count of its block (terms below 1e-18

@@ -308,7 +308,8 @@ def fill_numpy(const, pos, rows, t, scale, outs):
             m_out[o, cols] = np.stack(horner(piece, 0, u)[:3], axis=-1)
             if q_out is not None:
                 sb, cb = sincos_cycles(0.5 * cycles(g_nu, tk, offset=p[5]))
-                q_out[o, cols] = np.stack(turn_about(p[8], p[9], p[10], sb, cb, *horner(piece, 4, u)), axis=-1)
+                quat = turn_about(p[8], p[9], p[10], sb, cb, *horner(piece, 4, u))
+                q_out[o, cols] = np.stack(quat, axis=-1)
 
 
 def evaluate(const, rows, t, attitude=True):

@@ -18,7 +18,7 @@ So the same text runs on floats inside numba kernels (registered with
 :func:`andoyer._jit.jitable`: the compiled loops of :mod:`andoyer.free.uniform.evaluate_compiled`
 inline them) and on whole numpy arrays, one array per component (the numpy path,
 :mod:`andoyer.free.uniform`); both give the same bits
-(``tests/free/test_free_uniform_kernels.py``).
+(``tests/free/uniform/test_free_uniform_kernels.py``).
 
 Vectors and quaternions are passed as anything indexed by component: a 3- or 4-tuple, a
 row of a table, or an array whose first axis holds the components.
