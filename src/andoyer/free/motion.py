@@ -3,7 +3,7 @@
 :class:`FreeMotion` prepares the per-state constants once (regime, working frame,
 frequencies in double-double, theta-series coefficients) and then evaluates the body
 angular momentum and the attitude at any times, vectorised and in cache-sized chunks.
-Each state is routed to one kernel:
+Each state is routed to its regime:
 
 * :mod:`andoyer.free.triaxial` — SAM and LAM of a triaxial body (circular theta series
   for ``k² ≤ 1/2``, hyperbolic for ``k² > 1/2``);
@@ -15,9 +15,10 @@ The backend (:mod:`andoyer.free.backends`, the keyword ``backend``) decides how:
 ``"compiled"``, the default when numba is installed (:data:`andoyer._jit.NUMBA`), states are
 classified, and the triaxial ones prepared and evaluated, in compiled loops
 (:mod:`~andoyer.free.common.scaling_compiled`, :mod:`~andoyer.free.triaxial.setup_compiled`,
-:mod:`~andoyer.free.triaxial.evaluate_compiled`: the same formulas and accuracy, ~1.5 µs a body to set up
-and evaluate once, against ~10 µs), and so are the uniform motions
-(:mod:`~andoyer.free.uniform.evaluate_compiled`); with ``"numpy"``, by the vectorised kernels above.
+:mod:`~andoyer.free.triaxial.evaluate_compiled`: the same formulas and accuracy, ~1.5 µs a body
+to set up and evaluate once, against ~10 µs), and so are the uniform motions
+(:mod:`~andoyer.free.uniform.setup_compiled`, :mod:`~andoyer.free.uniform.evaluate_compiled`);
+with ``"numpy"``, by the vectorised drivers of the same kernels (``*_numpy``).
 
 With many epochs per state (:attr:`FreeMotion.periodic_epochs`), the triaxial states are
 evaluated through a piecewise-polynomial representation of one period built once per state
@@ -124,8 +125,8 @@ class FreeMotion:
     periodic_epochs : float
         Epochs per state from which triaxial states are evaluated through a
         piecewise-polynomial representation of one period, built once
-        (:mod:`andoyer.free.triaxial.periodic_numpy`: same accuracy, several times faster per epoch);
-        below it, directly.  A class default (4096 with numba, ``inf`` without, where the
+        (:mod:`andoyer.free.triaxial.periodic_numpy`: same accuracy, several times faster per
+        epoch); below it, directly.  A class default (4096 with numba, ``inf`` without, where the
         vectorised direct path is faster; ``inf`` too for the numpy backend with numba),
         settable per instance (``0``: always, ``inf``: never).
 
@@ -388,7 +389,7 @@ def _triaxial_groups(moments, m0, lam, q0, idx, compiled):
     ``compiled`` (the compiled backend): one compiled loop builds the constants and a
     compiled kernel evaluates them (:mod:`andoyer.free.triaxial.setup_compiled`,
     :mod:`andoyer.free.triaxial.evaluate_compiled`); else (numpy) the vectorised
-    :mod:`andoyer.free.triaxial` and :mod:`andoyer.free.triaxial.evaluate_numpy`.  Returns
+    :mod:`andoyer.free.triaxial.setup_numpy` and :mod:`andoyer.free.triaxial.evaluate_numpy`.  Returns
     the indices kept, those found to be steady spins (a wobble ``P₁`` that underflows),
     the ``(kernel, indices, constants)`` groups, the :class:`Triaxial` constants and, where
     the compiled set-up skipped the precession rate (no attitude), what it needs to

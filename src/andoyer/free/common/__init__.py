@@ -10,8 +10,8 @@ written once, in ``<step>.py``, and its drivers in ``<step>_<backend>.py``:
 ``polhode``               the polhode-centred working frame, its double-double
                           invariants, the attitude anchor and the anchored attitude
                           (kernels)
-``polhode_numpy``         the frame on arrays (:class:`~andoyer.free.common.polhode_numpy.PolhodeFrame`),
-                          quaternions on component arrays
+``polhode_numpy``         the frame on arrays (``PolhodeFrame``), quaternions on
+                          component arrays
 ``polhode_compiled``      the steady-spin limit of the polhode per state (numba)
 ``cycles``                a phase ``ν t`` reduced modulo one cycle, ``sin``/``cos`` of it
                           (kernels)

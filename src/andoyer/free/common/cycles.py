@@ -20,11 +20,11 @@ __all__ = ["phase", "sincos_cycles"]
 
 @jitable
 def phase(hi, lo, t):
-    """``ν t`` reduced to ``[-1/2, 1/2]`` cycles, per state: the kernel form of :func:`cycles`.
+    """``ν t`` reduced to ``[-1/2, 1/2]`` cycles, per state: the kernel form of ``cycles``.
 
-    The same value as :func:`cycles` (the error of ``ν_hi t`` is exact either way: a
-    fused multiply-add when compiled, Dekker's product here), without the pre-split
-    frequency that pays off only on arrays of epochs; compiled loops call it inline.
+    The same value as :func:`andoyer.free.common.cycles_numpy.cycles` (the error of ``ν_hi t`` is
+    exact either way: a fused multiply-add when compiled, Dekker's product here), without the
+    pre-split frequency that pays off only on arrays of epochs; compiled loops call it inline.
 
     Parameters
     ----------
@@ -64,8 +64,6 @@ _SIN = (
     -2.190318333528108e-05,
     7.694706725679123e-07,
 )
-
-
 _COS = (
     1.0,
     -4.934802200544676,

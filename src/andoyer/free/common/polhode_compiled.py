@@ -33,8 +33,8 @@ def polhode_limit(moments, m0, lam):
     """Period and precession rate of a steady spin about the polhode axis: the limit of nearby polhodes.
 
     ``ω = G √(e₁₃ e₂₃)``, period ``2π/ω`` and rate ``G w₃ + s ω`` in the working frame of
-    :func:`andoyer.free.common.polhode_numpy.polhode_frame` (the numbers :class:`andoyer.free.FreeMotion`
-    forms from it without numba).
+    :func:`andoyer.free.common.polhode_numpy.polhode_frame` (the numbers
+    :class:`andoyer.free.FreeMotion` forms from it without numba).
 
     Parameters
     ----------

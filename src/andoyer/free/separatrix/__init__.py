@@ -17,8 +17,9 @@ arctan(√((1−c)/(1+c)) tanh(τ/2))``,
       \Big[\arctan\big(r\tanh\tfrac{\tau}{2}\big)\Big]_{\tau_0}^{\tau},
    \qquad r = \sqrt{\frac{1-c}{1+c}} .
 
-The attitude is assembled as in the triaxial case (:func:`andoyer.free.common.polhode_numpy.attitude_anchor`).
-The steady spin about ``±B`` (``m₁ = m₃ = 0``) is handled by :mod:`andoyer.free.uniform`.
+The attitude is assembled as in the triaxial case
+(:func:`andoyer.free.common.polhode_numpy.attitude_anchor`).  The steady spin about ``±B``
+(``m₁ = m₃ = 0``) is handled by :mod:`andoyer.free.uniform`.
 
 Both backends of :class:`andoyer.free.FreeMotion` use the numpy driver here (few states lie on
 the separatrix), in the files named by the rule of :mod:`andoyer.free`:

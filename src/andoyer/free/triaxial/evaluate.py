@@ -10,14 +10,14 @@ circular series (``k² ≤ 1/2``) are
    \frac{ϑ_2}{…} ∝ \sum_n q^{n(n+1)} \cos(2n+1)x,\quad
    ϑ_{3,4} = 1 + 2 \sum_n (±1)^n q^{n^2} \cos 2nx,
 
-and the hyperbolic ones (``k² > 1/2``, Jacobi's imaginary transformation, ``q`` the
-complementary nome, the phase reduced by half periods to ``|τ| ≤ K``) sums of
-``q^{n²} zⁿ`` and ``q^{n²±n} ρⁿ`` with ``ρ = e^{−2y}``, ``z = q/ρ``
-(:mod:`andoyer.free.triaxial.evaluate_numpy` derives both).  Each formula is one function of arithmetic
-only (branches on the number of terms, a Python integer), so the same text runs on
-floats in the compiled loops of :mod:`andoyer.free.triaxial.evaluate_compiled` (registered with
-:func:`andoyer._jit.jitable`) and on whole arrays in :mod:`andoyer.free.triaxial.evaluate_numpy`, with the
-same bits (``tests/free/triaxial/test_free_triaxial_evaluate.py``).
+and the hyperbolic ones (``k² > 1/2``, Jacobi's imaginary transformation, ``q`` the complementary
+nome, the phase reduced by half periods to ``|τ| ≤ K``) sums of ``q^{n²} zⁿ`` and ``q^{n²±n} ρⁿ``
+with ``ρ = e^{−2y}``, ``z = q/ρ`` (:mod:`andoyer.free.triaxial.evaluate_numpy` derives both).  Each
+formula is one function of arithmetic only (branches on the number of terms, a Python integer), so
+the same text runs on floats in the compiled loops of :mod:`andoyer.free.triaxial.evaluate_compiled`
+(registered with :func:`andoyer._jit.jitable`) and on whole arrays in
+:mod:`andoyer.free.triaxial.evaluate_numpy`, with the same bits
+(``tests/free/triaxial/test_free_triaxial_evaluate.py``).
 
 The number of terms is a parameter: the compiled path takes them all (a per-state count
 for the growing ``ϑ₁`` series), the numpy path the count of its block (terms below 1e-18

@@ -58,7 +58,8 @@ def _row(piece, j, k):
 def _coefficients(piece, k):
     """Components ``k … k+3`` of a piece as a tuple of rows (values, so that loops keep them in registers).
 
-    Written out for ``DEGREE = 9`` (ten rows; ``tests/free/triaxial/test_free_triaxial_periodic.py`` checks it).
+    Written out for ``DEGREE = 9`` (ten rows; ``tests/free/triaxial/test_free_triaxial_periodic.py``
+    checks it).
     """
     return (_row(piece, 0, k), _row(piece, 1, k), _row(piece, 2, k), _row(piece, 3, k), _row(piece, 4, k),
             _row(piece, 5, k), _row(piece, 6, k), _row(piece, 7, k), _row(piece, 8, k), _row(piece, 9, k))

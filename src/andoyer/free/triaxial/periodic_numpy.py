@@ -203,8 +203,8 @@ def _pieces_for(group, attitude):
 def _axis(const, sel):
     """Unit vector ``n = V ⊗ U*`` of the angular momentum in the reference frame, per state ``sel``.
 
-    From the attitude's anchor (:func:`andoyer.free.common.polhode_numpy.attitude_anchor`: ``U = Q₀ ⊗ P``,
-    ``V = Q₀ ⊗ e_z ⊗ P``, so ``V ⊗ U* = Q₀ e_z Q₀*``, a pure unit quaternion).
+    From the attitude's anchor (:func:`andoyer.free.common.polhode_numpy.attitude_anchor`:
+    ``U = Q₀ ⊗ P``, ``V = Q₀ ⊗ e_z ⊗ P``, so ``V ⊗ U* = Q₀ e_z Q₀*``, a pure unit quaternion).
     """
     u = np.asarray(const.quat_u)[:, sel]
     v = np.asarray(const.quat_v)[:, sel]

@@ -1,7 +1,7 @@
 r"""The set-up formulas of the triaxial solution, one kernel each, for compiled floats and numpy arrays.
 
-Notation of :mod:`andoyer.free.triaxial` (working frame of :mod:`andoyer.free.common.polhode_numpy`, axis 3
-the polhode axis, ``s = +1`` SAM, ``−1`` LAM): ``e_{ij} = s(1/I_i − 1/I_j)``, ``P₁, P₂, P₃``
+Notation of :mod:`andoyer.free.triaxial` (working frame of :mod:`andoyer.free.common.polhode_numpy`,
+axis 3 the polhode axis, ``s = +1`` SAM, ``−1`` LAM): ``e_{ij} = s(1/I_i − 1/I_j)``, ``P₁, P₂, P₃``
 the invariants, ``G = |m|``, ``w₃ = 1/I₃``; double-doubles are ``(hi, lo)`` tuples.
 
 Each kernel is plain arithmetic with :func:`andoyer._jit.select` for its branches, registered

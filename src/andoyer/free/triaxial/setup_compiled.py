@@ -1,24 +1,22 @@
 """The constants of the triaxial solution, built body by body in one compiled loop.
 
-:func:`andoyer.free.triaxial.setup_numpy.triaxial` forms the constants of many bodies with numpy:
-a few hundred passes over the arrays, most of them double-double arithmetic (the working
-frame and invariants of :func:`andoyer.free.common.polhode_numpy.polhode_frame`, ``K`` and ``Π`` by the
-AGM, the frequencies), 6–10 µs a body.  Here the same formulas run per body in a numba
-kernel, about 1 µs a body: most of them are the very kernels the numpy set-up calls (the
-working frame, its invariants and the attitude anchor of :mod:`andoyer.free.common.polhode`,
-the formulas of :mod:`andoyer.free.triaxial.setup`,
-:func:`andoyer.special.theta.quotient_constants`), run on floats in the double-double
-arithmetic of :mod:`andoyer.special.compensated` (error-free products by fused multiply-add,
-one-correction division).  Written here for one body: ``K`` is taken from the AGM sequence
-of ``Π`` (the same sequence), ``K'`` from the nome (the numpy set-up runs a second AGM), the
-``ψ`` offset from the series at ``τ₀`` directly (the numpy set-up evaluates its per-epoch
-series at ``t = 0``), and without an attitude the quantities only the attitude needs
-(``Π``, the ``ϑ₁`` series) can be skipped.  The constants agree with the numpy ones to a few
-ulps, the frame's and the anchor's bit for bit (``tests/free/test_free_compiled.py``); they are stored one
-row per body, as :mod:`andoyer.free.triaxial.evaluate_compiled` reads them, in the columns named by
-:mod:`andoyer.free.triaxial.columns`.
-:class:`andoyer.free.FreeMotion` uses both when numba is installed
-(:data:`andoyer._jit.NUMBA`).
+:func:`andoyer.free.triaxial.setup_numpy.triaxial` forms the constants of many bodies with numpy: a
+few hundred passes over the arrays, most of them double-double arithmetic (the working frame and
+invariants of :func:`andoyer.free.common.polhode_numpy.polhode_frame`, ``K`` and ``Π`` by the AGM,
+the frequencies), 6–10 µs a body.  Here the same formulas run per body in a numba kernel, about 1 µs
+a body: most of them are the very kernels the numpy set-up calls (the working frame, its invariants
+and the attitude anchor of :mod:`andoyer.free.common.polhode`, the formulas of
+:mod:`andoyer.free.triaxial.setup`, :func:`andoyer.special.theta.quotient_constants`), run on floats
+in the double-double arithmetic of :mod:`andoyer.special.compensated` (error-free products by fused
+multiply-add, one-correction division).  Written here for one body: ``K`` is taken from the AGM
+sequence of ``Π`` (the same sequence), ``K'`` from the nome (the numpy set-up runs a second AGM),
+the ``ψ`` offset from the series at ``τ₀`` directly (the numpy set-up evaluates its per-epoch series
+at ``t = 0``), and without an attitude the quantities only the attitude needs (``Π``, the ``ϑ₁``
+series) can be skipped.  The constants agree with the numpy ones to a few ulps, the frame's and the
+anchor's bit for bit (``tests/free/test_free_compiled.py``); they are stored one row per body, as
+:mod:`andoyer.free.triaxial.evaluate_compiled` reads them, in the columns named by
+:mod:`andoyer.free.triaxial.columns`. :class:`andoyer.free.FreeMotion` uses both when numba is
+installed (:data:`andoyer._jit.NUMBA`).
 """
 
 from __future__ import annotations

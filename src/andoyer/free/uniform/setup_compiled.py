@@ -77,9 +77,9 @@ def _setup(moments, m0, axisymmetric, q0, out, period, rate):
 def uniform_table(moments, m0, regime, q0=None):
     """Constants of regular precession about a body axis (or steady spin), compiled.
 
-    The axis and moments of :func:`andoyer.free.uniform.setup_numpy.uniform_axes` and the constants of
-    :func:`andoyer.free.uniform.setup_numpy.uniform`: the same kernels (:mod:`andoyer.free.uniform.setup`)
-    per state, in one loop.
+    The axis and moments of :func:`andoyer.free.uniform.setup_numpy.uniform_axes` and the constants
+    of :func:`andoyer.free.uniform.setup_numpy.uniform`: the same kernels
+    (:mod:`andoyer.free.uniform.setup`) per state, in one loop.
 
     Parameters
     ----------
