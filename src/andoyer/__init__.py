@@ -32,6 +32,7 @@ _moved.install()
 if TYPE_CHECKING:  # the eager names, for type checkers and IDEs
     from andoyer import (
         bodies,
+        catalogue,
         charts,
         free,
         integrate,
@@ -65,6 +66,7 @@ _LAZY = {
         name: f"andoyer.{name}"
         for name in (
             "bodies",
+            "catalogue",
             "charts",
             "free",
             "integrate",
@@ -88,6 +90,7 @@ __all__ = [
     "State",
     "Symmetry",
     "bodies",
+    "catalogue",
     "charts",
     "free",
     "integrate",

@@ -41,7 +41,9 @@ class Valid:
 
 VALID: dict[str, Valid] = {
     "demo": Valid(("demo --body moon --quiet --out {out}",), "--out", ""),
-    "bodies": Valid(("bodies --format csv",)),
+    "bodies": Valid(
+        ("bodies --format csv", "bodies titan --format json", "bodies --moments lara2013 --format table")
+    ),
     "convert": Valid(
         (
             f"convert --from andoyer --to euler --values {STATE} --output {{out}}",
@@ -212,6 +214,7 @@ def mutations() -> list:
                     add(name, "output", f"{k}:{case}", (*argv[:i], path, *argv[i + 1 :]))
     # Positional choices (precession's body) and an unknown sub-command.
     add("precession", "choice", "body", ("precession", "pluto"))
+    add("bodies", "choice", "name", ("bodies", "vulcan"))
     add("", "choice", "command", ("frobnicate",))
     return cases
 

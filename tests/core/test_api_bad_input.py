@@ -25,7 +25,18 @@ import andoyer.planetary.cassini
 import andoyer.planetary.nutation
 import andoyer.planetary.precession
 import andoyer.planetary.spin_axis
-from andoyer import FreeRotation, RigidBody, State, bodies, charts, free, integrate, propagate, special
+from andoyer import (
+    FreeRotation,
+    RigidBody,
+    State,
+    bodies,
+    catalogue,
+    charts,
+    free,
+    integrate,
+    propagate,
+    special,
+)
 from andoyer.perturbations import (
     CircularOrbit,
     GravityGradient,
@@ -109,6 +120,40 @@ CASES = [
     (RigidBody, RigidBody.from_alpha_beta, (0.1, 1.5), ValueError, "expected"),
     (bodies.get, bodies.get, ("vulcan",), ValueError, "expected"),
     (bodies.info, bodies.info, ("vulcan",), ValueError, "expected"),
+    # -- the catalogue: unknown names, bad user bodies (each check: tests/catalogue), bad units
+    (catalogue.get, catalogue.get, ("vulcan",), ValueError, "expected a body among"),
+    (catalogue.get, catalogue.get, (None,), ValueError, "expected a body among"),
+    (
+        catalogue.body_from_dict,
+        catalogue.body_from_dict,
+        ({"name": "x", "gm": NAN},),
+        ValueError,
+        "expected a finite",
+    ),
+    (
+        catalogue.body_from_dict,
+        catalogue.body_from_dict,
+        ({"name": "x", "gm": -1.0},),
+        ValueError,
+        "expected gm > 0",
+    ),
+    (
+        catalogue.body_from_dict,
+        catalogue.body_from_dict,
+        ({"name": "x", "radius": -HUGE},),
+        ValueError,
+        "expected radius > 0",
+    ),
+    (catalogue.body_from_dict, catalogue.body_from_dict, ([],), ValueError, "expected a table"),
+    (
+        catalogue.read_body,
+        catalogue.read_body,
+        ("/nonexistent/body.json",),
+        ValueError,
+        "expected a readable",
+    ),
+    (catalogue.units.convert, catalogue.units.convert, (1.0, "km", "deg"), ValueError, "expected a unit"),
+    (catalogue.units.dimension, catalogue.units.dimension, ("furlong",), ValueError, "expected a unit"),
     # -- states: every constructor with NaN, inf, ±1e300, |L| > G, G <= 0, shapes
     (State, State.from_andoyer, (NAN, 0, 0, 0.5, 1.0, 0.5), ValueError, "expected finite l"),
     (State, State.from_andoyer, (0, 0, 0, 0.5, INF, 0.5), ValueError, "expected finite G"),
@@ -380,6 +425,22 @@ EXEMPT = {
     "Euler": "a named tuple of results",
     "Serret": "a named tuple of results",
     "BodyInfo": "a record of the named bodies",
+    "Body": "a record of the catalogue; built and checked by body_from_dict and read_body (in the table)",
+    "Quantity": "a record of the catalogue (value, unit, uncertainty, source)",
+    "FIELDS": "a constant table",
+    "UNITS": "a constant table",
+    "ARCMIN": "a constant",
+    "AU": "a constant",
+    "AU_KM": "a constant",
+    "DAY": "a constant",
+    "DEGREE": "a constant",
+    "GAUSSIAN_GRAVITATIONAL_CONSTANT": "a constant",
+    "HOUR": "a constant",
+    "J2000_JD": "a constant",
+    "JULIAN_CENTURY": "a constant",
+    "JULIAN_YEAR": "a constant",
+    "MAS": "a constant",
+    "SPEED_OF_LIGHT": "a constant",
     "PrecessionRates": "a record of results",
     "SAMFrequencies": "a named tuple of results",
     "SAMTheory": "built by sam_theory (in the table)",

@@ -46,7 +46,10 @@ COMMANDS: dict[str, tuple[str, str]] = {
         "andoyer.cli.demo_cmd",
         "tour a named body: every chart, exact and series propagation, precession, pictures",
     ),
-    "bodies": ("andoyer.cli.bodies_cmd", "list the named bodies (Lara 2013, Table 1)"),
+    "bodies": (
+        "andoyer.cli.bodies_cmd",
+        "the catalogue of bodies with their sources, one body, or a body file checked",
+    ),
     "convert": ("andoyer.cli.convert_cmd", "convert states between charts"),
     "propagate": (
         "andoyer.cli.propagate_cmd",
@@ -125,8 +128,8 @@ def main(argv: Sequence[str] | None = None) -> int:
 
     Examples
     --------
-    >>> main(["bodies", "--format", "csv"])  # doctest: +ELLIPSIS
-    name,I1,I2,I3,alpha,beta,kappa,rotation_period_s,J0_rad,source
+    >>> main(["bodies", "--moments", "lara2013", "--format", "csv"])  # doctest: +ELLIPSIS
+    name,I1,I2,I3,alpha,beta,kappa,rotation_period_s,J0_rad,source,...
     earth,0.99672,0.9967222,1.0,...
     0
     """
