@@ -1,11 +1,12 @@
 """Per-epoch evaluation of the triaxial solution from its constant table, compiled by numba.
 
-The formulas of :mod:`andoyer.free.triaxial.evaluate_numpy`, for one state and one epoch at a time and
-looped over a block of states × epochs: no array temporaries, the circular and hyperbolic
-series chosen per state.  The formulas themselves are the kernels both paths call: the
-theta series of ``sn, cn, dn`` (all their terms here), the circular ``ϑ₁``, the ``ψ``
-half angle and the anchored attitude (:mod:`andoyer.free.triaxial.evaluate`), ``sin``/``cos``
-of a reduced phase (:func:`andoyer.free.common.cycles.sincos_cycles`).  Written here: the phases
+The formulas of :mod:`andoyer.free.triaxial.evaluate_numpy`, for one state and one epoch at a
+time and looped over a block of states × epochs: no array temporaries, the circular and
+hyperbolic series chosen per state.  The formulas themselves are the kernels both paths call:
+the theta series of ``sn, cn, dn`` (all their terms here), the circular ``ϑ₁`` and the ``ψ``
+half angle (:mod:`andoyer.free.triaxial.evaluate`), the anchored attitude
+(:func:`andoyer.free.common.polhode.attitude`), ``sin``/``cos`` of a reduced phase
+(:func:`andoyer.free.common.cycles.sincos_cycles`).  Written here: the phases
 from the table's double-doubles (``_cycles``: the error-free product by a fused
 multiply-add, where the numpy path splits the times once for all its phases) and the
 hyperbolic ``ϑ₁`` sum, whose powers of ``1/e^{−y}`` are divisions here and products by the

@@ -1,12 +1,13 @@
-"""Per-epoch evaluation of the triaxial solution from theta series.
+"""Per-epoch evaluation of the triaxial solution from theta series, on arrays (numpy driver).
 
-The constants come from :func:`andoyer.free.triaxial.setup_numpy.triaxial`; the formulas are derived
-there.  Per epoch: the polhode phase (double-double, :func:`andoyer.free.common.cycles_numpy.cycles`),
-``sin`` and ``cos`` of it by polynomials, Chebyshev multiples, a few theta-series terms
-(their number chosen per block from the largest nome, dropping terms below 1e-18), and for
-the attitude one more phase, one more ``sincos`` and two quaternion products.  The
-formulas are the kernels of :mod:`andoyer.free.triaxial.evaluate`, applied here to whole
-arrays and by :mod:`andoyer.free.triaxial.evaluate_compiled` to one state at a time.
+The constants come from :func:`andoyer.free.triaxial.setup_numpy.triaxial`; the formulas are
+derived in :mod:`andoyer.free.triaxial`.  Per epoch: the polhode phase (double-double,
+:func:`andoyer.free.common.cycles_numpy.cycles`), ``sin`` and ``cos`` of it by polynomials,
+Chebyshev multiples, a few theta-series terms (their number chosen per block from the largest
+nome, dropping terms below 1e-18), and for the attitude one more phase, one more ``sincos`` and
+two quaternion products.  The formulas are the kernels of :mod:`andoyer.free.triaxial.evaluate`
+(and the anchored attitude of :mod:`andoyer.free.common.polhode`), applied here to whole arrays
+and by :mod:`andoyer.free.triaxial.evaluate_compiled` to one state at a time.
 """
 
 from __future__ import annotations

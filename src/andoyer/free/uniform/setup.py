@@ -1,4 +1,4 @@
-r"""Scalar kernels of the uniform motions (regular precession, spheres, steady spins, rest), written once.
+r"""The set-up formulas of the uniform motions (precession, spheres, steady spins, rest), written once.
 
 For an axisymmetric body (symmetry axis ``ŝ`` with moment ``I_s``, transverse moment
 ``I_t``) the motion is
@@ -15,9 +15,9 @@ one function of arithmetic only: the branches are :func:`andoyer._jit.select`, t
 double-double is :mod:`andoyer.special.compensated`, the quaternion product and the rotation
 of a vector are :func:`andoyer._quaternion.product` and :func:`~andoyer._quaternion.apply`.
 So the same text runs on floats inside numba kernels (registered with
-:func:`andoyer._jit.jitable`: the compiled loops of :mod:`andoyer.free.uniform.evaluate_compiled`
-inline them) and on whole numpy arrays, one array per component (the numpy path,
-:mod:`andoyer.free.uniform`); both give the same bits
+:func:`andoyer._jit.jitable`: the compiled loop of :mod:`andoyer.free.uniform.setup_compiled`
+and :mod:`andoyer.free.step_scalar` inline them) and on whole numpy arrays, one array per
+component (:mod:`andoyer.free.uniform.setup_numpy`); both give the same bits
 (``tests/free/uniform/test_free_uniform_kernels.py``).
 
 Vectors and quaternions are passed as anything indexed by component: a 3- or 4-tuple, a
