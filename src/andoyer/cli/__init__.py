@@ -61,7 +61,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     ),
     "cassini": (
         "andoyer.cli.cassini_cmd",
-        "Cassini states (equilibria of Colombo's top) of the Moon, Mercury or any body",
+        "Cassini states (equilibria of Colombo's top) of the Moon or Mercury, moments and orbit changeable",
     ),
     "nutation": (
         "andoyer.cli.nutation_cmd",
@@ -70,6 +70,10 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "obliquity": (
         "andoyer.cli.obliquity_cmd",
         "obliquity, general and climatic precession of the Earth or Mars over 10^3-10^7 years",
+    ),
+    "tides": (
+        "andoyer.cli.tides_cmd",
+        "the Earth-Moon tidal history: lunar distance, day length, precession constant, obliquity (Gyr)",
     ),
     "ensemble": (
         "andoyer.cli.ensemble_cmd",

@@ -29,7 +29,7 @@ series):
     one state, one step, no set-up: :mod:`andoyer.free.step_scalar` (``_step_one``, compiled by
     numba when it is available, plain Python otherwise), behind
     :func:`andoyer.free.step_scalar.free_step` and the compiled splitting loop
-    (:mod:`andoyer.integrate.split_kernel`).  Always available.
+    (:mod:`andoyer.integrate.splitting.kernel`).  Always available.
 
 :class:`~andoyer.free.FreeMotion` offers the first two (:data:`MOTION_BACKENDS`, its keyword
 ``backend``; by default :func:`default`, the fastest available).  Both treat the separatrix
