@@ -47,6 +47,26 @@ MOVED: dict[str, str] = {
     "andoyer.hamiltonians": "andoyer.state",
     "andoyer.state_charts": "andoyer.state.hub",
     "andoyer.free.rotation": "andoyer.free_rotation",
+    "andoyer.free.kernels.elliptic": "andoyer.free.common.elliptic",
+    "andoyer.free.kernels.frame": "andoyer.free.common.polhode",
+    "andoyer.free.kernels.piecewise": "andoyer.free.triaxial.periodic",
+    "andoyer.free.kernels.series": "andoyer.free.triaxial.evaluate",
+    "andoyer.free.kernels.triaxial": "andoyer.free.triaxial.setup",
+    "andoyer.free.kernels.uniform": "andoyer.free.uniform.setup",
+    "andoyer.free.kernels": "andoyer.free.common",  # after its modules: the first prefix that matches wins
+    "andoyer.free.blocks": "andoyer.free.common.blocks",
+    "andoyer.free.compiled_eval": "andoyer.free.triaxial.evaluate_compiled",
+    "andoyer.free.compiled_regime": "andoyer.free.common.scaling_compiled",
+    "andoyer.free.compiled_setup": "andoyer.free.triaxial.setup_compiled",
+    "andoyer.free.compiled_uniform": "andoyer.free.uniform.evaluate_compiled",
+    "andoyer.free.constants": "andoyer.free.common.constants",
+    "andoyer.free.lean": "andoyer.free.step_scalar",
+    "andoyer.free.periodic": "andoyer.free.triaxial.periodic_numpy",
+    "andoyer.free.phase": "andoyer.free.common.cycles_numpy",
+    "andoyer.free.quaternion": "andoyer.free.common.polhode_numpy",
+    "andoyer.free.regime": "andoyer.free.common.polhode_numpy",
+    "andoyer.free.series": "andoyer.free.triaxial.evaluate_numpy",
+    "andoyer.free.table": "andoyer.free.triaxial.columns",
 }
 
 
