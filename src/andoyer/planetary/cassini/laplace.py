@@ -69,6 +69,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -239,7 +240,11 @@ class SatelliteSystem:
         return names.index(name.lower())
 
     def rates(self) -> tuple[Array, Array, Array]:
-        """``(ν_J, ν_⊙, B)``: shapes (m,), (m,), (m, m) with a zero diagonal."""
+        """``(ν_J, ν_⊙, B)``: shapes (m,), (m,), (m, m) with a zero diagonal (copies)."""
+        return tuple(x.copy() for x in self._rates)  # type: ignore[return-value]
+
+    @cached_property
+    def _rates(self) -> tuple[Array, Array, Array]:
         sats = self.satellites
         n = np.array([s.mean_motion for s in sats])
         a = np.array([s.semi_major_axis for s in sats])
@@ -342,13 +347,11 @@ class SatelliteSystem:
         True
         """
         h = np.asarray(normals, dtype=float)
-        nu_j, nu_s, mutual = self.rates()
+        nu_j, nu_s, mutual = self._rates
         p = np.array([0.0, 0.0, 1.0])
         q = np.array([math.sin(self.obliquity), 0.0, math.cos(self.obliquity)])
-        out = (nu_j * (h @ p))[:, None] * np.cross(h, p) + (nu_s * (h @ q))[:, None] * np.cross(h, q)
-        dots = h @ h.T
-        for k in range(len(h)):
-            out += (mutual[:, k] * dots[:, k])[:, None] * np.cross(h, h[k])
+        axis = (nu_j * (h @ p))[:, None] * p + (nu_s * (h @ q))[:, None] * q + (mutual * (h @ h.T)) @ h
+        out = np.cross(h, axis)
         return out
 
 

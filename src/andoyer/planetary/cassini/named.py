@@ -62,6 +62,8 @@ __all__ = [
 NODE_SOURCES = ("auto", "model", "catalogue")
 
 _WHAT = "the Cassini states"
+#: Satellites closer than this ratio of semi-major axes are co-orbital: no Laplace–Lagrange term.
+COORBITAL = 1.05
 Array = NDArray[np.float64]
 
 
@@ -274,9 +276,18 @@ def satellite_system(primary: str | Body, member: Body | None = None) -> SystemF
     ]
     if member is not None:
         member.require("gm", what)
-        member.require("semi_major_axis", what)
-        members = [b for b in members if b.key != member.key] + [member]
-        members.sort(key=lambda b: b.semi_major_axis.to("km"))
+        a = member.require("semi_major_axis", what).to("km")
+        members = [b for b in members if b.key != member.key]
+        for b in members:
+            ratio = b.semi_major_axis.to("km") / a
+            if 1 / COORBITAL < ratio < COORBITAL:
+                msg = (
+                    f"expected {member.name} to be {b.name} (name it so to replace it) or to orbit apart "
+                    f"from it (the secular theory has no co-orbitals), got semi-major axes {a!r} and "
+                    f"{b.semi_major_axis.to('km')!r} km"
+                )
+                raise ValueError(msg)
+        members = sorted([*members, member], key=lambda b: b.semi_major_axis.to("km"))
     if not members:
         msg = f"expected satellites of {planet.name} with gm and semi_major_axis for {what}, got none"
         raise ValueError(msg)
