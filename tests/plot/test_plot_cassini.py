@@ -71,9 +71,46 @@ def test_cassini_portrait_bad_input(system, n):
         plot.cassini_portrait_data(system, n_phi=n, n_theta=n)
 
 
-def test_portrait_cassini_cli_bad_moment_exit_2(tmp_path, capsys):
-    code = main(["portrait", "cassini", "--moment-of-inertia", "2", "--out", str(tmp_path / "x.png")])
+MERCURY = [
+    *("--j2", "5.03e-5", "--c22", "0.81e-5", "--orbital-period", "87.97", "--eccentricity", "0.2056"),
+    *("--node-period", "325000", "--inclination", "8.6", "--mass-ratio", "1.66e-7", "--resonance", "1.5"),
+]
+
+
+@pytest.mark.parametrize(
+    ("argv", "message"),
+    [
+        ([*MERCURY, "--moment-of-inertia", "2"], "expected 0 < C/MR^2 <= 1, got 2.0"),
+        (["--moment-of-inertia", "0.3"], "expected every value option or none"),
+        (["--body", "titan", "--node", "catalogue"], "expected Titan to have node_period"),
+    ],
+)
+def test_portrait_cassini_cli_bad_input_exit_2(tmp_path, capsys, argv, message):
+    code = main(["portrait", "cassini", *argv, "--out", str(tmp_path / "x.png")])
     err = capsys.readouterr().err
     assert code == 2
-    assert err.strip().splitlines() == ["andoyer portrait: error: expected 0 < C/MR^2 <= 1, got 2.0"]
+    (line,) = err.strip().splitlines()
+    assert line.startswith("andoyer portrait: error: ")
+    assert message in line
     assert list(tmp_path.iterdir()) == []
+
+
+def test_portrait_cassini_cli_titan(tmp_path):
+    assert (
+        main(
+            [
+                "portrait",
+                "cassini",
+                "--body",
+                "titan",
+                "--levels",
+                "3",
+                "--dpi",
+                "20",
+                "--out",
+                str(tmp_path / "t.png"),
+            ]
+        )
+        == 0
+    )
+    assert (tmp_path / "t.png").stat().st_size > 0

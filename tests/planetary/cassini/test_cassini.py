@@ -263,8 +263,14 @@ def test_separatrix_level_and_saddle():
 
 @pytest.mark.parametrize(
     "args",
-    [(0.0, 0.0, -1.0, 0.1), (1.0, -0.1, -1.0, 0.1), (1.0, 0.0, 0.5, 0.1), (1.0, 0.0, -1.0, 0.0),
-     (1.0, 0.0, -1.0, 2.0), (np.nan, 0.0, -1.0, 0.1)],
+    [
+        (0.0, 0.0, -1.0, 0.1),
+        (1.0, -0.1, -1.0, 0.1),
+        (1.0, 0.0, 0.5, 0.1),
+        (1.0, 0.0, -1.0, 0.0),
+        (1.0, 0.0, -1.0, 2.0),
+        (np.nan, 0.0, -1.0, 0.1),
+    ],
 )
 def test_colombo_top_bad_input(args):
     with pytest.raises(ValueError, match="expected"):

@@ -51,7 +51,11 @@ BODY = CassiniBody("x", 3.18e-5, 1.0e-5, 0.34, 143.9, 0.029, 0.3 * DEG, -0.009)
     "modes",
     [
         # one slow, one faster than κ (state 2 branch), one near: amplitudes and phases arbitrary
-        (NodeMode(-0.009, 0.3 * DEG, 0.4), NodeMode(-0.05, 0.05 * DEG, 2.0), NodeMode(-0.02, 0.1 * DEG, -1.0)),
+        (
+            NodeMode(-0.009, 0.3 * DEG, 0.4),
+            NodeMode(-0.05, 0.05 * DEG, 2.0),
+            NodeMode(-0.02, 0.1 * DEG, -1.0),
+        ),
         (NodeMode(-0.004, 0.5 * DEG, 0.0), NodeMode(-0.0011, 0.2 * DEG, 1.3)),
     ],
 )
@@ -65,13 +69,16 @@ def test_forced_obliquity_matches_inertial_integration(modes):
         return tilt_to_vector(np.sum(amps * np.exp(1j * (phases + rates * time))))
 
     t = np.linspace(0.0, 2 * math.pi / min(abs(rates)), 301)
-    s = integrate_spin(BODY.precession_constant, BODY.resonance_constant, normal, tilt_to_vector(forced.spin_axis(0.0)), t)
+    s = integrate_spin(
+        BODY.precession_constant, BODY.resonance_constant, normal, tilt_to_vector(forced.spin_axis(0.0)), t
+    )
     n = np.array([normal(x) for x in t])
     obliquity = np.arccos(np.clip(np.einsum("ij,ij->i", s, n), -1, 1))
     predicted = forced.obliquity(t)
     assert np.max(np.abs(obliquity - predicted)) < 1e-3 * np.max(predicted)
     low, high = forced.obliquity_range()
-    assert low - 1e-12 <= np.min(predicted) and np.max(predicted) <= high + 1e-12
+    assert low - 1e-12 <= np.min(predicted)
+    assert np.max(predicted) <= high + 1e-12
 
 
 def test_forced_obliquity_one_mode_is_the_cassini_state():
@@ -130,7 +137,9 @@ def test_galilean_end_to_end_europa_and_ganymede():
     y = solve_ivp(rhs, (0.0, t[-1]), y0, t_eval=t, method="DOP853", rtol=1e-11, atol=1e-14).y.T
     for f, j, k in zip(forced, index, (12, 15), strict=True):
         h, s = y[:, 3 * j : 3 * j + 3], y[:, k : k + 3]
-        obliquity = np.arccos(np.clip(np.einsum("ij,ij->i", s / np.linalg.norm(s, axis=1)[:, None], h), -1, 1))
+        obliquity = np.arccos(
+            np.clip(np.einsum("ij,ij->i", s / np.linalg.norm(s, axis=1)[:, None], h), -1, 1)
+        )
         predicted = f.obliquity(t)
         assert np.max(np.abs(obliquity - predicted)) < 5e-3 * np.max(predicted), f.body.name
 

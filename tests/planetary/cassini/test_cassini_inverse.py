@@ -23,7 +23,7 @@ ARCMIN = DEG / 60
 
 
 def peale(body, theta, j2=None, c22=None, g=None, i=None):
-    """C/MR² from a signed state-1 obliquity θ (< 0) in closed form: C = −(a₁cos θ + b₁) sin θ/(g sin(θ − i))."""
+    """C/MR² from a signed state-1 obliquity θ < 0, closed form: C = −(a₁cos θ + b₁) sin θ/(g sin(θ − i))."""
     j2 = body.j2 if j2 is None else j2
     c22 = body.c22 if c22 is None else c22
     g = body.node_rate if g is None else g
@@ -93,9 +93,9 @@ def test_inverse_derivatives_match_finite_differences(name):
         minus = _solve(with_changes(**{key: base - h}), theta, c0).moment_of_inertia
         assert estimate.derivatives[key] == pytest.approx((plus - minus) / (2 * h), rel=1e-5), key
     d = 1e-4 * theta
-    numeric = (_solve(forced, theta + d, c0).moment_of_inertia - _solve(forced, theta - d, c0).moment_of_inertia) / (
-        2 * d
-    )
+    numeric = (
+        _solve(forced, theta + d, c0).moment_of_inertia - _solve(forced, theta - d, c0).moment_of_inertia
+    ) / (2 * d)
     assert estimate.derivatives["obliquity"] == pytest.approx(numeric, rel=1e-5)
 
 
@@ -103,8 +103,12 @@ def test_obliquity_derivative_by_moment_matches_finite_difference():
     forced = cassini.forced_obliquity("ganymede")
     value, slopes = obliquity_and_derivatives(forced)
     h = 1e-6
-    up = ForcedObliquity(forced.body.replace(moment_of_inertia=forced.body.moment_of_inertia + h), forced.modes)
-    down = ForcedObliquity(forced.body.replace(moment_of_inertia=forced.body.moment_of_inertia - h), forced.modes)
+    up = ForcedObliquity(
+        forced.body.replace(moment_of_inertia=forced.body.moment_of_inertia + h), forced.modes
+    )
+    down = ForcedObliquity(
+        forced.body.replace(moment_of_inertia=forced.body.moment_of_inertia - h), forced.modes
+    )
     numeric = (float(up.obliquity()) - float(down.obliquity())) / (2 * h)
     assert value == pytest.approx(float(forced.obliquity()), rel=1e-12)
     assert slopes["moment_of_inertia"] == pytest.approx(numeric, rel=1e-5)
@@ -129,14 +133,18 @@ def test_inverse_uncertainty_matches_monte_carlo():
     assert np.std(samples) == pytest.approx(estimate.error, rel=0.03)
     assert np.mean(samples) == pytest.approx(estimate.moment_of_inertia, rel=0.01)
     parts = estimate.contributions
-    assert math.hypot(parts["obliquity"], parts["j2"], parts["c22"]) == pytest.approx(estimate.error, rel=1e-12)
+    assert math.hypot(parts["obliquity"], parts["j2"], parts["c22"]) == pytest.approx(
+        estimate.error, rel=1e-12
+    )
 
 
 def test_inverse_errors_override_and_state():
     body = cassini.get("titan")
     (plain,) = moment_of_inertia_from_obliquity(body, 0.32 * DEG, 0.0, errors={"inclination": 0.02 * DEG})
     assert set(plain.contributions) == {"obliquity", "inclination"}
-    assert plain.contributions["inclination"] == pytest.approx(abs(plain.derivatives["inclination"]) * 0.02 * DEG)
+    assert plain.contributions["inclination"] == pytest.approx(
+        abs(plain.derivatives["inclination"]) * 0.02 * DEG
+    )
     # the Moon is in state 2: its 6.688° gives its C/MR² there; far from any state-1 solution
     (moon,) = moment_of_inertia_from_obliquity("moon", 6.688 * DEG, 0.001 * DEG)
     assert moon.moment_of_inertia == pytest.approx(catalogue.get("moon").moment_of_inertia.value, abs=0.003)

@@ -230,7 +230,7 @@ def test_node_period_moon_first_order_solar_theory():
     earth = catalogue.get("earth")
     n_sun = 2 * math.pi / earth.orbital_period.to("yr")
     n = model.mean_motion
-    first_order = 0.75 * n_sun**2 / n * (1 - earth.eccentricity.value ** 2) ** -1.5
+    first_order = 0.75 * n_sun**2 / n * (1 - earth.eccentricity.value**2) ** -1.5
     assert abs(model.node_rate) == pytest.approx(first_order, rel=2e-3)
     ratio = measured.node_rate / model.node_rate
     assert 0.95 < ratio < 0.97
@@ -268,7 +268,8 @@ def test_satellite_system_bad_input(kwargs):
 
 
 @pytest.mark.parametrize(
-    "args", [("s", -1.0, 3.0, 0.2), ("s", 0.0, 0.0, 0.2), ("s", 0.0, 3.0, float("inf")), ("s", 0.0, 3.0, 0.2, 1.0)]
+    "args",
+    [("s", -1.0, 3.0, 0.2), ("s", 0.0, 0.0, 0.2), ("s", 0.0, 3.0, float("inf")), ("s", 0.0, 3.0, 0.2, 1.0)],
 )
 def test_satellite_bad_input(args):
     with pytest.raises(ValueError, match="expected"):

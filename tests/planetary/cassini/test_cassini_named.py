@@ -38,7 +38,9 @@ def test_moon_from_the_catalogue_keeps_its_state():
         assert getattr(now, key) == pytest.approx(getattr(before, key), rel=1e-12), key
     assert now.mass_ratio == pytest.approx(before.mass_ratio, rel=2e-7)  # DE440 GMs vs IAU 2009 ratio
     (two_now, _), (two_before, _) = cassini.states(now), cassini.states(before)
-    assert two_now.inclination_to_laplace_deg == pytest.approx(two_before.inclination_to_laplace_deg, abs=1e-6)
+    assert two_now.inclination_to_laplace_deg == pytest.approx(
+        two_before.inclination_to_laplace_deg, abs=1e-6
+    )
     assert round(two_now.inclination_to_laplace_deg, 3) == 1.549
     assert round(two_now.obliquity_deg, 3) == 6.694
 
@@ -131,5 +133,5 @@ def test_body_file_without_laplace_inclination(tmp_path):
 
 
 def test_planet_obliquity_needs_a_pole():
-    with pytest.raises(ValueError, match="expected .* to have pole_ra"):
+    with pytest.raises(ValueError, match=r"expected x to have pole_ra"):
         named.planet_obliquity(catalogue.body_from_dict({"name": "x", "inclination": 1.0, "node": 2.0}))

@@ -351,8 +351,7 @@ class SatelliteSystem:
         p = np.array([0.0, 0.0, 1.0])
         q = np.array([math.sin(self.obliquity), 0.0, math.cos(self.obliquity)])
         axis = (nu_j * (h @ p))[:, None] * p + (nu_s * (h @ q))[:, None] * q + (mutual * (h @ h.T)) @ h
-        out = np.cross(h, axis)
-        return out
+        return np.cross(h, axis)
 
 
 def _assign(weights: Array) -> Array:
