@@ -125,8 +125,11 @@ def forced_from_args(name: str | None, args: argparse.Namespace, inverse: bool =
                 f"few), got {', '.join(flag[d] for d in given)} without {', '.join(missing)}"
             )
             raise CliError(msg)
-        if name is not None and args.body_file is not None:
-            msg = f"expected at most one of BODY and --body-file, got {name!r} and {args.body_file!r}"
+        if args.body_file is not None:
+            msg = f"expected the value options or --body-file, got both (--body-file {args.body_file!r})"
+            raise CliError(msg)
+        if args.node != "auto":
+            msg = f"expected --node with a BODY or a --body-file (the values set the node), got {args.node!r}"
             raise CliError(msg)
         values = given if not inverse else {**given, "moment_of_inertia": _placeholder(given)}
         body = _from_values(name or "command line", values)

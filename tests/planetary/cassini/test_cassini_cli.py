@@ -187,6 +187,8 @@ REFUSED = {
     "mass_ratio": ([*TITAN[:14], "--mass-ratio", "2", *TITAN[16:]], "expected 0 <= mass_ratio < 1"),
     "nan_j2": (["--j2", "nan", *TITAN[2:]], "expected a finite number"),
     "bad_node": (["titan", "--node", "jpl"], "invalid choice"),
+    "node_with_values": ([*TITAN, "--node", "model"], "expected --node with a BODY or a --body-file"),
+    "values_and_file": ([*TITAN, "--body-file", "x.json"], "expected the value options or --body-file"),
     "bad_format": (["moon", "--format", "csv"], "invalid choice"),
     "missing_directory": (["moon", "--output", "/nonexistent/dir/x.json"], "expected an existing directory"),
 }

@@ -37,6 +37,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -154,6 +155,10 @@ class ForcedObliquity:
 
     def responses(self) -> tuple[ModeResponse, ...]:
         """The answer to each mode, in the order of :attr:`modes`."""
+        return self._responses
+
+    @cached_property
+    def _responses(self) -> tuple[ModeResponse, ...]:
         out = []
         for mode in self.modes:
             if mode.inclination <= NEGLIGIBLE_INCLINATION:
