@@ -47,7 +47,7 @@ if TYPE_CHECKING:  # the eager names, for type checkers and IDEs
     from andoyer.body import NonPhysicalInertiaWarning, RigidBody, Symmetry
     from andoyer.charts import SingularChartWarning
     from andoyer.free import FreeRotation
-    from andoyer.propagation import propagate
+    from andoyer.integrate.propagation import propagate
     from andoyer.regime import Regime
     from andoyer.state import State
 
@@ -61,7 +61,7 @@ _LAZY = {
     "SingularChartWarning": "andoyer.charts",
     "State": "andoyer.state",
     "Symmetry": "andoyer.body",
-    "propagate": "andoyer.propagation",
+    "propagate": "andoyer.integrate.propagation",
     **{
         name: f"andoyer.{name}"
         for name in (

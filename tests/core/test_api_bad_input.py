@@ -70,8 +70,10 @@ from andoyer.planetary.orbits import (
     orbit_history,
     read_alkhqp,
     read_orbit_csv,
+    source_span,
     write_orbit_csv,
 )
+from andoyer.planetary.parameters import PARAMETERS, Parameter, check
 from andoyer.planetary.precession import (
     check_dynamical_ellipticity,
     default_step,
@@ -104,6 +106,7 @@ MODEL = Model(RigidBody(1.0, 1.2, 1.5), TOP)
 IDENT = Rotation.identity()
 FREE = FreeRotation(BODY)
 MODEL_EARTH = SpinAxisModel.from_precession_rate("earth", 50.3848, 0.4091)
+MODEL_TIDES = SpinAxisModel.from_precession_rate("earth", 50.3848, 0.4091, tidal_dissipation=1.0)
 Q0 = [0.0, 0.0, 0.0, 1.0]
 M0 = [0.3, 0.2, 1.0]
 
@@ -335,6 +338,37 @@ CASES = [
         "expected",
     ),
     (SpinAxisModel, SpinAxisModel, ("earth", NAN, 1.0, 0.01), ValueError, "expected a finite real"),
+    # -- physical parameters out of range (issue 26 item 4; the table andoyer.planetary.parameters)
+    (check, check, ("tidal_dissipation", -5.0), ValueError, "expected a tidal dissipation 0 <= T_d <= 1.2"),
+    (check, check, ("colour", 1.0), ValueError, "expected a parameter among"),
+    (Parameter, PARAMETERS["eccentricity"].check, (1.0,), ValueError, "expected an eccentricity 0 <= e < 1"),
+    (
+        SpinAxisModel,
+        P(SpinAxisModel.from_precession_rate, tidal_dissipation=1e6),
+        ("earth", 50.3848, 0.4091),
+        ValueError,
+        "expected a tidal dissipation",
+    ),
+    (SpinAxisModel, SpinAxisModel.from_precession_rate, ("earth", 1e10, 0.4091), ValueError, "P < "),
+    (SpinAxisModel, SpinAxisModel.from_precession_rate, ("mars", 7.6, 0.44, 1.5), ValueError, "eccentricity"),
+    (SpinAxisModel, SpinAxisModel.from_dynamical_ellipticity, ("earth", 0.9), ValueError, "0 < H < 0.5"),
+    (SpinAxisModel, MODEL_TIDES.check_span, (0.0, 1e10), ValueError, "expected a span over which"),
+    (
+        spin_axis_history,
+        P(spin_axis_history, tidal_dissipation=-5.0),
+        (VondrakEcliptic(), "earth", [0.0]),
+        ValueError,
+        "expected a tidal dissipation",
+    ),
+    (
+        spin_axis_history,
+        P(spin_axis_history, ellipticity_drift=-1.0),
+        (VondrakEcliptic(), "earth", [0.0, 100.0]),
+        ValueError,
+        "expected an ellipticity drift",
+    ),
+    (source_span, source_span, ("nowhere",), ValueError, "expected a named orbit source"),
+    (source_span, source_span, ("vondrak", "mars"), ValueError, "expected body 'earth'"),
     (SpinAxisModel, SpinAxisModel, ("earth", 1e-4, 1.0, 1.5), ValueError, "expected"),
     (daily_insolation, daily_insolation, (NAN, 0.0, 0.4, 0.01, 1.0), ValueError, "expected finite"),
     (daily_insolation, daily_insolation, (1.0, 0.0, 0.4, 1.5, 1.0), ValueError, "expected"),
@@ -353,6 +387,8 @@ CASES = [
     # -- Cassini states
     (CassiniBody, CassiniBody, ("x", NAN, 1e-5, 0.3, 1.0, 0.0, 0.1, -0.01), ValueError, "expected"),
     (CassiniBody, CassiniBody, ("x", 1e-4, 1e-5, 1.5, 1.0, 0.0, 0.1, -0.01), ValueError, "expected"),
+    (CassiniBody, CassiniBody, ("x", 1e-4, 1e-5, 0.3, 1.0, 0.0, 1.6, -0.01), ValueError, "0 < i < 1.57"),
+    (CassiniBody, CassiniBody, ("x", 1e-4, -1e-5, 0.3, 1.0, 0.0, 0.1, -0.01), ValueError, "C22 >= 0"),
     (ColomboTop, ColomboTop, (NAN, 0.0, -0.01, 0.1), ValueError, "expected finite"),
     (eccentricity_function, eccentricity_function, (1.5, 1.0), ValueError, "expected"),
     (
@@ -477,6 +513,7 @@ EXEMPT = {
     "REN2000": "a constant table",
     "REN2000_NODE": "a constant table",
     "SOURCES": "a constant",
+    "PARAMETERS": "a constant table (its entries' check is in the table)",
     "WOOLARD1953": "a constant table",
     "Regime": "an enum",
     "FreePeriods": "a named tuple of results",
@@ -533,11 +570,11 @@ EXEMPT = {
     "TabulatedOrbit": "wraps a user function",
     "UserPotential": "wraps a user function",
     "UserTorque": "wraps a user function",
-    # planetary/analytic tops built from a few scalars, checked by tests/integrate/test_heavy_tops.py
-    "kovalevskaya_top": "tests/integrate/test_heavy_tops.py",
-    "lagrange_top": "tests/integrate/test_heavy_tops.py",
-    "kovalevskaya_integral": "tests/integrate/test_heavy_tops.py",
-    "kovalevskaya_integral_e3": "tests/integrate/test_heavy_tops.py",
+    # analytic tops built from a few scalars, checked by tests/integrate/reference/test_heavy_tops.py
+    "kovalevskaya_top": "tests/integrate/reference/test_heavy_tops.py",
+    "lagrange_top": "tests/integrate/reference/test_heavy_tops.py",
+    "kovalevskaya_integral": "tests/integrate/reference/test_heavy_tops.py",
+    "kovalevskaya_integral_e3": "tests/integrate/reference/test_heavy_tops.py",
     "andoyer_perturbed_equations": "tests/perturbations/test_perturbations.py",
     # the Lie–Poisson layer: symbolic brackets and tables, checked by tests/liepoisson
     "liepoisson": "the whole subpackage: symbolic algebra, validated by tests/liepoisson",

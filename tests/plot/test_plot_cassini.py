@@ -80,17 +80,20 @@ MERCURY = [
 @pytest.mark.parametrize(
     ("argv", "message"),
     [
-        ([*MERCURY, "--moment-of-inertia", "2"], "expected 0 < C/MR^2 <= 1, got 2.0"),
+        ([*MERCURY, "--moment-of-inertia", "2"], "expected a polar moment of inertia 0 < C/MR^2 <= 1 ("),
         (["--moment-of-inertia", "0.3"], "expected every value option or none"),
         (["--body", "titan", "--node", "catalogue"], "expected Titan to have node_period"),
     ],
 )
 def test_portrait_cassini_cli_bad_input_exit_2(tmp_path, capsys, argv, message):
-    code = main(["portrait", "cassini", *argv, "--out", str(tmp_path / "x.png")])
+    try:
+        code = main(["portrait", "cassini", *argv, "--out", str(tmp_path / "x.png")])
+    except SystemExit as exc:  # refused as the arguments are read
+        code = exc.code
     err = capsys.readouterr().err
     assert code == 2
     (line,) = err.strip().splitlines()
-    assert line.startswith("andoyer portrait: error: ")
+    assert line.startswith("andoyer portrait")
     assert message in line
     assert list(tmp_path.iterdir()) == []
 

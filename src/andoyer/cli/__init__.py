@@ -61,7 +61,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     ),
     "cassini": (
         "andoyer.cli.cassini_cmd",
-        "Cassini states (equilibria of Colombo's top) of the Moon, Mercury or any body",
+        "Cassini states (equilibria of Colombo's top) of the Moon or Mercury, moments and orbit changeable",
     ),
     "nutation": (
         "andoyer.cli.nutation_cmd",

@@ -75,7 +75,7 @@ def register(commands: argparse._SubParsersAction) -> None:
     )
     parser.add_argument("name", nargs="?", help="one catalogued body (case-insensitive)")
     parser.add_argument("--body-file", metavar="PATH", help="read and check a body file (JSON or TOML)")
-    parser.add_argument("--format", choices=("table", "csv", "json"), default="table")
+    parser.add_argument("--format", choices=("table", "csv", "json"), default="table", help="default table")
     parser.add_argument(
         "--moments",
         choices=MOMENT_SETS,

@@ -217,9 +217,9 @@ def precession_figure() -> tuple[Figure, PrecessionRates]:
     rates, Moon's 18.6 years), so that its rate ``p = −⟨ḣ⟩`` is the mean rate of the table.
     """
     from andoyer import plot
+    from andoyer.integrate.propagation import propagate
     from andoyer.perturbations.solar_system import JULIAN_YEAR, mean_perturbers
     from andoyer.planetary.precession import default_step, precession_problem, precession_rates
-    from andoyer.propagation import propagate
 
     rates = precession_rates("earth", integrate=PRECESSION_YEARS)
     model, states = precession_problem("earth")

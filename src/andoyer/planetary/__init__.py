@@ -10,7 +10,9 @@ disturbing terms of :mod:`andoyer.perturbations` and the propagators of
 * :mod:`andoyer.planetary.spin_axis` -- the spin axis along a moving orbit: obliquity,
   general and climatic precession, insolation;
 * :mod:`andoyer.planetary.nutation` -- the rigid-Earth luni-solar nutation;
-* :mod:`andoyer.planetary.cassini` -- Cassini states (Colombo's top).
+* :mod:`andoyer.planetary.cassini` -- Cassini states (Colombo's top);
+* :mod:`andoyer.planetary.parameters` -- the range of every physical parameter, checked alike by
+  the API and the command line.
 
 The subpackages load when first used. Their old places (``andoyer.orbits``, ``andoyer.cassini``,
 ...) keep working for one release, with a :class:`DeprecationWarning`.
@@ -27,7 +29,7 @@ from __future__ import annotations
 import importlib
 from typing import Any
 
-__all__ = ["cassini", "nutation", "orbits", "precession", "spin_axis"]
+__all__ = ["cassini", "nutation", "orbits", "parameters", "precession", "spin_axis"]
 
 
 def __getattr__(name: str) -> Any:

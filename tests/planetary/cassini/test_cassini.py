@@ -5,7 +5,7 @@ on a dense grid of the equation written out here; the four-state region against 
 bifurcation ``|g|/α = (sin^{2/3} i + cos^{2/3} i)^{-3/2}`` (Ward 1975; Henrard & Murigande 1987);
 the stability against the eigenvalues of the linearised flow of the 3-D vector field; the
 equilibria against a numerical integration of the project's secular gravity-gradient model
-(:class:`andoyer.perturbations.secular.SecularGravityGradient`) with a regressing node; the resonant
+(:class:`andoyer.perturbations.averaged_gravity.SecularGravityGradient`) with a regressing node; the resonant
 constants ``α, β`` against an orbit average of the project's MacCullagh potential
 (:class:`andoyer.perturbations.GravityGradient`); ``G_p(e)`` against Peale's series and mpmath
 quadrature; the Moon and Mercury against their published obliquities.
@@ -25,7 +25,7 @@ from scipy.spatial.transform import Rotation
 from andoyer import RigidBody, State, propagate
 from andoyer.integrate.secular import propagate_momentum
 from andoyer.perturbations import GravityGradient, KeplerOrbit, Model, PointMass, PrecessingFrame
-from andoyer.perturbations.secular import SecularGravityGradient
+from andoyer.perturbations.averaged_gravity import SecularGravityGradient
 from andoyer.planetary import cassini
 from andoyer.planetary.cassini import CassiniBody, ColomboTop, eccentricity_function
 

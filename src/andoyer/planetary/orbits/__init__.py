@@ -28,7 +28,7 @@ Examples
 True
 """
 
-from andoyer.planetary.orbits.factory import SOURCES, orbit_history
+from andoyer.planetary.orbits.factory import SOURCES, orbit_history, source_span
 from andoyer.planetary.orbits.nbody import NBodyOrbit
 from andoyer.planetary.orbits.planets import PLANETS
 from andoyer.planetary.orbits.protocol import OrbitHistory, check_times
@@ -48,5 +48,6 @@ __all__ = [
     "orbit_history",
     "read_alkhqp",
     "read_orbit_csv",
+    "source_span",
     "write_orbit_csv",
 ]

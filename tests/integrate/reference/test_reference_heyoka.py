@@ -18,7 +18,7 @@ from scipy.spatial.transform import Rotation
 
 from andoyer import RigidBody, State, bodies, propagate
 from andoyer.integrate import integrate_reference
-from andoyer.integrate.reference import _rhs
+from andoyer.integrate.reference.dop853 import _rhs
 from andoyer.perturbations import (
     CircularOrbit,
     GravityGradient,

@@ -4,7 +4,7 @@ Three integrators, one call:
 
 * ``"reference"`` (options ``t0``, ``rtol``, ``atol``, ``integrator``): the
   full equations ``q̇ = ½ q ⊗ (∂K/∂m, 0)``, ``ṁ = m × ∂K/∂m + τ`` with adaptive
-  DOP853 (:func:`~andoyer.integrate.integrate_reference`); every model,
+  DOP853 (:func:`~andoyer.integrate.reference.integrate_reference`); every model,
   dissipative torques included. ``integrator="heyoka"`` uses heyoka's Taylor
   integrator instead (optional dependency) for gravity gradients on Kepler
   orbits, constant-rate precessing frames, heavy tops and linear damping.
@@ -14,14 +14,14 @@ Three integrators, one call:
   Hamiltonian attitude-only models and precessing frames.
 * ``"secular"`` (options ``t0``, ``rtol``): the averaged model of a fast
   rotator, the mean angular momentum ``M̄`` (Andoyer ``h``, ``H``) under
-  ``⟨ΔH⟩`` (:func:`~andoyer.integrate.averaged.integrate_secular`); gravity
+  ``⟨ΔH⟩`` (:func:`~andoyer.integrate.secular.integrate_secular`); gravity
   gradients on Kepler orbits and precessing frames. First-order averaging:
   its relative error is of the order of the precession rate over the
   slowest orbital frequency averaged over.
 
 For ``"secular"`` the input and output states are *mean* states: the fast
 angles ``l``, ``g`` follow the torque-free motion and ``h``, ``H`` follow
-``⟨ΔH⟩`` (see :mod:`andoyer.integrate.averaged`); they differ from the states
+``⟨ΔH⟩`` (see :mod:`andoyer.integrate.secular`); they differ from the states
 of the other two methods by the short-period nutations, whose amplitude is
 the precession rate divided by the perturbers' orbital frequencies.
 """
@@ -33,8 +33,8 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike
 
-from andoyer.integrate.averaged import integrate_secular
 from andoyer.integrate.reference import integrate_reference
+from andoyer.integrate.secular import integrate_secular
 from andoyer.integrate.splitting import integrate_splitting
 from andoyer.perturbations.model import Model
 from andoyer.state import State
@@ -62,7 +62,7 @@ def propagate(model: Model, state: State, t: ArrayLike, method: str = "reference
         Output times (absolute; forwards and backwards from ``t0``), broadcast
         with the state's shape.
     method : {"reference", "splitting", "secular"}
-        See :mod:`andoyer.propagation`.
+        See :mod:`andoyer.integrate.propagation`.
     **options
         ``t0`` (float, default 0) for every method; ``rtol``, ``atol`` for
         ``"reference"`` (DOP853, defaults 1e-12, 1e-14) and ``integrator``

@@ -2,15 +2,14 @@
 
 from __future__ import annotations
 
-import mpmath
 import numpy as np
 import pytest
 
 from andoyer import RigidBody, bodies
 from andoyer.integrate.secular import propagate_momentum
-from andoyer.integrate.secular_steps import COMPOSITIONS, propagate_controlled, propagate_rotations
+from andoyer.integrate.secular.rotations import propagate_controlled, propagate_rotations
 from andoyer.perturbations import KeplerOrbit, PointMass
-from andoyer.perturbations.secular import SecularGravityGradient
+from andoyer.perturbations.averaged_gravity import SecularGravityGradient
 from andoyer.perturbations.solar_system import JULIAN_YEAR, OBLIQUITY, mean_perturbers
 
 ARCSEC = np.pi / 648000
@@ -108,32 +107,6 @@ def test_secular_fast_convergence_order(order):
     assert order - 0.3 < slope < order + 0.6
 
 
-@pytest.mark.parametrize(("order", "h"), [(4, "0.1"), (6, "0.2"), (8, "0.4")])
-def test_secular_fast_composition_coefficients_order_conditions(order, h):
-    """Strang steps of exp(A), exp(B) composed with γ: local error ∝ h^(order+1), in mpmath.
-
-    At h = 0.01 all that is left for orders 6 and 8 is the rounding of γ to doubles
-    (~1e-16 h): a wrong digit of a published coefficient would show there (the order-4
-    triple jump is computed in closed form).
-    """
-    mpmath.mp.dps = 50
-    rng = np.random.default_rng(7)
-    A = mpmath.matrix(rng.standard_normal((3, 3)).tolist())
-    B = mpmath.matrix(rng.standard_normal((3, 3)).tolist())
-
-    def local_error(h):
-        step = mpmath.eye(3)
-        for gamma in COMPOSITIONS[order]:
-            x = mpmath.mpf(float(gamma)) * h
-            step = mpmath.expm(A * x / 2) * mpmath.expm(B * x) * mpmath.expm(A * x / 2) * step
-        return mpmath.mnorm(step - mpmath.expm((A + B) * h), 1)
-
-    h = mpmath.mpf(h)
-    slope = float(mpmath.log(local_error(h) / local_error(h / 2), 2))
-    assert order + 1 - 0.35 < slope < order + 1 + 0.1
-    assert order == 4 or local_error(mpmath.mpf("0.01")) < 1e-16
-
-
 def test_secular_fast_interpreted_loop_agrees_with_compiled():
     model = strong_model()
     M0, c0, k0, coef, normals = strong_arguments(model)
@@ -158,7 +131,7 @@ def test_secular_fast_interpreted_loop_agrees_with_compiled():
 )
 def test_secular_fast_richardson_pair_equals_two_runs(order, times):
     """The coarse and fine runs overlapped in one compiled loop: bit for bit the two separate runs."""
-    from andoyer.integrate.secular_steps import _run_pair
+    from andoyer.integrate.secular.rotations import _run_pair
 
     model = strong_model()
     M0, c0, k0, coef, normals = strong_arguments(model)

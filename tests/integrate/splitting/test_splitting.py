@@ -8,20 +8,13 @@ from scipy.spatial.transform import Rotation
 
 from andoyer import FreeRotation, RigidBody, State
 from andoyer.integrate import integrate_reference
-from andoyer.integrate.splitting import integrate_splitting, splitting_coefficients
+from andoyer.integrate.splitting import integrate_splitting
 from andoyer.perturbations import CircularOrbit, GravityGradient, HeavyTop, Model, PointMass, PrecessingFrame
 from conftest import REGIME_BODIES, rotation_distance
 
 
 def start():
     return State.from_attitude(Rotation.from_euler("ZXZ", [0.3, 0.9, 0.4]), [0.2, -0.3, 1.5])
-
-
-@pytest.mark.parametrize("order", [2, 4, 6])
-def test_splitting_coefficients_sum_and_symmetry(order):
-    w = np.array(splitting_coefficients(order))
-    assert w.sum() == pytest.approx(1.0, abs=1e-14)
-    assert np.allclose(w, w[::-1])
 
 
 def test_splitting_of_free_body_is_the_exact_flow():

@@ -8,7 +8,7 @@ import pytest
 from andoyer import RigidBody, State, bodies
 from andoyer.integrate.secular import propagate_momentum
 from andoyer.perturbations import GravityGradient, KeplerOrbit, PointMass
-from andoyer.perturbations.secular import SecularGravityGradient
+from andoyer.perturbations.averaged_gravity import SecularGravityGradient
 from andoyer.perturbations.solar_system import JULIAN_YEAR, OBLIQUITY, mean_perturbers
 
 ARCSEC = np.pi / 648000
@@ -128,7 +128,8 @@ def test_secular_deprecated_alias_warns_and_propagates_the_same():
     """``andoyer.integrate.secular.SecularGravityGradient`` moved to the models; the old name still works."""
     import andoyer.integrate.secular as old_place
 
-    with pytest.warns(DeprecationWarning, match="andoyer.perturbations.secular.SecularGravityGradient"):
+    moved = "andoyer.perturbations.averaged_gravity.SecularGravityGradient"
+    with pytest.warns(DeprecationWarning, match=moved):
         alias = old_place.SecularGravityGradient
     body = bodies.get("earth")
     G = body.C * 2 * np.pi / 86164.0905

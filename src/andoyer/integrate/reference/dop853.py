@@ -1,13 +1,10 @@
-r"""Reference integration: DOP853 or heyoka on the attitude quaternion and the body angular momentum.
+r"""The reference method's DOP853 path: the hub equations of ``N`` bodies as one system.
 
 The hub equations (:func:`andoyer.perturbations.perturbed_rates`, free part
 ``ṁ_1 = c_1 m_2 m_3`` written without cancellation, ``q̇ = ½ q ⊗ (ω, 0)``
-scalar last). With DOP853 the state vector of ``N`` bodies is integrated as
-one system of ``7N`` equations with dense output to reach every requested
-time. With heyoka (:mod:`andoyer.integrate.reference_heyoka`) each body has
-its own Taylor integration, compiled once per model structure, in SIMD
-batches. The quaternion is renormalised on output only: the flow preserves
-``|q|`` and the error control keeps the drift at the tolerance.
+scalar last) of ``N`` bodies are integrated by scipy's DOP853 as one system of ``7N``
+equations, with dense output to reach every requested time
+(:func:`~andoyer.integrate.reference.integrate_reference` with ``method="dop853"``).
 """
 
 from __future__ import annotations
@@ -16,110 +13,16 @@ from collections.abc import Callable
 from typing import Any
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import NDArray
 from scipy.integrate import solve_ivp
 
 from andoyer._limits import check_size, progress, spin_rate
 from andoyer._quaternion import product
-from andoyer._validation import as_finite
-from andoyer.integrate.output import gather_states, output_times
-from andoyer.integrate.reference_heyoka import _propagate_heyoka
 from andoyer.perturbations.model import Model
-from andoyer.state import State
 
-__all__ = ["integrate_reference"]
+__all__ = ["dop853_values"]
 
 Array = NDArray[np.float64]
-
-#: The integrators of :func:`integrate_reference`.
-METHODS = ("dop853", "heyoka")
-
-
-def integrate_reference(
-    model: Model,
-    state: State,
-    t: ArrayLike,
-    t0: float = 0.0,
-    rtol: float | None = None,
-    atol: float | None = None,
-    method: str = "dop853",
-) -> State:
-    """Propagate ``state`` (at time ``t0``) under ``model`` to times ``t`` with DOP853 or heyoka.
-
-    Parameters
-    ----------
-    model : Model
-    state : State, shape (S...)
-    t : array_like, shape (T...)
-        Output times; they broadcast with the state's shape.
-    t0 : float
-        Time of ``state``.
-    rtol, atol : float, optional
-        DOP853 tolerances, default ``1e-12`` and ``1e-14``; ``atol`` applies to
-        quaternion components and, scaled by the largest ``|m|``, to the
-        momenta. For heyoka, ``rtol`` is its single tolerance (default: machine
-        epsilon; quaternion and ``m/max|m|`` alike) and ``atol`` must be ``None``.
-    method : {"dop853", "heyoka"}
-        scipy's DOP853 (any model), or heyoka's Taylor integrator (optional
-        dependency; gravity gradients of Kepler and circular orbits,
-        constant-rate precessing frames, heavy tops and linear damping).
-
-    Returns
-    -------
-    State, shape broadcast(S..., T...)
-
-    Raises
-    ------
-    ValueError
-        For bad input, an unknown method, heyoka missing, a model heyoka cannot
-        express, or a failed integration.
-
-    Examples
-    --------
-    >>> from andoyer import RigidBody, State
-    >>> body = RigidBody(1.0, 2.0, 2.5)
-    >>> s = State.from_quaternion([0, 0, 0, 1.0], [0.0, 0.0, 2.0])  # steady spin about b3
-    >>> out = integrate_reference(Model(body), s, [0.0, 1.0])
-    >>> out.m_body.round(12).tolist()
-    [[0.0, 0.0, 2.0], [0.0, 0.0, 2.0]]
-    """
-    if not isinstance(model, Model):
-        msg = f"expected an andoyer Model, got {type(model).__name__}"
-        raise ValueError(msg)
-    if not isinstance(state, State):
-        msg = f"expected an andoyer State, got {type(state).__name__}"
-        raise ValueError(msg)
-    if method not in METHODS:
-        msg = f"expected method in {METHODS}, got {method!r}"
-        raise ValueError(msg)
-    t0 = float(as_finite(t0, "t0"))
-    times, unique, shape = output_times(state, t, model.body.moments, t0)
-    q0 = state.quaternion.reshape(-1, 4)
-    m0 = state.m_body.reshape(-1, 3)
-    if method == "heyoka":
-        if atol is not None:
-            msg = f"expected atol=None with method='heyoka' (one tolerance, rtol), got {atol!r}"
-            raise ValueError(msg)
-        values = _heyoka_values(model, q0, m0, t0, unique, rtol)
-    else:
-        values = _dop853_values(
-            model, q0, m0, t0, unique, 1e-12 if rtol is None else rtol, 1e-14 if atol is None else atol
-        )
-    for time in unique:
-        if time == t0:
-            values[float(time)] = (q0, m0)
-    return gather_states(state, times, unique, shape, values)
-
-
-def _heyoka_values(
-    model: Model, q0: Array, m0: Array, t0: float, unique: Array, rtol: float | None
-) -> dict[float, tuple[Array, Array]]:
-    values: dict[float, tuple[Array, Array]] = {}
-    for targets in (unique[unique > t0], unique[unique < t0][::-1]):
-        if targets.size:
-            q, m = _propagate_heyoka(model, q0, m0, t0, targets, rtol)
-            values.update((float(time), (q[k], m[k])) for k, time in enumerate(targets))
-    return values
 
 
 #: DOP853 steps per radian turned at ``rtol = 1e-12`` (measured on heavy tops, 2.7-2.9); the
@@ -148,9 +51,27 @@ def _check_dop853_size(model: Model, m0: Array, t0: float, unique: Array, rtol: 
     )
 
 
-def _dop853_values(
+def dop853_values(
     model: Model, q0: Array, m0: Array, t0: float, unique: Array, rtol: float, atol: float
 ) -> dict[float, tuple[Array, Array]]:
+    """States ``(q, m)`` at each of the sorted times ``unique`` (but ``t0``), by time.
+
+    Parameters
+    ----------
+    model : Model
+    q0 : numpy.ndarray, shape (N, 4)
+    m0 : numpy.ndarray, shape (N, 3)
+    t0 : float
+    unique : numpy.ndarray, shape (U,)
+        Sorted output times, on either side of ``t0``.
+    rtol, atol : float
+        DOP853's tolerances (``atol`` scaled by the largest ``|m|`` for the momenta).
+
+    Returns
+    -------
+    dict
+        ``{time: (q (N, 4), m (N, 3))}`` for every time of ``unique`` but ``t0``.
+    """
     n = q0.shape[0]
     _check_dop853_size(model, m0, t0, unique, rtol)
     scale = max(float(np.max(np.linalg.norm(m0, axis=-1), initial=0.0)), np.finfo(float).tiny)

@@ -1,4 +1,8 @@
-r"""Symplectic splitting: the exact free flow composed with the flow of ``ΔH``.
+r"""The splitting method: the exact free flow composed with the flow of ``ΔH``, symplectically.
+
+``andoyer.propagate(..., method="splitting")`` is :func:`integrate_splitting`; its compiled
+loop for tabulated kicks is :mod:`andoyer.integrate.splitting.kernel`, its compositions
+:func:`~andoyer.compositions.splitting_coefficients`.
 
 ``K = T + V + F`` with ``T`` the free Hamiltonian, ``V(t, q)`` the
 attitude-only terms and ``F = -μ·M`` a precessing frame. Their flows are
@@ -30,9 +34,10 @@ from numpy.typing import ArrayLike, NDArray
 from andoyer import _quaternion as quat
 from andoyer._limits import STEP_SECONDS, check_size, progress
 from andoyer._validation import as_finite
+from andoyer.compositions import splitting_coefficients
 from andoyer.free.lean import NUMBA, free_step
 from andoyer.integrate.output import gather_states, output_times
-from andoyer.integrate.split_kernel import run_tabulated
+from andoyer.integrate.splitting.kernel import run_tabulated
 from andoyer.perturbations.base import Perturbation
 from andoyer.perturbations.model import Model
 from andoyer.state import State
@@ -49,39 +54,7 @@ __all__ = [
 Array = NDArray[np.float64]
 
 
-def _triple_jump(inner: list[float], order: int) -> list[float]:
-    root = 2.0 ** (1.0 / (order + 1))
-    outer = 1.0 / (2.0 - root)
-    middle = -root / (2.0 - root)
-    return [w * outer for w in inner] + [w * middle for w in inner] + [w * outer for w in inner]
-
-
-#: Yoshida (1990) solution A: the 7-stage 6th-order composition of Strang steps.
-_YOSHIDA6_A = (-1.17767998417887, 0.235573213359357, 0.784513610477560)
-
-
-def splitting_coefficients(order: int) -> list[float]:
-    """Fractions of the step taken by each Strang substep for an ``order``-th order scheme.
-
-    Examples
-    --------
-    >>> splitting_coefficients(2)
-    [1.0]
-    >>> round(sum(splitting_coefficients(6)), 14)
-    1.0
-    """
-    if order == 2:
-        return [1.0]
-    if order == 4:
-        return _triple_jump([1.0], 2)
-    if order == 6:
-        w1, w2, w3 = _YOSHIDA6_A
-        w0 = 1.0 - 2.0 * (w1 + w2 + w3)
-        return [w3, w2, w1, w0, w1, w2, w3]
-    msg = f"expected a splitting order of 2, 4 or 6, got {order!r}"
-    raise ValueError(msg)
-
-
+#: The Strang-step weights of each order (:func:`~andoyer.compositions.splitting_coefficients`).
 COMPOSITIONS = {order: splitting_coefficients(order) for order in (2, 4, 6)}
 
 
@@ -314,7 +287,7 @@ def integrate_splitting(
     shortened to land on it), each a composition of Strang steps
     ``V(h/2) ∘ F(h) ∘ T(h) ∘ V(h/2)`` of order 2, 4 or 6. Gravity-gradient,
     heavy-top and precessing-frame models run in a compiled loop when numba is
-    installed (:mod:`andoyer.integrate.split_kernel`); other attitude-only models and
+    installed (:mod:`andoyer.integrate.splitting.kernel`); other attitude-only models and
     the no-numba case step through :func:`split_step`. The output broadcasts the
     state's shape with ``t``'s.
 

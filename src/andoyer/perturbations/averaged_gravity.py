@@ -1,4 +1,4 @@
-r"""Secular (averaged) rotation of a fast rotator under gravity-gradient torques.
+r"""The averaged gravity-gradient term: the secular model of a fast rotator's angular momentum.
 
 Averaging ``ΔH`` of :class:`~andoyer.perturbations.GravityGradient` uniformly
 over the body's rotation about ``b3`` (``l``), over the rotation about the

@@ -15,7 +15,7 @@ from scipy.spatial.transform import Rotation
 
 from andoyer import RigidBody, State
 from andoyer.integrate import Model, integrate_reference
-from andoyer.integrate.euler_poisson import (
+from andoyer.integrate.reference.euler_poisson import (
     euler_poisson_integrals,
     euler_poisson_rates,
     integrate_euler_poisson,

@@ -1,6 +1,13 @@
-r"""Mean (secular) states of a fast rotator: the averaged model carried on a full :class:`~andoyer.State`.
+r"""The secular method: mean states of a fast rotator under the averaged model.
 
-:class:`~andoyer.perturbations.secular.SecularGravityGradient` evolves the mean
+``andoyer.propagate(..., method="secular")`` is :func:`integrate_secular`, which carries the
+averaged model on a full :class:`~andoyer.State`; the mean angular momentum alone is
+:func:`~andoyer.integrate.secular.momentum.propagate_momentum`, stepped by the exact
+rotations of :mod:`andoyer.integrate.secular.rotations`.
+``andoyer.integrate.secular.SecularGravityGradient`` is a deprecated alias of the model
+that still has the former method ``propagate_momentum``.
+
+:class:`~andoyer.perturbations.averaged_gravity.SecularGravityGradient` evolves the mean
 reference-frame angular momentum ``M̄`` (equivalently the Andoyer node ``h``
 and ``H = G cos I``; ``G`` and ``L`` are constant) after averaging over the
 fast angles ``l``, ``g`` and the perturbers' mean anomalies. A precessing
@@ -41,7 +48,8 @@ from andoyer._limits import PhasePrecisionWarning, check_size
 from andoyer._validation import as_finite
 from andoyer.free.motion import FreeMotion
 from andoyer.integrate.output import gather_table, output_times
-from andoyer.integrate.secular import propagate_checked
+from andoyer.integrate.secular.momentum import propagate_checked, propagate_momentum
+from andoyer.perturbations.averaged_gravity import SecularGravityGradient as _SecularModel
 from andoyer.perturbations.model import Model
 from andoyer.state import State
 
@@ -49,7 +57,7 @@ from andoyer.state import State
 jitable(quat.product)
 jitable(quat.from_zxz_one)
 
-__all__ = ["integrate_secular", "secular_parts"]
+__all__ = ["integrate_secular", "propagate_checked", "propagate_momentum", "secular_parts"]
 
 Array = NDArray[np.float64]
 
@@ -163,7 +171,7 @@ def integrate_secular(
     rtol : float
         Tolerance on ``M̄``: for a gravity-gradient model alone (forwards in time), the target
         relative global error of the compiled exact-rotation composition
-        (:func:`~andoyer.integrate.secular.propagate_momentum`); otherwise DOP853's tolerance.
+        (:func:`~andoyer.integrate.secular.momentum.propagate_momentum`); otherwise DOP853's tolerance.
 
     Returns
     -------
@@ -239,3 +247,30 @@ def integrate_secular(
         m_free, q_free = FreeMotion(moments, m0, q0).propagate((unique - t0)[:, None])
     q = _turned(M0, np.stack([means[float(x)] for x in unique]), q_free)
     return gather_table(state, times, unique, shape, q, m_free, conserved=True)
+
+
+class _DeprecatedSecularGravityGradient(_SecularModel):
+    """The former ``andoyer.integrate.secular.SecularGravityGradient``, with its method."""
+
+    def propagate_momentum(self, *args: Any, **kwargs: Any) -> Array:
+        """:func:`propagate_momentum` of this model."""
+        return propagate_momentum(self, *args, **kwargs)
+
+
+_DeprecatedSecularGravityGradient.__name__ = "SecularGravityGradient"
+_DeprecatedSecularGravityGradient.__qualname__ = "SecularGravityGradient"
+
+
+def __getattr__(name: str) -> Any:
+    # PEP 562: the model moved to andoyer.perturbations.averaged_gravity; the old name still works.
+    if name == "SecularGravityGradient":
+        warnings.warn(
+            "andoyer.integrate.secular.SecularGravityGradient is deprecated: use "
+            "andoyer.perturbations.averaged_gravity.SecularGravityGradient and "
+            "andoyer.integrate.secular.propagate_momentum(model, ...)",
+            DeprecationWarning,
+            stacklevel=2,
+        )
+        return _DeprecatedSecularGravityGradient
+    msg = f"module {__name__!r} has no attribute {name!r}"
+    raise AttributeError(msg)

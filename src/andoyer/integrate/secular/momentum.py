@@ -1,26 +1,21 @@
-r"""Propagation of the secular (averaged) gravity-gradient model of a fast rotator.
+r"""The mean angular momentum under the averaged gravity gradient of a fast rotator.
 
 The model itself, ``⟨ΔH⟩`` and ``dM/dt``, lives with the other models:
-:class:`andoyer.perturbations.secular.SecularGravityGradient`. Here is its
+:class:`andoyer.perturbations.averaged_gravity.SecularGravityGradient`. Here is its
 propagation, :func:`propagate_momentum`: exact rotations about the orbit normals
-composed to high order (:mod:`andoyer.integrate.secular_steps`) or scipy's DOP853.
-
-``andoyer.integrate.secular.SecularGravityGradient`` is a deprecated alias of the
-model that still has the former method ``propagate_momentum``.
+composed to high order (:mod:`andoyer.integrate.secular.rotations`) or scipy's DOP853.
 """
 
 from __future__ import annotations
-
-import warnings
-from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.integrate import solve_ivp
 
 from andoyer._validation import as_finite, as_vectors
-from andoyer.integrate.secular_steps import COMPOSITIONS, propagate_controlled
-from andoyer.perturbations.secular import SecularGravityGradient as SecularModel
+from andoyer.compositions import COMPOSITIONS
+from andoyer.integrate.secular.rotations import propagate_controlled
+from andoyer.perturbations.averaged_gravity import SecularGravityGradient as SecularModel
 
 __all__ = ["propagate_checked", "propagate_momentum"]
 
@@ -53,10 +48,10 @@ def propagate_momentum(
     rtol : float
         Relative tolerance: DOP853's (per step), or for ``"rotations"`` the target
         relative global error of ``M``, met by Richardson's estimate
-        (:func:`~andoyer.integrate.secular_steps.propagate_controlled`).
+        (:func:`~andoyer.integrate.secular.rotations.propagate_controlled`).
     method : {"rotations", "dop853"}
         ``"rotations"`` (default): palindromic composition of the exact rotations
-        about each ``k_p`` (:mod:`andoyer.integrate.secular_steps`), fixed steps of
+        about each ``k_p`` (:mod:`andoyer.integrate.secular.rotations`), fixed steps of
         up to two radians of the fastest rate (years for the planets), ``|M|``
         conserved to round-off. ``"dop853"``: scipy's adaptive DOP853.
     order : {2, 4, 6, 8}
@@ -74,7 +69,7 @@ def propagate_momentum(
     Examples
     --------
     >>> from andoyer import bodies
-    >>> from andoyer.perturbations.secular import SecularGravityGradient
+    >>> from andoyer.perturbations.averaged_gravity import SecularGravityGradient
     >>> from andoyer.perturbations.solar_system import JULIAN_YEAR, OBLIQUITY, mean_perturbers
     >>> earth = bodies.get("earth")
     >>> model = SecularGravityGradient(earth, mean_perturbers("earth"))
@@ -112,7 +107,7 @@ def propagate_checked(
     """:func:`propagate_momentum` by rotations, for arrays validated by the caller.
 
     The checks of :func:`propagate_momentum` on ``M0``, ``L`` and ``times`` are left to the
-    caller (:func:`andoyer.integrate.averaged.integrate_secular` has made them on its state
+    caller (:func:`andoyer.integrate.secular.integrate_secular` has made them on its state
     and times already: each costs microseconds, against a kernel of a few hundred for 1000
     years); ``order``, ``rtol`` and ``max_step`` are still checked here.
 
@@ -192,29 +187,3 @@ def _propagate_dop853(
     )
     return sol.y.T.reshape((len(times), *shape))
 
-
-class _DeprecatedSecularGravityGradient(SecularModel):
-    """The former ``andoyer.integrate.secular.SecularGravityGradient``, with its method."""
-
-    def propagate_momentum(self, *args: Any, **kwargs: Any) -> Array:
-        """:func:`propagate_momentum` of this model."""
-        return propagate_momentum(self, *args, **kwargs)
-
-
-_DeprecatedSecularGravityGradient.__name__ = "SecularGravityGradient"
-_DeprecatedSecularGravityGradient.__qualname__ = "SecularGravityGradient"
-
-
-def __getattr__(name: str) -> Any:
-    # PEP 562: the model moved to andoyer.perturbations.secular; the old name still works.
-    if name == "SecularGravityGradient":
-        warnings.warn(
-            "andoyer.integrate.secular.SecularGravityGradient is deprecated: use "
-            "andoyer.perturbations.secular.SecularGravityGradient and "
-            "andoyer.integrate.secular.propagate_momentum(model, ...)",
-            DeprecationWarning,
-            stacklevel=2,
-        )
-        return _DeprecatedSecularGravityGradient
-    msg = f"module {__name__!r} has no attribute {name!r}"
-    raise AttributeError(msg)

@@ -1,6 +1,6 @@
-r"""Exact-rotation compositions for the secular gravity-gradient equations.
+r"""The secular method's stepper: exact rotations about the orbit normals, composed to order 2-8.
 
-The averaged equations of :class:`~andoyer.perturbations.secular.SecularGravityGradient`,
+The averaged equations of :class:`~andoyer.perturbations.averaged_gravity.SecularGravityGradient`,
 
 .. math:: \dot{\mathbf M} = \sum_p c_p\,(\mathbf M\cdot\mathbf k_p(t))\;\mathbf k_p(t)\times\mathbf M,
    \qquad c_p = 2\kappa_p/G^2,
@@ -21,10 +21,12 @@ normals at the current time. The symmetric Strang step
    B_{m-1}(\tfrac h2)\cdots B_1(\tfrac h2)\,A(\tfrac h2)
 
 is of order 2; the palindromic compositions ``S(γ_s h)⋯S(γ_1 h)`` of
-:data:`COMPOSITIONS` raise it to 4, 6 or 8. Consecutive ``A`` halves merge (``A`` is
-a one-parameter group), so a step of ``s`` stages costs ``s (2m − 1)`` rotations about
-the ``B`` normals and ``s`` about ``k₀``. Every rotation conserves ``|M|``; the kernel
-also rescales ``M`` to ``G`` after each step so that round-off cannot accumulate in it.
+:data:`~andoyer.compositions.COMPOSITIONS` raise it to 4, 6 or 8 (the rotations and the
+compositions are those of :mod:`andoyer.compositions`, shared with the spin axis).
+Consecutive ``A`` halves merge (``A`` is a one-parameter group), so a step of ``s``
+stages costs ``s (2m − 1)`` rotations about the ``B`` normals and ``s`` about ``k₀``. Every
+rotation conserves ``|M|``; the kernel also rescales ``M`` to ``G`` after each step so that
+round-off cannot accumulate in it.
 With no ``B`` (Mars and the Sun) the outer flow is the whole flow and one rotation to
 each output is exact.
 
@@ -32,7 +34,7 @@ The steps are equal and span ``[0, t_K]``; every output time is reached by one p
 step off the grid (order ``p`` accurate, and not fed back), so dense outputs cost one
 step each and do not shorten the grid's step.
 
-The loop is compiled by :func:`andoyer.free.lean.jit` when numba is installed; the
+The loop is compiled by :func:`andoyer._jit.jit` when numba is installed; the
 same source runs interpreted on arrays of states (one Python loop over the steps).
 Compiled, a state's loop (:func:`_advance_compiled`) takes ``sin φ`` and ``1 − cos φ`` of
 the small rotation angles from short series and the drifting normals by the addition
@@ -54,42 +56,11 @@ import numpy as np
 from numpy.typing import NDArray
 
 from andoyer._jit import NUMBA, jit
+from andoyer.compositions import COMPOSITIONS, turn_about, turn_about_series
 
-__all__ = [
-    "COMPOSITIONS",
-    "propagate_controlled",
-    "propagate_rotations",
-    "turn_about",
-]
+__all__ = ["propagate_controlled", "propagate_rotations"]
 
 Array = NDArray[np.float64]
-
-_YOSHIDA4 = 1 / (2 - 2 ** (1 / 3))
-_KL6 = (0.39216144400731413928, 0.33259913678935943860, -0.70624617255763935981, 0.08221359629355080023)
-_KL8 = (
-    0.74167036435061295344822780,
-    -0.40910082580003159399730010,
-    0.19075471029623837995387626,
-    -0.57386247111608226665638773,
-    0.29906418130365592384446354,
-    0.33462491824529818378495798,
-    0.31529309239676659663205666,
-)
-
-
-def _palindrome(half: tuple[float, ...]) -> Array:
-    """Symmetric coefficients whose middle one makes them sum to 1."""
-    return np.array([*half, 1.0 - 2.0 * sum(half), *half[::-1]])
-
-
-#: Palindromic composition coefficients of the Strang step by order: Yoshida's triple
-#: jump (order 4); Kahan & Li (1997), Math. Comp. 66, 1089, s9odr6a and s15odr8.
-COMPOSITIONS = {
-    2: np.array([1.0]),
-    4: _palindrome((_YOSHIDA4,)),
-    6: _palindrome(_KL6),
-    8: _palindrome(_KL8),
-}
 
 _EPSILON = float(np.finfo(float).eps)
 _MAX_ANGLE = 2.0  # rad per coarse step (Richardson's pair): the error law still holds there
@@ -128,30 +99,6 @@ def _sequence(gamma: Array, inner: int) -> tuple[NDArray[np.int64], Array, float
     return np.array(flows, dtype=np.int64), np.array(weights), float(halves[0]), float(halves[-1])
 
 
-@jit(inline=True)
-def turn_about(x, y, z, kx, ky, kz, rate):
-    r"""The exact unit-time flow of ``ẋ = rate (k·x) (k × x)`` about a fixed unit axis ``k``.
-
-    ``k·x`` is conserved, so the flow turns ``x`` about ``k`` by ``φ = rate (k·x)``:
-    ``x' = x + sin φ (k × x) + 2 sin²(φ/2) ((k·x) k − x)`` (Rodrigues, written so that small
-    angles lose no digits). The one kernel of the secular gravity gradient and the spin axis;
-    scalars (compiled) or arrays of the same shape.
-
-    Examples
-    --------
-    >>> [round(float(c), 12) for c in turn_about(1.0, 0.0, 1.0, 0.0, 0.0, 1.0, np.pi / 2)]
-    [0.0, 1.0, 1.0]
-    """
-    d = x * kx + y * ky + z * kz
-    angle = rate * d
-    s = np.sin(angle)
-    v = 2.0 * np.sin(0.5 * angle) ** 2
-    cx = ky * z - kz * y
-    cy = kz * x - kx * z
-    cz = kx * y - ky * x
-    return x + s * cx + v * (d * kx - x), y + s * cy + v * (d * ky - y), z + s * cz + v * (d * kz - z)
-
-
 @jit
 def _advance(mx, my, mz, g, t, h, n, flows, weights, first, last, c0, k0, coef, si, ci, node0, rate):
     """``n`` steps of size ``h`` from time ``t``; scalars (compiled) or arrays of states."""
@@ -182,35 +129,6 @@ def _advance(mx, my, mz, g, t, h, n, flows, weights, first, last, c0, k0, coef, 
             scale = g / np.sqrt(mx * mx + my * my + mz * mz)
             mx, my, mz = mx * scale, my * scale, mz * scale
     return mx, my, mz
-
-
-#: Below this angle (rad) the compiled kernel takes ``sin φ`` and ``1 − cos φ`` from their Taylor
-#: series to ``φ⁵`` and ``φ⁶``: the first neglected terms, ``φ⁷/7!`` and ``φ⁸/8!``, are below
-#: 4e-19 and multiply vectors no longer than ``M``, far below an ulp of ``M``.
-_SMALL_ANGLE = 0.0078125
-
-
-@jit(inline=True)
-def _turn_compiled(x, y, z, kx, ky, kz, angle):
-    """:func:`turn_about` by ``angle`` (rate × time), for scalars: series at small angles.
-
-    ``s = sin φ`` and ``v = 2 sin²(φ/2) = 1 − cos φ`` by Horner in ``φ²`` (an ulp from
-    libm's). A rotation is a chain of dependent operations; the series is a shorter chain
-    than two calls of ``sin`` (the secular steps turn ``M`` by ~1e-3 rad).
-    """
-    d = x * kx + y * ky + z * kz
-    phi = angle * d
-    if abs(phi) <= _SMALL_ANGLE:
-        u = phi * phi
-        s = phi + phi * u * (-1.0 / 6 + u * (1.0 / 120))
-        v = u * (0.5 + u * (-1.0 / 24 + u * (1.0 / 720)))
-    else:
-        s = math.sin(phi)
-        v = 2.0 * math.sin(0.5 * phi) ** 2
-    cx = ky * z - kz * y
-    cy = kz * x - kx * z
-    cz = kx * y - ky * x
-    return x + s * cx + v * (d * kx - x), y + s * cy + v * (d * ky - y), z + s * cz + v * (d * kz - z)
 
 
 @jit(inline=True)
@@ -249,12 +167,12 @@ def _flow(mx, my, mz, t, f, w, j, base, offs, c0, k0, coef, si, ci):
     """Flow ``f`` of a step (0: outer, about ``k0``, carrying time; ``p + 1``: drifting perturber ``p``)."""
     if f == 0:
         t = t + w
-        mx, my, mz = _turn_compiled(mx, my, mz, k0[0], k0[1], k0[2], c0 * w)
+        mx, my, mz = turn_about_series(mx, my, mz, k0[0], k0[1], k0[2], c0 * w)
     else:
         p = f - 1
         sn = base[p, 0] * offs[j, 1] + base[p, 1] * offs[j, 0]
         cn = base[p, 1] * offs[j, 1] - base[p, 0] * offs[j, 0]
-        mx, my, mz = _turn_compiled(mx, my, mz, si[p] * sn, -si[p] * cn, ci[p], coef[p] * w)
+        mx, my, mz = turn_about_series(mx, my, mz, si[p] * sn, -si[p] * cn, ci[p], coef[p] * w)
     return mx, my, mz, t
 
 
@@ -276,7 +194,7 @@ def _step(mx, my, mz, g, t, h, final, flows, weights, last, base, offs, c0, k0, 
 def _start(mx, my, mz, g, t, h, first, c0, k0):
     """The first outer flow ``A(a_1 h)`` of a run of steps (the later ones merge with each step's last)."""
     w = first * h
-    mx, my, mz = _turn_compiled(mx, my, mz, k0[0], k0[1], k0[2], c0 * w)
+    mx, my, mz = turn_about_series(mx, my, mz, k0[0], k0[1], k0[2], c0 * w)
     mx, my, mz = _rescaled(mx, my, mz, g)
     return mx, my, mz, t + w
 
@@ -285,7 +203,7 @@ def _start(mx, my, mz, g, t, h, first, c0, k0):
 def _advance_compiled(mx, my, mz, g, t, h, n, flows, weights, first, last, c0, k0, coef, si, ci, node0, rate):
     """:func:`_advance` for one state, compiled: the same flows, cheaper sines.
 
-    The rotations by :func:`_turn_compiled`; the nodes of the drifting normals by the
+    The rotations by :func:`turn_about_series`; the nodes of the drifting normals by the
     addition theorem from their values at the start of each step (one ``sin, cos`` per
     perturber and step), the advance within a step (the same for every step) tabulated
     once. Agrees with :func:`_advance` to round-off (the tests compare them).

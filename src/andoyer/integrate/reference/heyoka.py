@@ -1,7 +1,7 @@
-r"""The reference equations as a heyoka Taylor integrator (optional dependency).
+r"""The reference method's heyoka path: the hub equations as a Taylor integrator (optional dependency).
 
-The same hub equations as the DOP853 path of
-:func:`~andoyer.integrate.integrate_reference`, written as heyoka expressions:
+The same hub equations as the DOP853 path (:mod:`andoyer.integrate.reference.dop853`) of
+:func:`~andoyer.integrate.reference.integrate_reference`, written as heyoka expressions:
 
 .. math::
    \dot q = \tfrac12\, q\otimes(\boldsymbol\omega - \boldsymbol\mu_b,\ 0), \qquad
@@ -35,7 +35,7 @@ from andoyer.perturbations.base import Perturbation
 from andoyer.perturbations.expressions import HeyokaContext, Parameters, kepler_position
 from andoyer.perturbations.model import Model
 
-__all__ = ["heyoka_system", "kepler_position"]
+__all__ = ["heyoka_system", "heyoka_values", "kepler_position"]
 
 Array = NDArray[np.float64]
 
@@ -198,3 +198,32 @@ def _propagate_heyoka(
             raise ValueError(msg)
         out[:, start : start + k] = np.moveaxis(values[..., :k], 1, 2)
     return out[..., :4], out[..., 4:] * scale
+
+
+def heyoka_values(
+    model: Model, q0: Array, m0: Array, t0: float, unique: Array, rtol: float | None
+) -> dict[float, tuple[Array, Array]]:
+    """States ``(q, m)`` at each of the sorted times ``unique`` (but ``t0``), by time: both directions.
+
+    Parameters
+    ----------
+    model : Model
+    q0 : numpy.ndarray, shape (N, 4)
+    m0 : numpy.ndarray, shape (N, 3)
+    t0 : float
+    unique : numpy.ndarray, shape (U,)
+        Sorted output times, on either side of ``t0``.
+    rtol : float or None
+        heyoka's tolerance (``None``: machine epsilon).
+
+    Returns
+    -------
+    dict
+        ``{time: (q (N, 4), m (N, 3))}`` for every time of ``unique`` but ``t0``.
+    """
+    values: dict[float, tuple[Array, Array]] = {}
+    for targets in (unique[unique > t0], unique[unique < t0][::-1]):
+        if targets.size:
+            q, m = _propagate_heyoka(model, q0, m0, t0, targets, rtol)
+            values.update((float(time), (q[k], m[k])) for k, time in enumerate(targets))
+    return values
