@@ -157,6 +157,10 @@ def test_cli_cassini_body_file_json_and_toml(cli, run_cli, tmp_path):
     assert fields["inclination"] == pytest.approx(5.0, rel=1e-15)
 
 
+MOMENT = "argument --moment-of-inertia: expected a polar moment of inertia 0 < C/MR^2 <= 1"
+NODE = "argument --node-period: expected a node period T_node > 0 yr"
+SLOPE = "argument --inclination: expected an inclination 0 < i < 90 deg"
+
 REFUSED = {
     "partial": (["mercury", "--moment-of-inertia", "0.34"], "expected every value option or none"),
     "missing_value": (["triton"], "expected Triton to have gm for the Cassini states"),
@@ -179,13 +183,17 @@ REFUSED = {
         ["titan", "--obliquity", "0.3", "--obliquity-error=-1"],
         "expected 0 <= --obliquity-error",
     ),
-    "negative_moment": ([*TITAN[:4], "--moment-of-inertia", "-0.3", *TITAN[6:]], "argument --moment-of-inertia: expected a polar moment of inertia 0 < C/MR^2 <= 1"),
+    "negative_moment": ([*TITAN[:4], "--moment-of-inertia", "-0.3", *TITAN[6:]], MOMENT),
     "c22_too_large": ([*TITAN[:2], "--c22", "1e-4", *TITAN[4:]], "expected J2 > 0 and 0 <= C22 <= J2/2"),
-    "zero_node_period": ([*TITAN[:10], "--node-period", "0", *TITAN[12:]], "argument --node-period: expected a node period T_node > 0 yr"),
-    "inclination_90": ([*TITAN[:12], "--inclination", "90", *TITAN[14:]], "argument --inclination: expected an inclination 0 < i < 90 deg"),
+    "zero_node_period": ([*TITAN[:10], "--node-period", "0", *TITAN[12:]], NODE),
+    "inclination_90": ([*TITAN[:12], "--inclination", "90", *TITAN[14:]], SLOPE),
     "resonance": ([*TITAN[:16], "--resonance", "0.7"], "expected a spin-orbit resonance p with 2p"),
     "mass_ratio": ([*TITAN[:14], "--mass-ratio", "2", *TITAN[16:]], "expected 0 <= mass_ratio < 1"),
-    "nan_j2": (["--j2", "nan", *TITAN[2:]], "expected a finite number"),
+    "nan_j2": (
+        ["--j2", "nan", *TITAN[2:]],
+        "argument --j2: expected a second-degree zonal coefficient J2 > 0",
+    ),
+    "nan_period": ([*TITAN[:6], "--orbital-period", "nan", *TITAN[8:]], "expected a finite number"),
     "bad_node": (["titan", "--node", "jpl"], "invalid choice"),
     "node_with_values": ([*TITAN, "--node", "model"], "expected --node with a BODY or a --body-file"),
     "values_and_file": ([*TITAN, "--body-file", "x.json"], "expected the value options or --body-file"),
