@@ -33,7 +33,6 @@ if TYPE_CHECKING:  # the eager names, for type checkers and IDEs
     from andoyer import (
         bodies,
         catalogue,
-        charts,
         free,
         integrate,
         liepoisson,
@@ -41,24 +40,24 @@ if TYPE_CHECKING:  # the eager names, for type checkers and IDEs
         planetary,
         series,
         special,
+        state,
         theories,
     )
     from andoyer._limits import PhasePrecisionWarning
     from andoyer.body import NonPhysicalInertiaWarning, RigidBody, Symmetry
-    from andoyer.charts import SingularChartWarning
-    from andoyer.free import FreeRotation
+    from andoyer.free_rotation import FreeRotation
     from andoyer.integrate.propagation import propagate
     from andoyer.regime import Regime
-    from andoyer.state import State
+    from andoyer.state import SingularChartWarning, State
 
 #: Public name -> the module that defines it (a subpackage maps to itself).
 _LAZY = {
-    "FreeRotation": "andoyer.free",
+    "FreeRotation": "andoyer.free_rotation",
     "NonPhysicalInertiaWarning": "andoyer.body",
     "PhasePrecisionWarning": "andoyer._limits",
     "Regime": "andoyer.regime",
     "RigidBody": "andoyer.body",
-    "SingularChartWarning": "andoyer.charts",
+    "SingularChartWarning": "andoyer.state",
     "State": "andoyer.state",
     "Symmetry": "andoyer.body",
     "propagate": "andoyer.integrate.propagation",
@@ -67,7 +66,6 @@ _LAZY = {
         for name in (
             "bodies",
             "catalogue",
-            "charts",
             "free",
             "integrate",
             "liepoisson",
@@ -75,6 +73,7 @@ _LAZY = {
             "planetary",
             "series",
             "special",
+            "state",
             "theories",
         )
     },
@@ -91,7 +90,6 @@ __all__ = [
     "Symmetry",
     "bodies",
     "catalogue",
-    "charts",
     "free",
     "integrate",
     "liepoisson",
@@ -100,6 +98,7 @@ __all__ = [
     "propagate",
     "series",
     "special",
+    "state",
     "theories",
 ]
 

@@ -42,6 +42,11 @@ MOVED: dict[str, str] = {
     "andoyer.integrate.reference_heyoka": "andoyer.integrate.reference.heyoka",
     "andoyer.integrate.euler_poisson": "andoyer.integrate.reference.euler_poisson",
     "andoyer.perturbations.secular": "andoyer.perturbations.averaged_gravity",
+    "andoyer.charts": "andoyer.state",
+    "andoyer.equations": "andoyer.state",
+    "andoyer.hamiltonians": "andoyer.state",
+    "andoyer.state_charts": "andoyer.state.hub",
+    "andoyer.free.rotation": "andoyer.free_rotation",
 }
 
 

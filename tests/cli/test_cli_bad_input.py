@@ -114,6 +114,13 @@ VALID: dict[str, Valid] = {
         ),
         "--output",
     ),
+    "tides": Valid(
+        (
+            "tides earth --span -1e8 0 --step 5e7 --obliquity 23 --format json --output {out}",
+            "tides earth --model constant-lag --span -2e8 1e8 --step 1e8 --no-solar-tide --format csv",
+        ),
+        "--output",
+    ),
     "brackets": Valid(("brackets --algebra so3 --format json --output {out}",), "--output"),
     "series sam": Valid(("series sam --order 2 --format tex --output {out}",), "--output"),
     "portrait phase": Valid(

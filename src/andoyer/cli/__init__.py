@@ -71,6 +71,10 @@ COMMANDS: dict[str, tuple[str, str]] = {
         "andoyer.cli.obliquity_cmd",
         "obliquity, general and climatic precession of the Earth or Mars over 10^3-10^7 years",
     ),
+    "tides": (
+        "andoyer.cli.tides_cmd",
+        "the Earth-Moon tidal history: lunar distance, day length, precession constant, obliquity (Gyr)",
+    ),
     "ensemble": (
         "andoyer.cli.ensemble_cmd",
         "propagate a seeded Monte-Carlo ensemble of states on Dask (Zarr or NetCDF, resumable)",

@@ -10,9 +10,9 @@ import numpy as np
 
 from andoyer import bodies
 from andoyer.body import RigidBody
-from andoyer.charts.registry import Chart, charts
 from andoyer.cli.output import CliError, read_csv_columns
 from andoyer.state import State
+from andoyer.state.registry import Chart, charts
 
 
 @dataclass(frozen=True)
@@ -27,7 +27,7 @@ class ChartColumns:
 
 
 # The charts the command line offers, in the order of its help; their signatures come from the
-# registry (andoyer.charts.registry), written once in each chart's module.
+# registry (andoyer.state.registry), written once in each chart's module.
 CLI_CHARTS = ("state", "euler", "andoyer", "sadov", "serret")
 
 

@@ -26,7 +26,7 @@ from andoyer._files import new_dir_mode
 from andoyer.body import RigidBody
 from andoyer.cli.chart_table import CHARTS
 from andoyer.cli.output import CliError, atomic_output, output_target
-from andoyer.free import FreeRotation
+from andoyer.free_rotation import FreeRotation
 from andoyer.regime import Regime
 from andoyer.state import State
 

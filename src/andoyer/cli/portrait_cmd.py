@@ -13,7 +13,7 @@ from andoyer.body import RigidBody
 from andoyer.cli.cassini_cmd import add_cassini_arguments, cassini_body_from_args
 from andoyer.cli.chart_table import add_body_arguments, body_from_args
 from andoyer.cli.output import CliError, add_output_argument, atomic_output
-from andoyer.free import FreeRotation
+from andoyer.free_rotation import FreeRotation
 from andoyer.state import State
 
 EXAMPLES = """examples:

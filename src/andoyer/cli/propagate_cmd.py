@@ -17,7 +17,7 @@ from andoyer.cli.chart_table import (
 )
 from andoyer.cli.named_models import MODELS, add_model_arguments, model_from_args
 from andoyer.cli.output import CliError, add_output_argument, atomic_output, format_rows
-from andoyer.free import FreeRotation
+from andoyer.free_rotation import FreeRotation
 from andoyer.integrate.propagation import propagate
 
 EXAMPLES = """examples:

@@ -24,6 +24,8 @@ Examples
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 from numpy.typing import ArrayLike
 
@@ -118,6 +120,7 @@ def spin_axis_history(
     axis: ArrayLike | None = None,
     step: float = DEFAULT_STEP,
     order: int = 8,
+    coupling: Callable[[SpinAxisModel, tuple[float, float]], SpinAxisModel] | None = None,
 ) -> SpinAxisHistory:
     r"""The spin axis of ``body`` along ``orbit`` at ``times`` (Julian years from J2000).
 
@@ -148,6 +151,10 @@ def spin_axis_history(
         1/16 of a turn in one (:data:`~andoyer.planetary.spin_axis.history.MAX_TURN_PER_STEP`).
     order : {2, 4, 6, 8}
         Order of the composition.
+    coupling : callable, optional
+        ``coupling(model, (T0, T1))`` returns the model to integrate in place of the one built
+        here (e.g. with ``α(t)`` following a tidal history:
+        ``andoyer.planetary.tides.tidal_spin_axis_history``).
 
     Returns
     -------
@@ -188,4 +195,6 @@ def spin_axis_history(
         orbit, body, s0, precession_rate, dynamical_ellipticity, tidal_dissipation, ellipticity_drift
     )
     model.check_span(min(t[0], 0.0), max(t[-1], 0.0))
+    if coupling is not None:
+        model = coupling(model, (float(t[0]), float(t[-1])))
     return history(orbit, model, t, s0, step, order)
