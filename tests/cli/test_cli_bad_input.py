@@ -88,9 +88,11 @@ VALID: dict[str, Valid] = {
         (
             "cassini moon --format json --output {out}",
             (
-                "cassini mercury --j2 5.03e-5 --c22 0.81e-5 --moment-of-inertia 0.346 "
-                "--node-period 325000 --inclination 8.6 --format table"
+                "cassini --j2 5.03e-5 --c22 0.81e-5 --moment-of-inertia 0.346 --orbital-period 87.97 "
+                "--eccentricity 0.2056 --node-period 325000 --inclination 8.6 --mass-ratio 1.66e-7 "
+                "--resonance 1.5 --format table"
             ),
+            "cassini titan --node model --obliquity 0.32 --obliquity-error 0.02 --format json",
         ),
         "--output",
     ),
@@ -141,8 +143,9 @@ VALID: dict[str, Valid] = {
         (
             "portrait cassini --body moon --levels 3 --dpi 20 --out {out}",
             (
-                "portrait cassini --body mercury --j2 5.03e-5 --c22 0.81e-5 --moment-of-inertia 0.346 "
-                "--node-period 325000 --inclination 8.6 --levels 3 --dpi 20 --out {out}"
+                "portrait cassini --j2 5.03e-5 --c22 0.81e-5 --moment-of-inertia 0.346 "
+                "--orbital-period 87.97 --eccentricity 0.2056 --node-period 325000 --inclination 8.6 "
+                "--mass-ratio 1.66e-7 --resonance 1.5 --levels 3 --dpi 20 --out {out}"
             ),
         ),
         "--out",

@@ -22,6 +22,7 @@ from scipy.spatial.transform import Rotation
 
 import andoyer
 import andoyer.planetary.cassini
+import andoyer.planetary.cassini as cassini_api
 import andoyer.planetary.nutation
 import andoyer.planetary.precession
 import andoyer.planetary.spin_axis
@@ -466,13 +467,67 @@ CASES = [
     (CassiniBody, CassiniBody, ("x", 1e-4, -1e-5, 0.3, 1.0, 0.0, 0.1, -0.01), ValueError, "C22 >= 0"),
     (ColomboTop, ColomboTop, (NAN, 0.0, -0.01, 0.1), ValueError, "expected finite"),
     (eccentricity_function, eccentricity_function, (1.5, 1.0), ValueError, "expected"),
-    (andoyer.planetary.cassini.get, andoyer.planetary.cassini.get, ("pluto",), ValueError, "expected a body"),
+    (
+        andoyer.planetary.cassini.get,
+        andoyer.planetary.cassini.get,
+        ("vulcan",),
+        ValueError,
+        "expected a body",
+    ),
+    (andoyer.planetary.cassini.get, andoyer.planetary.cassini.get, ("triton",), ValueError, "to have gm"),
     (
         andoyer.planetary.cassini.states,
         andoyer.planetary.cassini.states,
-        ("pluto",),
+        ("vulcan",),
         ValueError,
         "expected a body",
+    ),
+    (
+        cassini_api.forced_obliquity,
+        cassini_api.forced_obliquity,
+        ("moon", "jpl"),
+        ValueError,
+        "expected node",
+    ),
+    (cassini_api.forced_obliquity, cassini_api.forced_obliquity, ("enceladus",), ValueError, "to have"),
+    (
+        cassini_api.satellite_system,
+        cassini_api.satellite_system,
+        ("mars",),
+        ValueError,
+        "expected satellites",
+    ),
+    (cassini_api.NodeMode, cassini_api.NodeMode, (0.1, 0.01), ValueError, "expected node_rate < 0"),
+    (cassini_api.NodeMode, cassini_api.NodeMode, (-0.1, NAN), ValueError, "expected finite"),
+    (
+        cassini_api.ForcedObliquity,
+        cassini_api.ForcedObliquity,
+        ("moon", ()),
+        ValueError,
+        "expected a CassiniBody",
+    ),
+    (cassini_api.Satellite, cassini_api.Satellite, ("s", 1.0, -1.0, 1.0), ValueError, "expected gm >= 0"),
+    (cassini_api.Satellite, cassini_api.Satellite, ("s", 1.0, INF, 1.0), ValueError, "expected a finite"),
+    (
+        cassini_api.SatelliteSystem,
+        cassini_api.SatelliteSystem,
+        (1.0, 1.0, NAN, 0.1, 1e-6, (cassini_api.Satellite("s", 0.0, 3.0, 0.2),)),
+        ValueError,
+        "expected finite",
+    ),
+    (
+        cassini_api.moment_of_inertia_from_obliquity,
+        cassini_api.moment_of_inertia_from_obliquity,
+        ("titan", NAN),
+        ValueError,
+        "expected an observed obliquity",
+    ),
+    (
+        cassini_api.moment_of_inertia_from_obliquity,
+        cassini_api.moment_of_inertia_from_obliquity,
+        ("titan", 0.005, HUGE),
+        ValueError,
+        "expected an obliquity error",
     ),
     # -- nutation
     (nutation, nutation, ([NAN],), ValueError, "expected finite"),
@@ -516,6 +571,10 @@ EXEMPT = {
     "TidalHistory": "a record of results",
     "NutationSeries": "a record of results",
     "CassiniState": "a record of results",
+    "LaplaceModes": "a record of results (SatelliteSystem.modes, in the table)",
+    "ModeResponse": "a record of results (ForcedObliquity.responses)",
+    "MomentEstimate": "a record of results (moment_of_inertia_from_obliquity, in the table)",
+    "NODE_SOURCES": "a constant",
     "mean_pole_j2000": "takes no argument",
     # constants of the applications
     "AXES": "a constant",

@@ -107,7 +107,7 @@ def _register_cassini(kinds: argparse._SubParsersAction) -> None:
 
     text = "phase portrait of Colombo's top with the Cassini states and the separatrix"
     sub = kinds.add_parser("cassini", help=text, description=text)
-    sub.add_argument("--body", type=str.lower, choices=sorted(BODIES), default="moon", help="default moon")
+    sub.add_argument("--body", type=str.lower, choices=sorted(BODIES), help="default moon")
     add_cassini_arguments(sub)
     sub.add_argument(
         "--out", metavar="FILE", help="PNG or SVG file, or - for stdout (default portrait-cassini.png)"
