@@ -56,6 +56,9 @@ MAX_SPAN = 1.0e9
 E_MAX, I_MAX = 0.35, np.radians(20.0)
 #: Steps per extension of a run (the unit of progress and of interruption).
 CHUNK_STEPS = 1 << 15
+#: Derivative monomials smaller than this fraction of their component's linear rate are left out
+#: of the flow (at 1.5 times the largest amplitude the linear theory allows each variable).
+PRUNE = 1e-6
 
 
 @dataclass(frozen=True)
@@ -120,8 +123,12 @@ def secular_model() -> SecularModel:
         coefficients[row] = complex(re, im)
     Lambda, a = np.array(raw["Lambda"]), np.array(raw["a"])
     gr = relativity_constant(raw["sun_gm"], np.array(raw["gm"]), a, C_AU_PER_YEAR)
-    terms = FlowTerms.from_polynomial(exponents, coefficients, count, gr, Lambda)
     w0 = np.array([complex(*z) for z in raw["x0"] + raw["y0"]])
+    full = FlowTerms.from_polynomial(exponents, coefficients, count, gr, Lambda)
+    # The largest |w_b| the linear flow reaches from w0: Σ_m |V_bm| |(V⁻¹ w0)_m|.
+    _, vectors = np.linalg.eig(full.linear)
+    amplitude = 1.5 * np.abs(vectors) @ np.abs(np.linalg.solve(vectors, w0))
+    terms = FlowTerms.from_polynomial(exponents, coefficients, count, gr, Lambda, amplitude, PRUNE)
     return SecularModel(terms, Lambda, a, np.array(raw["n"]), w0, np.array(raw["rotation"]), raw["settings"])
 
 

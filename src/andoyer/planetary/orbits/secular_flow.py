@@ -37,7 +37,7 @@ from numpy.typing import NDArray
 
 from andoyer._jit import jit
 
-__all__ = ["FlowTerms", "default_step", "hermite", "integrate", "lawson_matrices"]
+__all__ = ["FlowTerms", "default_step", "energy", "hermite", "integrate", "lawson_matrices"]
 
 CArray = NDArray[np.complex128]
 IArray = NDArray[np.int64]
@@ -54,16 +54,20 @@ class FlowTerms:
         ``L``: ``ẇ = L w`` from the quadratic terms and relativity's quadratic part.
     width : int
         One more than the highest power of a variable in a monomial.
-    start : numpy.ndarray of int, shape (2P + 1,)
-        The derivative monomials of ``∂H/∂w̄_b`` are rows ``start[b]`` to ``start[b+1]``.
-    coefficient : numpy.ndarray of complex, shape (T,)
-    factor_start : numpy.ndarray of int, shape (T + 1,)
-    factor_index : numpy.ndarray of int, shape (F,)
-        Row ``d`` is ``coefficient[d] Π_f powers[factor_index[f]]`` over ``f`` from
-        ``factor_start[d]`` to ``factor_start[d+1]``, with ``powers[v·width + p] = w_v^p``
-        (variables ``0…4P−1`` = ``x, x̄, y, ȳ``).
-    energy_coefficient : numpy.ndarray of complex, shape (E,)
-    energy_start, energy_index : numpy.ndarray of int
+    target : numpy.ndarray of int32, shape (T,)
+        Component ``b`` of ``∂H/∂w̄_b`` each derivative monomial adds to.
+    coefficient : numpy.ndarray, shape (T,)
+        Real coefficients (the secular Hamiltonian's are real in these variables: it is even
+        under ``(x, y) → (x̄, ȳ)``, the mirror image of the system with time reversed).
+    factors : numpy.ndarray of int32, shape (T, F)
+        Row ``d`` is ``coefficient[d] Π_f powers[factors[d, f]]`` with
+        ``powers[v·width + p] = w_v^p`` (variables ``0…4P−1`` = ``x, x̄, y, ȳ``); unused
+        slots hold 0 (``w_0^0 = 1``).
+    groups : numpy.ndarray of int, shape (F + 1,)
+        Rows ``groups[n−1]`` to ``groups[n]`` have ``n`` factors (the kernel's inner loop
+        is as long as needed).
+    energy_coefficient : numpy.ndarray, shape (E,)
+    energy_factors : numpy.ndarray of int32, shape (E, F + 1)
         The polynomial itself, in the same layout (for :func:`energy`).
     gr_constant, gr_lambda : numpy.ndarray, shape (P,)
         ``K_j`` and ``Λ_j`` of the relativistic term (zeros: no relativity).
@@ -72,13 +76,12 @@ class FlowTerms:
     count: int
     linear: CArray
     width: int
-    start: IArray
-    coefficient: CArray
-    factor_start: IArray
-    factor_index: IArray
-    energy_coefficient: CArray
-    energy_start: IArray
-    energy_index: IArray
+    target: NDArray[np.int32]
+    coefficient: NDArray[np.float64]
+    factors: NDArray[np.int32]
+    groups: IArray
+    energy_coefficient: NDArray[np.float64]
+    energy_factors: NDArray[np.int32]
     gr_constant: NDArray[np.float64]
     gr_lambda: NDArray[np.float64]
 
@@ -90,20 +93,35 @@ class FlowTerms:
         count: int,
         gr_constant: NDArray[np.float64] | None = None,
         Lambda: NDArray[np.float64] | None = None,
+        amplitude: NDArray[np.float64] | None = None,
+        threshold: float = 0.0,
     ) -> FlowTerms:
         """Arrange a polynomial Hamiltonian (exponents over ``x, x̄, y, ȳ``) for the flow.
 
         Parameters
         ----------
         exponents : numpy.ndarray of int, shape (T, 4P)
-        coefficients : numpy.ndarray of complex, shape (T,)
+        coefficients : numpy.ndarray, shape (T,)
+            Real (a complex array must have imaginary parts below ``10⁻⁸`` of its moduli).
         count : int
             ``P``.
         gr_constant, Lambda : numpy.ndarray, shape (P,), optional
             The relativistic term ``−K_j/(1 − |x_j|²/(2Λ_j))``.
+        amplitude : numpy.ndarray, shape (2P,), optional
+            Bounds on ``|w_b|`` for the pruning.
+        threshold : float
+            Drop the derivative monomials whose size at ``amplitude`` is below ``threshold``
+            times ``Σ_a |L_ba| amplitude_a`` (the linear rate of their component); the
+            energy keeps every term.
         """
         exponents = np.asarray(exponents, dtype=np.int64)
-        coefficients = np.asarray(coefficients, dtype=complex)
+        coefficients = np.asarray(coefficients)
+        if np.iscomplexobj(coefficients):
+            if np.any(np.abs(coefficients.imag) > 1e-8 * np.abs(coefficients)):
+                msg = "expected real coefficients (imaginary parts below 1e-8 of the moduli), got complex ones"
+                raise ValueError(msg)
+            coefficients = coefficients.real
+        coefficients = coefficients.astype(float)
         P = count
         gr = np.zeros(P) if gr_constant is None else np.asarray(gr_constant, dtype=float)
         lam = np.ones(P) if Lambda is None else np.asarray(Lambda, dtype=float)
@@ -111,7 +129,7 @@ class FlowTerms:
         plain = np.r_[0:P, 2 * P : 3 * P]  # the columns of x, y among x, x̄, y, ȳ
         bars = np.r_[P : 2 * P, 3 * P : 4 * P]
         width = int(exponents.max()) + 1 if exponents.size else 2
-        rows: list[list[tuple[complex, list[int]]]] = [[] for _ in range(2 * P)]
+        rows: list[tuple[int, float, list[int]]] = []
         for m, c in zip(exponents, coefficients, strict=True):
             if m.sum() == 2:
                 # c w_a w̄_b: ∂H/∂w̄_b gets c w_a, ẇ_b = −2i c w_a.
@@ -125,36 +143,41 @@ class FlowTerms:
                 reduced = m.copy()
                 reduced[column] -= 1
                 nz = np.nonzero(reduced)[0]
-                rows[b].append((c * m[column], (nz * width + reduced[nz]).tolist()))
+                rows.append((b, c * m[column], (nz * width + reduced[nz]).tolist()))
         # Relativity's quadratic part −K(1 + |x|²/(2Λ) + …) is linear in the flow: ẋ = i (K/Λ) x.
         linear[np.arange(P), np.arange(P)] += 1j * gr / lam
-        flat = [row for block in rows for row in block]
-        start = np.cumsum([0] + [len(block) for block in rows])
-        energy_rows = []
-        for m, c in zip(exponents, coefficients, strict=True):
-            nz = np.nonzero(m)[0]
-            energy_rows.append((c, (nz * width + m[nz]).tolist()))
+        if amplitude is not None and threshold > 0:
+            amp = np.asarray(amplitude, dtype=float)
+            value = np.concatenate([amp[:P], amp[:P], amp[P:], amp[P:]])  # x, x̄, y, ȳ
+            rate = np.abs(linear) @ amp
+
+            def size(row: tuple[int, float, list[int]]) -> float:
+                b, c, index = row
+                return 2.0 * abs(c) * float(np.prod([value[i // width] ** (i % width) for i in index])) / rate[b]
+
+            rows = [row for row in rows if size(row) >= threshold]
+        rows.sort(key=lambda row: (len(row[2]), row[0]))
+        most = max([len(f) for _, _, f in rows], default=1)
+        sizes = np.bincount([len(f) for _, _, f in rows], minlength=most + 1)[1:]
+        energy = [(c, (np.nonzero(m)[0] * width + m[np.nonzero(m)[0]]).tolist()) for m, c in zip(exponents, coefficients, strict=True)]
+        wide = max([len(f) for _, f in energy], default=1)
         return cls(
             count=P,
             linear=linear,
             width=width,
-            start=np.asarray(start, dtype=np.int64),
-            coefficient=np.array([c for c, _ in flat], dtype=complex),
-            factor_start=np.cumsum([0] + [len(f) for _, f in flat]).astype(np.int64),
-            factor_index=np.array([i for _, f in flat for i in f], dtype=np.int64),
-            energy_coefficient=np.array([c for c, _ in energy_rows], dtype=complex),
-            energy_start=np.cumsum([0] + [len(f) for _, f in energy_rows]).astype(np.int64),
-            energy_index=np.array([i for _, f in energy_rows for i in f], dtype=np.int64),
+            target=np.array([b for b, _, _ in rows], dtype=np.int32),
+            coefficient=np.array([c for _, c, _ in rows], dtype=float),
+            factors=np.array([f + [0] * (most - len(f)) for _, _, f in rows], dtype=np.int32).reshape(-1, most),
+            groups=np.concatenate([[0], np.cumsum(sizes)]).astype(np.int64),
+            energy_coefficient=np.array([c for c, _ in energy], dtype=float),
+            energy_factors=np.array([f + [0] * (wide - len(f)) for _, f in energy], dtype=np.int32).reshape(-1, wide),
             gr_constant=gr,
             gr_lambda=lam,
         )
 
     def arrays(self) -> tuple:
         """The arrays the compiled kernels take, in their order."""
-        return (
-            self.width, self.start, self.coefficient, self.factor_start, self.factor_index,
-            self.gr_constant, self.gr_lambda,
-        )  # fmt: skip
+        return (self.width, self.target, self.coefficient, self.factors, self.groups, self.gr_constant, self.gr_lambda)
 
 
 @jit
@@ -178,17 +201,19 @@ def _powers(w, P, width, out) -> None:
 
 
 @jit
-def _nonlinear(w, P, width, start, coefficient, factor_start, factor_index, gr_constant, gr_lambda, powers, out):
+def _nonlinear(w, P, width, target, coefficient, factors, groups, gr_constant, gr_lambda, powers, out):
     """``N(w)``: the flow of the terms of degree ≥ 4 and of relativity beyond its quadratic part."""
     _powers(w, P, width, powers)
     for b in range(2 * P):
-        acc = 0.0 + 0.0j
-        for d in range(start[b], start[b + 1]):
-            value = coefficient[d]
-            for f in range(factor_start[d], factor_start[d + 1]):
-                value = value * powers[factor_index[f]]
-            acc += value
-        out[b] = -2j * acc
+        out[b] = 0.0
+    for n in range(1, groups.size):
+        for d in range(groups[n - 1], groups[n]):
+            value = powers[factors[d, 0]]
+            for f in range(1, n):
+                value = value * powers[factors[d, f]]
+            out[target[d]] += coefficient[d] * value
+    for b in range(2 * P):
+        out[b] = -2j * out[b]
     for j in range(P):
         if gr_constant[j] != 0.0:
             s = (w[j].real * w[j].real + w[j].imag * w[j].imag) / (2.0 * gr_lambda[j])
@@ -207,8 +232,8 @@ def _matvec(M, v, out) -> None:
 
 @jit
 def integrate(
-    w0, steps, h, a_matrix, b_weights, forward, backward, width, start, coefficient, factor_start,
-    factor_index, gr_constant, gr_lambda, linear, keep, out_w, out_dw, extreme,
+    w0, steps, h, a_matrix, b_weights, forward, backward, width, target, coefficient, factors, groups,
+    gr_constant, gr_lambda, linear, keep, out_w, out_dw, extreme,
 ) -> None:  # fmt: skip
     """Take ``steps`` Lawson–DOP853 steps of size ``h`` from ``w0``; store ``keep`` components every step.
 
@@ -225,7 +250,7 @@ def integrate(
     forward, backward : numpy.ndarray of complex, shape (S, 2P, 2P)
         ``e^{L c_i h}`` and ``e^{−L c_i h}`` per stage; ``forward[S−1]`` must be ``e^{Lh}``
         (``c_S = 1``).
-    width, start, coefficient, factor_start, factor_index, gr_constant, gr_lambda
+    width, target, coefficient, factors, groups, gr_constant, gr_lambda
         :meth:`FlowTerms.arrays`.
     linear : numpy.ndarray of complex, shape (2P, 2P)
         ``L``.
@@ -252,7 +277,7 @@ def integrate(
             if size > extreme[b]:
                 extreme[b] = size
         # Stage 1 (c = 0): N(w), which with L w is also the derivative stored at this step.
-        _nonlinear(w, P, width, start, coefficient, factor_start, factor_index, gr_constant, gr_lambda, powers, tmp)
+        _nonlinear(w, P, width, target, coefficient, factors, groups, gr_constant, gr_lambda, powers, tmp)
         for b in range(n):
             K[0, b] = tmp[b]
         _matvec(linear, w, lin)
@@ -269,7 +294,7 @@ def integrate(
                         acc += a_matrix[i, j] * K[j, b]
                 v[b] = w[b] + h * acc
             _matvec(forward[i], v, x)
-            _nonlinear(x, P, width, start, coefficient, factor_start, factor_index, gr_constant, gr_lambda, powers, tmp)
+            _nonlinear(x, P, width, target, coefficient, factors, groups, gr_constant, gr_lambda, powers, tmp)
             _matvec(backward[i], tmp, x)
             for b in range(n):
                 K[i, b] = x[b]
@@ -346,13 +371,13 @@ def hermite(t: NDArray, t0: float, h: float, w: CArray, dw: CArray) -> CArray:
 
 
 @jit
-def _energy_kernel(w, P, width, start, coefficient, factor_index, gr_constant, gr_lambda, powers) -> complex:
+def _energy_kernel(w, P, width, coefficient, factors, gr_constant, gr_lambda, powers) -> complex:
     _powers(w, P, width, powers)
     total = 0.0 + 0.0j
     for d in range(coefficient.size):
-        value = coefficient[d]
-        for f in range(start[d], start[d + 1]):
-            value = value * powers[factor_index[f]]
+        value = coefficient[d] + 0.0j
+        for f in range(factors.shape[1]):
+            value = value * powers[factors[d, f]]
         total += value
     for j in range(P):
         if gr_constant[j] != 0.0:
@@ -381,7 +406,8 @@ def energy(terms: FlowTerms, w: CArray) -> float:
     """
     powers = np.empty(4 * terms.count * terms.width, dtype=complex)
     value = _energy_kernel(
-        np.ascontiguousarray(w, dtype=complex), terms.count, terms.width, terms.energy_start,
-        terms.energy_coefficient, terms.energy_index, terms.gr_constant, terms.gr_lambda, powers,
+        np.ascontiguousarray(w, dtype=complex), terms.count, terms.width, terms.energy_coefficient,
+        terms.energy_factors, terms.gr_constant, terms.gr_lambda, powers,
     )  # fmt: skip
     return float(np.real(value))
+
