@@ -42,16 +42,18 @@ def main() -> None:
     parser.add_argument("--degree2", type=int, default=6, help="degree of the second-order terms")
     parser.add_argument("--second-order", default="4-5", help="pairs with second-order terms, e.g. 4-5,5-6")
     parser.add_argument("--max-harmonic", type=int, default=16)
+    parser.add_argument("--high-degree", default="", help="pairs expanded to degree 6, e.g. 4-5")
     parser.add_argument("--window", type=float, default=5000.0, help="half-width of the mean-element fit, yr")
     parser.add_argument("--out", default=str(OUT))
     args = parser.parse_args()
     pairs = tuple(tuple(int(i) for i in p.split("-")) for p in args.second_order.split(",") if p)
+    high = tuple(tuple(int(i) for i in p.split("-")) for p in args.high_degree.split(",") if p)
     start = time.time()
     mean = mean_elements(window=args.window)
     print(f"mean elements: {time.time() - start:.0f} s", flush=True)
     exponents, coefficients = secular_hamiltonian(
         mean.sun, mean.gm, mean.a, mean.Lambda, mean.n, degree=args.degree,
-        second_order_pairs=pairs, degree2=args.degree2, max_harmonic=args.max_harmonic,
+        second_order_pairs=pairs, degree2=args.degree2, max_harmonic=args.max_harmonic, high_degree_pairs=high,
         progress=lambda msg: print(f"{msg}: {time.time() - start:.0f} s", flush=True),
     )  # fmt: skip
     terms = []
@@ -73,6 +75,7 @@ def main() -> None:
             "degree2": args.degree2,
             "second_order_pairs": [list(p) for p in pairs],
             "max_harmonic": args.max_harmonic,
+            "high_degree_pairs": [list(p) for p in high],
             "window_years": args.window,
         },
         "sun_gm": mean.sun,

@@ -9,7 +9,7 @@ from scipy.special import hyp2f1, poch
 from andoyer.planetary.orbits import OrbitHistory, VondrakEcliptic
 from andoyer.planetary.orbits.laplace import laplace_coefficient
 from andoyer.planetary.orbits.planets import PLANETS, planet_data
-from andoyer.planetary.orbits.secular import LA2004_G, LA2004_S, SecularOrbit
+from andoyer.planetary.orbits.laplace_lagrange import LA2004_G, LA2004_S, LaplaceLagrangeOrbit
 
 ARCSEC = np.pi / (180.0 * 3600.0)
 
@@ -46,12 +46,12 @@ def test_laplace_coefficient_rejects_bad_ratio(alpha):
 
 @pytest.mark.parametrize("label", sorted(BVW_G))
 def test_secular_g_matches_brouwer_van_woerkom(label):
-    assert SecularOrbit(frequencies="linear").g[label - 1] == pytest.approx(BVW_G[label], abs=BVW_TOLERANCE)
+    assert LaplaceLagrangeOrbit(frequencies="linear").g[label - 1] == pytest.approx(BVW_G[label], abs=BVW_TOLERANCE)
 
 
 @pytest.mark.parametrize("label", sorted(BVW_S))
 def test_secular_s_matches_brouwer_van_woerkom(label):
-    assert SecularOrbit(frequencies="linear").s[label - 1] == pytest.approx(BVW_S[label], abs=BVW_TOLERANCE)
+    assert LaplaceLagrangeOrbit(frequencies="linear").s[label - 1] == pytest.approx(BVW_S[label], abs=BVW_TOLERANCE)
 
 
 # Distances of the linear theory from La2004 (Laskar et al. 2004, Table 3), measured and stated in
@@ -63,20 +63,20 @@ G_TOLERANCE = [0.5, 0.5, 0.5, 0.5, 0.6, 6.0, 0.5, 0.5]
 
 @pytest.mark.parametrize("label", range(1, 9))
 def test_secular_frequencies_near_la2004(label):
-    orbit = SecularOrbit(frequencies="linear")
+    orbit = LaplaceLagrangeOrbit(frequencies="linear")
     assert orbit.g[label - 1] == pytest.approx(LA2004_G[label - 1], abs=G_TOLERANCE[label - 1])
     assert orbit.s[label - 1] == pytest.approx(LA2004_S[label - 1], abs=0.5)
 
 
 def test_secular_la2004_frequencies_are_la2004():
-    orbit = SecularOrbit("mars", frequencies="la2004")
+    orbit = LaplaceLagrangeOrbit("mars", frequencies="la2004")
     np.testing.assert_allclose(orbit.g, LA2004_G, rtol=1e-14)
     np.testing.assert_allclose(orbit.s, LA2004_S, rtol=1e-14, atol=1e-14)
 
 
 def test_secular_s5_is_zero():
     # Total angular momentum: the invariable plane does not move (s5 = 0).
-    assert abs(SecularOrbit(frequencies="linear").s[4]) < 1e-10
+    assert abs(LaplaceLagrangeOrbit(frequencies="linear").s[4]) < 1e-10
 
 
 def circulation_weights():
@@ -90,7 +90,7 @@ def test_secular_invariable_plane_is_fixed(frequencies, rng):
     # Σ Λ_j sin i_j (sin Ω_j, −cos Ω_j) is the planets' total angular momentum in the J2000 ecliptic
     # (to first order): constant in the theory, since s5 = 0 with left eigenvector Λ.
     t = rng.uniform(-5e6, 5e6, 7)
-    normals = np.stack([SecularOrbit(body, frequencies).normal(t) for body in PLANETS])
+    normals = np.stack([LaplaceLagrangeOrbit(body, frequencies).normal(t) for body in PLANETS])
     total = np.einsum("j,jtk->tk", circulation_weights(), normals[..., :2])
     np.testing.assert_allclose(total, np.broadcast_to(total[0], total.shape), atol=1e-11 * abs(total).max())
 
@@ -98,7 +98,7 @@ def test_secular_invariable_plane_is_fixed(frequencies, rng):
 def test_secular_angular_momentum_deficit_is_conserved(rng):
     # Σ Λ_j e_j² and Σ Λ_j sin² i_j are constants of the linear theory (A and B are Λ-symmetric).
     t = np.concatenate([[0.0], rng.uniform(-1e7, 1e7, 6)])
-    orbits = [SecularOrbit(body, "linear") for body in PLANETS]
+    orbits = [LaplaceLagrangeOrbit(body, "linear") for body in PLANETS]
     e2 = np.stack([np.sum(o.eccentricity_vector(t) ** 2, axis=-1) for o in orbits])
     sin2 = np.stack([np.sum(o.normal(t)[..., :2] ** 2, axis=-1) for o in orbits])
     weights = circulation_weights()
@@ -113,7 +113,7 @@ def test_secular_reproduces_the_j2000_elements(body):
     data = planet_data()
     j = PLANETS.index(body)
     i, node, varpi = data.inclination[j], data.node[j], data.varpi[j]
-    orbit = SecularOrbit(body)
+    orbit = LaplaceLagrangeOrbit(body)
     n = orbit.normal(0.0)
     expected = [np.sin(i) * np.sin(node), -np.sin(i) * np.cos(node), np.cos(i)]
     np.testing.assert_allclose(n, expected, atol=1e-13)
@@ -135,7 +135,7 @@ def test_secular_reproduces_the_j2000_elements(body):
     ],
 )
 def test_secular_rates_at_j2000_near_standish(body, e_rate, varpi_rate, e_tol):
-    ecc = SecularOrbit(body).eccentricity_vector([-50.0, 50.0])
+    ecc = LaplaceLagrangeOrbit(body).eccentricity_vector([-50.0, 50.0])
     e = np.linalg.norm(ecc, axis=-1)
     varpi = np.arctan2(ecc[:, 1], ecc[:, 0])
     assert e[1] - e[0] == pytest.approx(e_rate, rel=e_tol)
@@ -146,12 +146,12 @@ def test_secular_rates_at_j2000_near_standish(body, e_rate, varpi_rate, e_tol):
 def test_secular_earth_normal_near_vondrak(span, tolerance_deg):
     # Measured: 0.038° over ±20 kyr, 0.61° over ±200 kyr (docs/orbits.md).
     t = np.linspace(-span, span, 801)
-    assert angle_deg(SecularOrbit("earth").normal(t), VondrakEcliptic().normal(t)).max() < tolerance_deg
+    assert angle_deg(LaplaceLagrangeOrbit("earth").normal(t), VondrakEcliptic().normal(t)).max() < tolerance_deg
 
 
 @pytest.mark.parametrize("shape", [(), (4,), (2, 3)])
 def test_secular_shapes(shape, rng):
-    orbit = SecularOrbit("mars")
+    orbit = LaplaceLagrangeOrbit("mars")
     assert isinstance(orbit, OrbitHistory)
     t = rng.uniform(-1e6, 1e6, shape)
     n, e = orbit.normal(t), orbit.eccentricity_vector(t)
@@ -163,4 +163,4 @@ def test_secular_shapes(shape, rng):
                                                 ({"frequencies": "bvw"}, "expected frequencies")])
 def test_secular_bad_arguments(kwargs, match):
     with pytest.raises(ValueError, match=match):
-        SecularOrbit(**kwargs)
+        LaplaceLagrangeOrbit(**kwargs)

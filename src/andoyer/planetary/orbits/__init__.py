@@ -30,7 +30,9 @@ True
 """
 
 from andoyer.planetary.orbits.factory import SOURCES, orbit_history
+from andoyer.planetary.orbits.frequencies import fundamental_frequencies, spectral_lines
 from andoyer.planetary.orbits.laplace_lagrange import LaplaceLagrangeOrbit
+from andoyer.planetary.orbits.lyapunov import lyapunov_exponent
 from andoyer.planetary.orbits.nbody import NBodyOrbit
 from andoyer.planetary.orbits.planets import PLANETS
 from andoyer.planetary.orbits.protocol import OrbitHistory, check_times
@@ -48,8 +50,11 @@ __all__ = [
     "TableOrbit",
     "VondrakEcliptic",
     "check_times",
+    "fundamental_frequencies",
+    "lyapunov_exponent",
     "orbit_history",
     "read_alkhqp",
     "read_orbit_csv",
+    "spectral_lines",
     "write_orbit_csv",
 ]

@@ -441,6 +441,8 @@ def secular_hamiltonian(
     second_order_pairs: tuple[tuple[int, int], ...] = ((4, 5),),
     degree2: int = 6,
     max_harmonic: int = 16,
+    high_degree_pairs: tuple[tuple[int, int], ...] = (),
+    high_degree: int = 6,
     progress=None,
 ) -> tuple[NDArray[np.int64], CArray]:
     """The polynomial secular Hamiltonian of the planets in Poincaré variables.
@@ -459,6 +461,9 @@ def secular_hamiltonian(
         Highest degree of the second-order terms.
     max_harmonic : int
         Harmonics kept for the second order.
+    high_degree_pairs : tuple of (int, int)
+        Pairs expanded to ``high_degree`` instead of ``degree``.
+    high_degree : int
     progress : callable, optional
         Called with a message per pair.
 
@@ -473,10 +478,12 @@ def secular_hamiltonian(
     for j in range(count):
         for k in range(j + 1, count):
             with_second = (j, k) in second_order_pairs
+            D = high_degree if (j, k) in high_degree_pairs else degree
             expansion = pair_expansion(
-                sun, (gm[j], gm[k]), (a[j], a[k]), degree, max_harmonic=max_harmonic if with_second else 0
-            )
-            parts = [(expansion.mean, _space(8, degree))]
+                sun, (gm[j], gm[k]), (a[j], a[k]), D, max_harmonic=max_harmonic if with_second else 0,
+                chunk=1 if D > 4 else 8,
+            )  # fmt: skip
+            parts = [(expansion.mean, _space(8, D))]
             if with_second:
                 k2 = second_order(expansion, (Lambda[j], Lambda[k]), (a[j], a[k]), (n[j], n[k]), degree2)
                 parts.append((k2, _space(8, degree2)))

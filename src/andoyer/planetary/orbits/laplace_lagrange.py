@@ -85,12 +85,22 @@ _S_ORDER = np.argsort(LA2004_S)
 Array = NDArray[np.float64]
 
 
-def secular_matrices() -> tuple[Array, Array]:
-    """The Laplace–Lagrange matrices ``A`` and ``B`` (rad/yr) of the eight planets.
+def secular_matrices(
+    a: ArrayLike | None = None, gm: ArrayLike | None = None, sun: float | None = None
+) -> tuple[Array, Array]:
+    """The Laplace–Lagrange matrices ``A`` and ``B`` (rad/yr) of the planets.
+
+    Parameters
+    ----------
+    a, gm : array_like, shape (P,), optional
+        Semi-major axes (au) and GM (au³/yr²), Sun outwards; default: the shipped
+        J2000 data (Standish's ``a``, DE440 masses).
+    sun : float, optional
+        The Sun's GM; default: the shipped one.
 
     Returns
     -------
-    A, B : numpy.ndarray, shape (8, 8)
+    A, B : numpy.ndarray, shape (P, P)
 
     Examples
     --------
@@ -99,7 +109,9 @@ def secular_matrices() -> tuple[Array, Array]:
     ((8, 8), True)
     """
     data = planet_data()
-    a, m, sun = data.a, data.gm, data.sun_gm
+    a = data.a if a is None else np.asarray(a, dtype=float)
+    m = data.gm if gm is None else np.asarray(gm, dtype=float)
+    sun = data.sun_gm if sun is None else float(sun)
     n = np.sqrt((sun + m) / a**3)
     N = len(a)
     A = np.zeros((N, N))

@@ -56,6 +56,8 @@ MAX_SPAN = 1.0e9
 E_MAX, I_MAX = 0.35, np.radians(20.0)
 #: Steps per extension of a run (the unit of progress and of interruption).
 CHUNK_STEPS = 1 << 15
+#: The default step, as a fraction of the shortest period of the linear flow (5.0 kyr).
+STEP_FRACTION = 1.0 / 10.0
 #: Derivative monomials smaller than this fraction of their component's linear rate are left out
 #: of the flow (at 1.5 times the largest amplitude the linear theory allows each variable).
 PRUNE = 1e-6
@@ -69,8 +71,10 @@ class SecularModel:
     ----------
     terms : FlowTerms
         :class:`~andoyer.planetary.orbits.secular_flow.FlowTerms` (relativity included).
-    Lambda, a, n : numpy.ndarray, shape (8,)
-        ``Λ_j``, mean semi-major axes (au), mean motions (rad/yr).
+    sun : float
+        The Sun's GM (au³/yr²).
+    gm, Lambda, a, n : numpy.ndarray, shape (8,)
+        The planets' GM, ``Λ_j``, mean semi-major axes (au), mean motions (rad/yr).
     w0 : numpy.ndarray of complex, shape (16,)
         ``(x_1…x_8, y_1…y_8)`` at J2000, invariable frame.
     rotation : numpy.ndarray, shape (3, 3)
@@ -80,6 +84,8 @@ class SecularModel:
     """
 
     terms: object
+    sun: float
+    gm: Array
     Lambda: Array
     a: Array
     n: Array
@@ -89,8 +95,13 @@ class SecularModel:
 
 
 @cache
-def secular_model() -> SecularModel:
-    """Read ``data/secular_model.json`` once and arrange it for the flow.
+def secular_model(path: str | None = None) -> SecularModel:
+    """Read ``data/secular_model.json`` (or a variant made by the script) once and arrange it for the flow.
+
+    Parameters
+    ----------
+    path : str, optional
+        A model file written by ``scripts/make_secular_model.py --out``; default: the shipped one.
 
     Returns
     -------
@@ -106,7 +117,11 @@ def secular_model() -> SecularModel:
     from andoyer.planetary.orbits.nbody import C_AU_PER_YEAR
     from andoyer.planetary.orbits.secular_flow import FlowTerms
 
-    text = resources.files("andoyer.planetary.orbits").joinpath("data/secular_model.json").read_text("utf-8")
+    if path is None:
+        text = resources.files("andoyer.planetary.orbits").joinpath("data/secular_model.json").read_text("utf-8")
+    else:
+        with open(path, encoding="utf-8") as f:
+            text = f.read()
     raw = json.loads(text)
     if raw["planets_j2000_sha256"] != planet_data().digest:
         msg = (
@@ -129,7 +144,10 @@ def secular_model() -> SecularModel:
     _, vectors = np.linalg.eig(full.linear)
     amplitude = 1.5 * np.abs(vectors) @ np.abs(np.linalg.solve(vectors, w0))
     terms = FlowTerms.from_polynomial(exponents, coefficients, count, gr, Lambda, amplitude, PRUNE)
-    return SecularModel(terms, Lambda, a, np.array(raw["n"]), w0, np.array(raw["rotation"]), raw["settings"])
+    return SecularModel(
+        terms, float(raw["sun_gm"]), np.array(raw["gm"]), Lambda, a, np.array(raw["n"]), w0,
+        np.array(raw["rotation"]), raw["settings"],
+    )  # fmt: skip
 
 
 def vectors_from_poincare(x: CArray, y: CArray, Lambda: float | Array, rotation: Array) -> tuple[Array, Array]:
@@ -244,7 +262,8 @@ class SecularOrbit:
         One of :data:`~andoyer.planetary.orbits.planets.PLANETS` (``"earth"`` = Earth–Moon
         barycentre).
     step : float, optional
-        Integration step, years (default: 1/16 of the shortest linear period, 3.1 kyr).
+        Integration step, years (default: :data:`STEP_FRACTION` of the shortest linear period,
+        5.0 kyr).
     max_span : float
         The largest ``|t|`` that may be asked for (at most :data:`MAX_SPAN`).
     progress : bool or None
@@ -274,7 +293,7 @@ class SecularOrbit:
             raise ValueError(msg)
         self.model = secular_model()
         if step is None:
-            step = default_step(self.model.terms.linear, 1.0 / 16.0)
+            step = default_step(self.model.terms.linear, STEP_FRACTION)
         if not (np.isfinite(step) and 1.0 <= step <= 20000.0):
             msg = f"expected an integration step between 1 and 20000 years, got {step!r}"
             raise ValueError(msg)

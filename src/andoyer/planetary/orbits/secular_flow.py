@@ -110,9 +110,9 @@ class FlowTerms:
         amplitude : numpy.ndarray, shape (2P,), optional
             Bounds on ``|w_b|`` for the pruning.
         threshold : float
-            Drop the derivative monomials whose size at ``amplitude`` is below ``threshold``
-            times ``Σ_a |L_ba| amplitude_a`` (the linear rate of their component); the
-            energy keeps every term.
+            Leave out the terms of degree ≥ 4 whose every derivative monomial, at ``amplitude``,
+            is below ``threshold`` times ``Σ_a |L_ba| amplitude_a`` (the linear rate of its
+            component); :func:`energy` is that of the terms kept.
         """
         exponents = np.asarray(exponents, dtype=np.int64)
         coefficients = np.asarray(coefficients)
@@ -129,37 +129,53 @@ class FlowTerms:
         plain = np.r_[0:P, 2 * P : 3 * P]  # the columns of x, y among x, x̄, y, ȳ
         bars = np.r_[P : 2 * P, 3 * P : 4 * P]
         width = int(exponents.max()) + 1 if exponents.size else 2
-        rows: list[tuple[int, float, list[int]]] = []
         for m, c in zip(exponents, coefficients, strict=True):
             if m.sum() == 2:
                 # c w_a w̄_b: ∂H/∂w̄_b gets c w_a, ẇ_b = −2i c w_a.
                 (b,) = np.nonzero(m[bars])[0]
                 (a,) = np.nonzero(m[plain])[0]
                 linear[b, a] += -2j * c
-                continue
+        # Relativity's quadratic part −K(1 + |x|²/(2Λ) + …) is linear in the flow: ẋ = i (K/Λ) x.
+        linear[np.arange(P), np.arange(P)] += 1j * gr / lam
+        derivatives: list[list[tuple[int, float, list[int]]]] = []
+        for m, c in zip(exponents, coefficients, strict=True):
+            rows_m = []
             for b, column in enumerate(bars):
-                if m[column] == 0:
+                if m.sum() == 2 or m[column] == 0:
                     continue
                 reduced = m.copy()
                 reduced[column] -= 1
                 nz = np.nonzero(reduced)[0]
-                rows.append((b, c * m[column], (nz * width + reduced[nz]).tolist()))
-        # Relativity's quadratic part −K(1 + |x|²/(2Λ) + …) is linear in the flow: ẋ = i (K/Λ) x.
-        linear[np.arange(P), np.arange(P)] += 1j * gr / lam
+                rows_m.append((b, c * m[column], (nz * width + reduced[nz]).tolist()))
+            derivatives.append(rows_m)
+        kept = np.ones(len(exponents), dtype=bool)
         if amplitude is not None and threshold > 0:
+            # A term is left out when every component it drives gets less than ``threshold`` of
+            # that component's linear rate (a whole term and its conjugate alike, so that the flow
+            # stays the Hamiltonian flow of the terms kept).
             amp = np.asarray(amplitude, dtype=float)
             value = np.concatenate([amp[:P], amp[:P], amp[P:], amp[P:]])  # x, x̄, y, ȳ
             rate = np.abs(linear) @ amp
-
-            def size(row: tuple[int, float, list[int]]) -> float:
-                b, c, index = row
-                return 2.0 * abs(c) * float(np.prod([value[i // width] ** (i % width) for i in index])) / rate[b]
-
-            rows = [row for row in rows if size(row) >= threshold]
+            component = np.concatenate([np.arange(P), np.arange(P), P + np.arange(P), P + np.arange(P)])
+            for t, m in enumerate(exponents):
+                if m.sum() == 2:
+                    continue
+                # Over every variable of the term, barred or not: a term and its conjugate agree.
+                sizes = [
+                    2.0 * abs(coefficients[t]) * m[v] * np.prod(value ** (m - np.eye(4 * P, dtype=np.int64)[v]))
+                    / rate[component[v]]
+                    for v in np.nonzero(m)[0]
+                ]
+                kept[t] = max(sizes) >= threshold
+        rows = [row for t, rows_m in enumerate(derivatives) if kept[t] for row in rows_m]
         rows.sort(key=lambda row: (len(row[2]), row[0]))
         most = max([len(f) for _, _, f in rows], default=1)
         sizes = np.bincount([len(f) for _, _, f in rows], minlength=most + 1)[1:]
-        energy = [(c, (np.nonzero(m)[0] * width + m[np.nonzero(m)[0]]).tolist()) for m, c in zip(exponents, coefficients, strict=True)]
+        energy = [
+            (c, (np.nonzero(m)[0] * width + m[np.nonzero(m)[0]]).tolist())
+            for m, c, k in zip(exponents, coefficients, kept, strict=True)
+            if k
+        ]
         wide = max([len(f) for _, f in energy], default=1)
         return cls(
             count=P,
@@ -221,13 +237,15 @@ def _nonlinear(w, P, width, target, coefficient, factors, groups, gr_constant, g
 
 
 @jit
-def _matvec(M, v, out) -> None:
+def _matvec(M, v, out, block) -> None:
+    """``out = M v`` for a block-diagonal ``M`` (blocks of ``block`` rows and columns)."""
     n = v.size
-    for i in range(n):
-        acc = 0.0 + 0.0j
-        for k in range(n):
-            acc += M[i, k] * v[k]
-        out[i] = acc
+    for start in range(0, n, block):
+        for i in range(start, start + block):
+            acc = 0.0 + 0.0j
+            for k in range(start, start + block):
+                acc += M[i, k] * v[k]
+            out[i] = acc
 
 
 @jit
@@ -264,6 +282,13 @@ def integrate(
     n = w0.size
     P = n // 2
     S = b_weights.size
+    # The secular linear flow never couples x and y (a term x ȳ is odd in the inclinations):
+    # the matrices are two blocks, unless a caller's are not.
+    block = P
+    for i in range(P):
+        for k in range(P):
+            if linear[i, P + k] != 0.0 or linear[P + i, k] != 0.0:
+                block = n
     powers = np.empty(2 * n * width, dtype=np.complex128)
     K = np.empty((S, n), dtype=np.complex128)
     v = np.empty(n, dtype=np.complex128)
@@ -280,7 +305,7 @@ def integrate(
         _nonlinear(w, P, width, target, coefficient, factors, groups, gr_constant, gr_lambda, powers, tmp)
         for b in range(n):
             K[0, b] = tmp[b]
-        _matvec(linear, w, lin)
+        _matvec(linear, w, lin, block)
         for c in range(keep.size):
             out_w[step, c] = w[keep[c]]
             out_dw[step, c] = lin[keep[c]] + tmp[keep[c]]
@@ -293,9 +318,9 @@ def integrate(
                     if a_matrix[i, j] != 0.0:
                         acc += a_matrix[i, j] * K[j, b]
                 v[b] = w[b] + h * acc
-            _matvec(forward[i], v, x)
+            _matvec(forward[i], v, x, block)
             _nonlinear(x, P, width, target, coefficient, factors, groups, gr_constant, gr_lambda, powers, tmp)
-            _matvec(backward[i], tmp, x)
+            _matvec(backward[i], tmp, x, block)
             for b in range(n):
                 K[i, b] = x[b]
         for b in range(n):
@@ -303,7 +328,7 @@ def integrate(
             for i in range(S):
                 acc += b_weights[i] * K[i, b]
             v[b] = w[b] + h * acc
-        _matvec(forward[S - 1], v, w)
+        _matvec(forward[S - 1], v, w, block)
     for b in range(n):
         w0[b] = w[b]
 

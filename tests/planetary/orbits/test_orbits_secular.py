@@ -1,0 +1,249 @@
+"""The long secular orbit model: its linear part, its flow, its invariants, and the N-body solution.
+
+Independent checks: the quadratic part against the Laplace–Lagrange matrices of
+:mod:`andoyer.planetary.orbits.laplace_lagrange` (Murray & Dermott's formulas, another code);
+the integrator's order on a synthetic Hamiltonian (errors of three step sizes against a fine
+run); the conservation of the secular energy and of the angular momentum deficit (exact
+invariants of the averaged system); the orbit against the N-body integration (REBOUND) over
+±20 kyr; the fundamental frequencies against the N-body values of
+``scripts/check_outer_frequencies.py`` and La2004's confirmed ones (slow).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scipy.linalg import expm
+
+from andoyer.planetary.orbits import NBodyOrbit, OrbitHistory, SecularOrbit, orbit_history
+from andoyer.planetary.orbits.laplace_lagrange import LA2004_G, LA2004_S, secular_matrices
+from andoyer.planetary.orbits.planets import PLANETS
+from andoyer.planetary.orbits.secular import MAX_SPAN, secular_model, vectors_from_poincare
+from andoyer.planetary.orbits.secular_flow import (
+    FlowTerms,
+    default_step,
+    energy,
+    hermite,
+    integrate,
+    lawson_matrices,
+)
+
+ARCSEC = np.pi / (180.0 * 3600.0)
+
+
+@pytest.fixture
+def cache_dir(tmp_path, monkeypatch):
+    monkeypatch.setenv("ANDOYER_CACHE_DIR", str(tmp_path))
+    return tmp_path
+
+
+def run(terms: FlowTerms, w0: np.ndarray, h: float, steps: int, keep=None):
+    """The state after ``steps`` steps of ``h``, and the kept samples."""
+    keep = np.arange(w0.size) if keep is None else np.asarray(keep)
+    a, b, forward, backward = lawson_matrices(terms.linear, h)
+    w = np.array(w0, dtype=complex)
+    out_w = np.empty((steps + 1, keep.size), dtype=complex)
+    out_dw = np.empty_like(out_w)
+    extreme = np.zeros(w0.size)
+    integrate(w, steps, h, a, b, forward, backward, *terms.arrays(), terms.linear, keep, out_w, out_dw, extreme)
+    return w, out_w, out_dw
+
+
+def test_secular_is_an_orbit_history():
+    orbit = orbit_history("secular", body="mars")
+    assert isinstance(orbit, SecularOrbit) and isinstance(orbit, OrbitHistory)
+    assert orbit.span == (-MAX_SPAN, MAX_SPAN) and orbit.has_eccentricity
+
+
+def test_secular_linear_part_reproduces_laplace_lagrange():
+    # The quadratic part of the model is the Laplace–Lagrange theory in Poincaré variables:
+    # for a pair without second-order terms, ż_j = i A_jk z_k with z = x/√Λ and
+    # A_jk = A_LL,jk (1 + m_j/m_0) (Poincaré's β_j = m_0 m_j/(m_0 + m_j) against M&D's m_j),
+    # and the same for the inclinations with B. The matrices are computed by
+    # laplace_lagrange.secular_matrices with the model's own semi-major axes and masses.
+    model = secular_model()
+    A, B = secular_matrices(model.a, model.gm, model.sun)
+    L = model.terms.linear
+    P = len(PLANETS)
+    scale = np.sqrt(np.outer(1.0 / model.Lambda, model.Lambda))  # √(Λ_k/Λ_j)
+    second = {tuple(p) for p in model.settings["second_order_pairs"]}
+    checked = 0
+    for j in range(P):
+        for k in range(P):
+            if j == k or (min(j, k), max(j, k)) in second:
+                continue
+            factor = 1.0 + model.gm[j] / model.sun
+            assert (L[j, k] * scale[j, k] / 1j).real == pytest.approx(A[j, k] * factor, rel=1e-11)
+            assert (L[P + j, P + k] * scale[j, k] / 1j).real == pytest.approx(B[j, k] * factor, rel=1e-11)
+            checked += 1
+    assert checked >= 40
+
+
+def synthetic_terms():
+    """Two 'planets': a linear part and a few real quartic and sextic terms (not physical)."""
+    P = 2
+    rows, coefficients = [], []
+
+    def add(pairs, c):
+        m = np.zeros(4 * P, dtype=np.int64)
+        for var, power in pairs:
+            m[var] += power
+        rows.append(m)
+        coefficients.append(c)
+
+    x0, x1, xb0, xb1, y0, y1, yb0, yb1 = range(8)
+    add([(x0, 1), (xb0, 1)], -0.5)
+    add([(x1, 1), (xb1, 1)], -0.2)
+    add([(x0, 1), (xb1, 1)], 0.05)
+    add([(x1, 1), (xb0, 1)], 0.05)
+    add([(y0, 1), (yb0, 1)], 0.3)
+    add([(y1, 1), (yb1, 1)], 0.1)
+    add([(x0, 2), (xb0, 2)], 0.4)
+    add([(x0, 1), (xb0, 1), (y1, 1), (yb1, 1)], -0.7)
+    add([(x0, 2), (xb1, 1), (xb0, 1)], 0.3)
+    add([(x1, 1), (x0, 1), (xb0, 2)], 0.3)
+    add([(x0, 1), (xb1, 1), (y0, 1), (yb1, 1)], 0.2)
+    add([(x1, 1), (xb0, 1), (y1, 1), (yb0, 1)], 0.2)
+    add([(x0, 3), (xb0, 3)], -0.1)
+    return FlowTerms.from_polynomial(np.array(rows), np.array(coefficients), P), np.array(
+        [0.3 + 0.1j, -0.2j, 0.25, 0.1 - 0.1j]
+    )
+
+
+def test_secular_flow_is_of_order_eight():
+    # Lawson–DOP853: halving the step divides the error at a fixed time by 2⁸.
+    terms, w0 = synthetic_terms()
+    T = 8.0
+    reference, _, _ = run(terms, w0, T / 512, 512)
+    errors = [np.abs(run(terms, w0, T / n, n)[0] - reference).max() for n in (8, 16, 32)]
+    ratios = np.log2(np.array(errors[:-1]) / np.array(errors[1:]))
+    assert np.all((ratios > 7.4) & (ratios < 9.0)), ratios
+
+
+def test_secular_flow_linear_part_is_exact():
+    # With only quadratic terms the Lawson step is the matrix exponential, whatever the step.
+    terms, w0 = synthetic_terms()
+    linear = FlowTerms.from_polynomial(np.zeros((0, 8), dtype=np.int64), np.zeros(0), 2)
+    linear = FlowTerms(**{**linear.__dict__, "linear": terms.linear})
+    w, _, _ = run(linear, w0, 3.0, 4)
+    np.testing.assert_allclose(w, expm(12.0 * terms.linear) @ w0, atol=1e-14)
+
+
+def test_secular_flow_conserves_energy_and_amd():
+    # The secular Hamiltonian and the angular momentum deficit Σ(|x|² + |y|²)/2 are invariants of
+    # the averaged flow (d'Alembert: every term is invariant under a common rotation). Over 1 Myr
+    # they drift by the integrator's truncation only: below 2e-6 (energy) and 3e-7 (AMD) at the
+    # default step (measured 7.4e-7 and 1.0e-7), and halving the step divides both by more than
+    # 2^7 (order 8: measured 365 and 370).
+    model = secular_model()
+    terms = model.terms
+    drift = []
+    for fraction in (1.0 / 10.0, 1.0 / 20.0):
+        h = default_step(terms.linear, fraction)
+        w, _, _ = run(terms, model.w0, h, int(1e6 / h), keep=[0])
+        e0, e1 = energy(terms, model.w0), energy(terms, w)
+        amd0, amd1 = np.sum(np.abs(model.w0) ** 2) / 2, np.sum(np.abs(w) ** 2) / 2
+        drift.append((abs(e1 - e0) / abs(e0), abs(amd1 - amd0) / amd0))
+    (e_coarse, amd_coarse), (e_fine, amd_fine) = drift
+    assert e_coarse < 2e-6 and amd_coarse < 3e-7
+    assert e_coarse / e_fine > 128 and amd_coarse / amd_fine > 128
+
+
+def test_hermite_interpolates_cubics_exactly():
+    t = np.array([0.0, 2.0, 4.0])
+    f = (t**3 - t)[:, None] + 0j
+    df = (3 * t**2 - 1)[:, None] + 0j
+    s = np.array([0.3, 1.7, 3.9])
+    np.testing.assert_allclose(hermite(s, 0.0, 2.0, f, df)[:, 0].real, s**3 - s, rtol=1e-14)
+
+
+def test_vectors_from_poincare_invert_the_elements():
+    # x = √(2Λ(1 − √(1−e²))) e^{iϖ}, y = √(2Λ√(1−e²)(1 − cos i)) e^{iΩ} (the definitions).
+    e, i, node, varpi, Lambda = 0.2, 0.3, 1.1, 2.5, 3.0
+    root = np.sqrt(1 - e * e)
+    x = np.sqrt(2 * Lambda * (1 - root)) * np.exp(1j * varpi)
+    y = np.sqrt(2 * Lambda * root * (1 - np.cos(i))) * np.exp(1j * node)
+    normal, ecc = vectors_from_poincare(np.array(x), np.array(y), Lambda, np.eye(3))
+    np.testing.assert_allclose(normal, [np.sin(i) * np.sin(node), -np.sin(i) * np.cos(node), np.cos(i)], atol=1e-15)
+    assert np.linalg.norm(ecc) == pytest.approx(e, rel=1e-14)
+    assert ecc @ normal == pytest.approx(0.0, abs=1e-15)
+
+
+def test_secular_orbit_j2000_is_the_invariable_frame_turned_back():
+    # At J2000 the model's orbits are the mean orbits of the N-body solution: the Earth's normal is
+    # within 0.001° of the ecliptic pole and its eccentricity 0.0167 (the ecliptic is the Earth's
+    # osculating plane; the mean elements differ by the short-period terms).
+    earth = SecularOrbit("earth")
+    n = earth.normal(0.0)
+    assert np.degrees(np.arccos(n[2])) < 1e-3
+    assert np.linalg.norm(earth.eccentricity_vector(0.0)) == pytest.approx(0.0167, abs=2e-4)
+
+
+@pytest.mark.parametrize(("body", "normal_deg", "ecc"), [("earth", 0.003, 2e-4), ("mars", 0.005, 5e-4)])
+def test_secular_orbit_follows_nbody_over_20_kyr(cache_dir, body, normal_deg, ecc):
+    # Against the REBOUND integration of the Sun and the eight planets (osculating, so its
+    # short-period terms, 0.2-0.3″ and 1e-5 in e, stay in the difference). Measured 2026-11-28:
+    # Earth 0.0008° and 8e-5, Mars 0.0016° and 2e-4.
+    t = np.linspace(-2e4, 2e4, 401)
+    secular, nbody = SecularOrbit(body), NBodyOrbit(body, progress=False)
+    angle = np.arccos(np.clip(np.sum(secular.normal(t) * nbody.normal(t), axis=-1), -1, 1))
+    assert np.degrees(angle).max() < normal_deg
+    assert np.abs(secular.eccentricity_vector(t) - nbody.eccentricity_vector(t)).max() < ecc
+
+
+def test_secular_orbit_step_convergence():
+    # Halving the step moves the Earth's and Mars' orbits over 2 Myr by far less than the model's
+    # distance from the N-body solution (0.1° over 1 Myr).
+    t = np.linspace(-2e6, 2e6, 401)
+    for body in ("earth", "mars"):
+        coarse, fine = SecularOrbit(body), SecularOrbit(body, step=SecularOrbit(body).step / 2)
+        angle = np.arccos(np.clip(np.sum(coarse.normal(t) * fine.normal(t), axis=-1), -1, 1))
+        assert angle.max() < 1.0 * ARCSEC
+        assert np.abs(coarse.eccentricity_vector(t) - fine.eccentricity_vector(t)).max() < 1e-6
+
+
+def test_secular_orbit_refuses_times_beyond_its_span():
+    with pytest.raises(ValueError, match="expected times within the secular orbit's span"):
+        SecularOrbit("mars").normal(-1.5e9)
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "match"),
+    [
+        ({"body": "pluto"}, "expected a planet among"),
+        ({"step": 0.0}, "expected an integration step"),
+        ({"step": np.nan}, "expected an integration step"),
+        ({"max_span": 2e9}, "expected 0 < max_span"),
+    ],
+)
+def test_secular_orbit_rejects_bad_options(kwargs, match):
+    with pytest.raises(ValueError, match=match):
+        SecularOrbit(**kwargs)
+
+
+@pytest.mark.slow
+def test_secular_frequencies_match_nbody_and_la2004():
+    # FMFT over 19.7 Myr (65536 samples every 300 yr), as scripts/secular_frequencies.py does.
+    # References: the N-body frequencies of the giant planets from DE421's states
+    # (scripts/check_outer_frequencies.py, 8.2 Myr: g5 4.2454, g6 28.2583, g7 3.0880, g8 0.6727,
+    # s6 −26.3384, s7 −2.9941, s8 −0.6924) and La2004's confirmed inner ones (g2, g3, g4, s3, s4).
+    from andoyer.planetary.orbits.frequencies import fundamental_frequencies
+
+    model = secular_model()
+    t = -300.0 * np.arange(65536)[::-1]
+    z = np.empty((8, t.size), complex)
+    zeta = np.empty_like(z)
+    for j, body in enumerate(PLANETS):
+        x, y = SecularOrbit(body).poincare(t)
+        z[j], zeta[j] = x / np.sqrt(model.Lambda[j]), y / np.sqrt(model.Lambda[j])
+    g, s = fundamental_frequencies(z, zeta, 300.0, LA2004_G, LA2004_S)
+    nbody_g = {5: 4.2454, 6: 28.2583, 7: 3.0880, 8: 0.6727}
+    nbody_s = {6: -26.3384, 7: -2.9941, 8: -0.6924}
+    for label, value in nbody_g.items():
+        assert g[label - 1] == pytest.approx(value, abs=0.1)
+    for label, value in nbody_s.items():
+        assert s[label - 1] == pytest.approx(value, abs=0.1)
+    for label in (2, 3, 4):
+        assert g[label - 1] == pytest.approx(LA2004_G[label - 1], abs=0.1)
+    for label in (3, 4):
+        assert s[label - 1] == pytest.approx(LA2004_S[label - 1], abs=0.1)
