@@ -53,7 +53,8 @@ def main() -> None:
     print(f"mean elements: {time.time() - start:.0f} s", flush=True)
     exponents, coefficients = secular_hamiltonian(
         mean.sun, mean.gm, mean.a, mean.Lambda, mean.n, degree=args.degree,
-        second_order_pairs=pairs, degree2=args.degree2, max_harmonic=args.max_harmonic, high_degree_pairs=high,
+        second_order_pairs=pairs, degree2=args.degree2, max_harmonic=args.max_harmonic,
+        high_degree_pairs=high,
         progress=lambda msg: print(f"{msg}: {time.time() - start:.0f} s", flush=True),
     )  # fmt: skip
     terms = []

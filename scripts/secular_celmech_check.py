@@ -31,7 +31,9 @@ from andoyer.planetary.orbits.planets import PLANETS
 from andoyer.planetary.orbits.secular import secular_model
 
 
-def celmech_run(span: float, every: float, resonances: dict, order: int) -> tuple[np.ndarray, np.ndarray, float]:
+def celmech_run(
+    span: float, every: float, resonances: dict, order: int
+) -> tuple[np.ndarray, np.ndarray, float]:
     """``z = e e^{iϖ}`` and ``ζ = sin(i/2) e^{iΩ}`` of celmech's secular simulation, and its CPU time."""
     import celmech.secular
     from celmech.poincare import Poincare, PoincareParticle
@@ -54,7 +56,9 @@ def celmech_run(span: float, every: float, resonances: dict, order: int) -> tupl
             )
         )  # fmt: skip
     state = Poincare(G=1.0, poincareparticles=particles, coordinates="canonical heliocentric")
-    sim = SecularSystemSimulation(state, dtFraction=1.0 / 20.0, max_order=order, resonances_to_include=resonances)
+    sim = SecularSystemSimulation(
+        state, dtFraction=1.0 / 20.0, max_order=order, resonances_to_include=resonances
+    )
     # Whole steps per sample: its integrate() rounds the number of steps up and cannot go back.
     per = int(np.ceil(every / sim.dt))
     sim.dt = every / per
@@ -86,7 +90,9 @@ def andoyer_run(span: float, every: float, path: str | None) -> tuple[np.ndarray
     out, out_d = np.empty((per + 1, 16), complex), np.empty((per + 1, 16), complex)
     for k in range(count):
         samples[k] = w
-        integrate(w, per, every / per, *tableau, *terms.arrays(), terms.linear, keep, out, out_d, np.zeros(16))
+        integrate(
+            w, per, every / per, *tableau, *terms.arrays(), terms.linear, keep, out, out_d, np.zeros(16)
+        )
     scale = np.sqrt(np.concatenate([model.Lambda, model.Lambda]))
     u = samples / scale
     return u[:, :8].T, u[:, 8:].T
@@ -103,7 +109,9 @@ def main() -> None:
     args = parser.parse_args()
     resonances = {} if args.first_order else {(5, 6): [(5, 3)]}
     zc, zetac, seconds = celmech_run(args.span, args.every, resonances, args.order)
-    print(f"celmech: {args.span / 1e6:g} Myr in {seconds:.1f} CPU s ({seconds / args.span * 1e9:.0f} s per Gyr)")
+    print(
+        f"celmech: {args.span / 1e6:g} Myr in {seconds:.1f} CPU s ({seconds / args.span * 1e9:.0f} s per Gyr)"
+    )
     gc, sc = fundamental_frequencies(zc, zetac, args.every, LA2004_G, LA2004_S)
     za, zetaa = andoyer_run(args.span, args.every, args.model)
     ga, sa = fundamental_frequencies(za, zetaa, args.every, LA2004_G, LA2004_S)

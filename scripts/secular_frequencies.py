@@ -39,6 +39,19 @@ def signals(orbit_of, t: np.ndarray, rotation: np.ndarray) -> tuple[np.ndarray, 
     return z, zeta
 
 
+def distances() -> None:
+    """Largest angle between the normals and difference of the e vectors, secular − nbody, for t ≤ 0."""
+    for body in ("earth", "mars"):
+        secular, nbody = SecularOrbit(body), NBodyOrbit(body, max_span=5e7, progress=True)
+        for span in (2e4, 2e5, 1e6, 4e6):
+            t = np.linspace(-span, 0.0, 4001)
+            angle = np.arccos(np.clip(np.sum(secular.normal(t) * nbody.normal(t), axis=-1), -1.0, 1.0))
+            de = np.abs(secular.eccentricity_vector(t) - nbody.eccentricity_vector(t)).max()
+            print(
+                f"{body:6s} -{span:9.0f}..0 yr: normal {np.degrees(angle).max():.4f} deg, e vector {de:.2e}"
+            )
+
+
 def main() -> None:
     """Analyse both sources and print the table (″/yr)."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -46,11 +59,16 @@ def main() -> None:
     parser.add_argument("--every", type=float, default=300.0, help="sampling interval, years")
     parser.add_argument("--json", help="write the frequencies to this file")
     parser.add_argument("--no-nbody", action="store_true", help="analyse the secular model only")
+    parser.add_argument(
+        "--distances", action="store_true", help="also the Earth's and Mars' distances from nbody"
+    )
     args = parser.parse_args()
+    if args.distances:
+        distances()
     t = -args.every * np.arange(args.samples)[::-1]
     rotation = secular_model().rotation
     results = {}
-    sources = {"secular": lambda body: SecularOrbit(body)}
+    sources = {"secular": SecularOrbit}
     if not args.no_nbody:
         span = float(-t[0]) + 1000.0
         sources["nbody"] = lambda body: NBodyOrbit(body, max_span=max(span, 5e7), progress=True)

@@ -19,7 +19,8 @@ T0, T1 and DT are Julian years from J2000 (negative = past); output at T0, T0+DT
 year (default: Earth 50.38481507, IAU 2006; Mars 7.597); --dynamical-ellipticity H sets
 (C - (A+B)/2)/C instead. --tidal-dissipation TD scales the modern tidal rates of the Earth-Moon
 system (Zeebe & Lourens 2022; 0 = none). Orbit sources: vondrak (the Earth's ecliptic of
-Vondrak et al. 2011, +-200 kyr, no eccentricity), nbody, secular, or a table file PATH.
+Vondrak et al. 2011, +-200 kyr, no eccentricity), nbody, secular (the long secular model, +-1 Gyr),
+laplace-lagrange (the linear theory), or a table file PATH.
 JSON keys: t (years), obliquity (deg), precession (deg, p_A accumulated since J2000), axis (N x 3),
 orbit_normal (N x 3, J2000 ecliptic frame), eccentricity and climatic_precession (e sin varpi,
 varpi heliocentric from the moving equinox; null without eccentricity), precession_rate (arcsec/yr).
@@ -39,7 +40,9 @@ def register(commands: argparse._SubParsersAction) -> None:
     )
     parser.add_argument("body", type=str.lower, choices=tuple(DEFAULT_ORBIT), metavar="BODY")
     parser.add_argument(
-        "--orbit", metavar="SOURCE", help="vondrak|nbody|secular|PATH (default: earth vondrak, mars nbody)"
+        "--orbit",
+        metavar="SOURCE",
+        help="vondrak|nbody|secular|laplace-lagrange|PATH (default: earth vondrak, mars nbody)",
     )
     parser.add_argument("--span", nargs=2, type=finite_number, metavar=("T0", "T1"), default=DEFAULT_SPAN)
     parser.add_argument(

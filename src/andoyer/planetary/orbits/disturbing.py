@@ -120,7 +120,7 @@ def kepler_jets(lam: Array, degree: int) -> tuple[CArray, CArray]:
     [0.0, 1.0, 0.0]
     """
     s = _space(4, degree)
-    u, ub, v, vb = (s.variable(i) for i in range(4))
+    u, ub, v, _ = (s.variable(i) for i in range(4))
     uu = s.multiply(u, ub)
     beta = s.add_constant(-0.5 * uu, 1.0)
     root = s.power(s.add_constant(-0.25 * uu, 1.0), 0.5)

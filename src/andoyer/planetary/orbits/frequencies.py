@@ -34,7 +34,9 @@ Array = NDArray[np.float64]
 ARCSEC_PER_RAD = 180.0 * 3600.0 / np.pi
 
 
-def spectral_lines(signal: ArrayLike, dt: float, count: int = 10, band: float = 60.0) -> tuple[Array, Array, Array]:
+def spectral_lines(
+    signal: ArrayLike, dt: float, count: int = 10, band: float = 60.0
+) -> tuple[Array, Array, Array]:
     """The ``count`` strongest lines of a complex signal sampled every ``dt`` years.
 
     Parameters
@@ -63,7 +65,9 @@ def spectral_lines(signal: ArrayLike, dt: float, count: int = 10, band: float = 
     data = np.empty(2 * n)
     data[0::2], data[1::2] = z[:n].real, z[:n].imag
     limit = band / ARCSEC_PER_RAD * dt
-    nu, amplitude, phase = rebound.frequency_analysis(data, type="fmft", nfreq=count, minfreq=-limit, maxfreq=limit)
+    nu, amplitude, phase = rebound.frequency_analysis(
+        data, type="fmft", nfreq=count, minfreq=-limit, maxfreq=limit
+    )
     return np.asarray(nu) / dt * ARCSEC_PER_RAD, np.asarray(amplitude), np.asarray(phase)
 
 

@@ -93,7 +93,7 @@ def lyapunov_exponent(
     sign = 1.0 if span > 0 else -1.0
     per = max(1, round(interval / h))
     h = interval / per
-    count = int(round(abs(span) / interval))
+    count = round(abs(span) / interval)
     tableau = lawson_matrices(terms.linear, sign * h)
     P = terms.count
     scale = np.sqrt(np.concatenate([model.Lambda, model.Lambda]))  # w = scale (u, v)
@@ -109,7 +109,9 @@ def lyapunov_exponent(
     times, exponents = [], []
     for k in range(1, count + 1):
         for state in (reference, neighbour):
-            integrate(state, per, sign * h, *tableau, *terms.arrays(), terms.linear, keep, out, out_d, extreme)
+            integrate(
+                state, per, sign * h, *tableau, *terms.arrays(), terms.linear, keep, out, out_d, extreme
+            )
         delta = (neighbour - reference) / scale
         d = float(np.linalg.norm(delta))
         total += np.log(d / separation)

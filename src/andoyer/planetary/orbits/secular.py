@@ -118,7 +118,9 @@ def secular_model(path: str | None = None) -> SecularModel:
     from andoyer.planetary.orbits.secular_flow import FlowTerms
 
     if path is None:
-        text = resources.files("andoyer.planetary.orbits").joinpath("data/secular_model.json").read_text("utf-8")
+        text = (
+            resources.files("andoyer.planetary.orbits").joinpath("data/secular_model.json").read_text("utf-8")
+        )
     else:
         with open(path, encoding="utf-8") as f:
             text = f.read()
@@ -150,7 +152,9 @@ def secular_model(path: str | None = None) -> SecularModel:
     )  # fmt: skip
 
 
-def vectors_from_poincare(x: CArray, y: CArray, Lambda: float | Array, rotation: Array) -> tuple[Array, Array]:
+def vectors_from_poincare(
+    x: CArray, y: CArray, Lambda: float | Array, rotation: Array
+) -> tuple[Array, Array]:
     r"""The unit normal and eccentricity vector (J2000 ecliptic) from Poincaré ``x, y`` (invariable frame).
 
     ``√(1−e²) = 1 − |x|²/(2Λ)``, ``ϖ = arg x``; ``1 − cos i = |y|²/(2Λ√(1−e²))``, ``Ω = arg y``.
@@ -213,27 +217,25 @@ class _Run:
         terms = self.model.terms
         a_matrix, b_weights, forward, backward = self.tableau
         show = (sys.stderr.isatty() if progress is None else progress) and (total - done) * self.step > 2e8
-        bar = tqdm(total=total - done, disable=not show, unit="step", desc="secular", file=sys.stderr)
-        parts_w, parts_dw = [self.w[:-1]] if len(self.w) else [], [self.dw[:-1]] if len(self.dw) else []
-        while done < total:
-            n = min(CHUNK_STEPS, total - done)
-            out_w = np.empty((n + 1, self.keep.size), dtype=complex)
-            out_dw = np.empty_like(out_w)
-            extreme = np.zeros_like(self.extreme)
-            integrate(
-                self.state, n, self.sign * self.step, a_matrix, b_weights, forward, backward,
-                *terms.arrays(), terms.linear, self.keep, out_w, out_dw, extreme,
-            )  # fmt: skip
-            self._check_domain(extreme, done + n)
-            self.extreme = np.maximum(self.extreme, extreme)
-            parts_w.append(out_w[:-1])
-            parts_dw.append(out_dw[:-1])
-            done += n
-            bar.update(n)
-            last_w, last_dw = out_w[-1:], out_dw[-1:]
-        bar.close()
-        self.w = np.concatenate([*parts_w, last_w])
-        self.dw = np.concatenate([*parts_dw, last_dw])
+        with tqdm(total=total - done, disable=not show, unit="step", desc="secular", file=sys.stderr) as bar:
+            while done < total:
+                n = min(CHUNK_STEPS, total - done)
+                state = self.state.copy()
+                out_w = np.empty((n + 1, self.keep.size), dtype=complex)
+                out_dw = np.empty_like(out_w)
+                extreme = np.zeros_like(self.extreme)
+                integrate(
+                    state, n, self.sign * self.step, a_matrix, b_weights, forward, backward,
+                    *terms.arrays(), terms.linear, self.keep, out_w, out_dw, extreme,
+                )  # fmt: skip
+                self._check_domain(extreme, done + n)
+                w = np.concatenate([self.w[:-1], out_w]) if len(self.w) else out_w
+                dw = np.concatenate([self.dw[:-1], out_dw]) if len(self.dw) else out_dw
+                # One assignment per chunk: an interruption (Ctrl-C) between chunks leaves the run
+                # consistent, and a later request goes on from there.
+                self.w, self.dw, self.state, self.extreme = w, dw, state, np.maximum(self.extreme, extreme)
+                done += n
+                bar.update(n)
 
     def _check_domain(self, extreme: Array, steps: int) -> None:
         P = self.model.terms.count
@@ -282,7 +284,11 @@ class SecularOrbit:
     has_eccentricity = True
 
     def __init__(
-        self, body: str = "earth", step: float | None = None, max_span: float = MAX_SPAN, progress: bool | None = None
+        self,
+        body: str = "earth",
+        step: float | None = None,
+        max_span: float = MAX_SPAN,
+        progress: bool | None = None,
     ) -> None:
         from andoyer.planetary.orbits.secular_flow import default_step
 

@@ -42,6 +42,7 @@ __all__ = ["FlowTerms", "default_step", "energy", "hermite", "integrate", "lawso
 CArray = NDArray[np.complex128]
 IArray = NDArray[np.int64]
 
+
 @dataclass(frozen=True)
 class FlowTerms:
     """The secular Hamiltonian arranged for the compiled flow.
@@ -118,7 +119,9 @@ class FlowTerms:
         coefficients = np.asarray(coefficients)
         if np.iscomplexobj(coefficients):
             if np.any(np.abs(coefficients.imag) > 1e-8 * np.abs(coefficients)):
-                msg = "expected real coefficients (imaginary parts below 1e-8 of the moduli), got complex ones"
+                msg = (
+                    "expected real coefficients (imaginary parts below 1e-8 of the moduli), got complex ones"
+                )
                 raise ValueError(msg)
             coefficients = coefficients.real
         coefficients = coefficients.astype(float)
@@ -162,7 +165,10 @@ class FlowTerms:
                     continue
                 # Over every variable of the term, barred or not: a term and its conjugate agree.
                 sizes = [
-                    2.0 * abs(coefficients[t]) * m[v] * np.prod(value ** (m - np.eye(4 * P, dtype=np.int64)[v]))
+                    2.0
+                    * abs(coefficients[t])
+                    * m[v]
+                    * np.prod(value ** (m - np.eye(4 * P, dtype=np.int64)[v]))
                     / rate[component[v]]
                     for v in np.nonzero(m)[0]
                 ]
@@ -183,17 +189,29 @@ class FlowTerms:
             width=width,
             target=np.array([b for b, _, _ in rows], dtype=np.int32),
             coefficient=np.array([c for _, c, _ in rows], dtype=float),
-            factors=np.array([f + [0] * (most - len(f)) for _, _, f in rows], dtype=np.int32).reshape(-1, most),
+            factors=np.array([f + [0] * (most - len(f)) for _, _, f in rows], dtype=np.int32).reshape(
+                -1, most
+            ),
             groups=np.concatenate([[0], np.cumsum(sizes)]).astype(np.int64),
             energy_coefficient=np.array([c for c, _ in energy], dtype=float),
-            energy_factors=np.array([f + [0] * (wide - len(f)) for _, f in energy], dtype=np.int32).reshape(-1, wide),
+            energy_factors=np.array([f + [0] * (wide - len(f)) for _, f in energy], dtype=np.int32).reshape(
+                -1, wide
+            ),
             gr_constant=gr,
             gr_lambda=lam,
         )
 
     def arrays(self) -> tuple:
         """The arrays the compiled kernels take, in their order."""
-        return (self.width, self.target, self.coefficient, self.factors, self.groups, self.gr_constant, self.gr_lambda)
+        return (
+            self.width,
+            self.target,
+            self.coefficient,
+            self.factors,
+            self.groups,
+            self.gr_constant,
+            self.gr_lambda,
+        )
 
 
 @jit
@@ -299,8 +317,7 @@ def integrate(
     for step in range(steps + 1):
         for b in range(n):
             size = w[b].real * w[b].real + w[b].imag * w[b].imag
-            if size > extreme[b]:
-                extreme[b] = size
+            extreme[b] = max(extreme[b], size)
         # Stage 1 (c = 0): N(w), which with L w is also the derivative stored at this step.
         _nonlinear(w, P, width, target, coefficient, factors, groups, gr_constant, gr_lambda, powers, tmp)
         for b in range(n):
@@ -435,4 +452,3 @@ def energy(terms: FlowTerms, w: CArray) -> float:
         terms.energy_factors, terms.gr_constant, terms.gr_lambda, powers,
     )  # fmt: skip
     return float(np.real(value))
-
