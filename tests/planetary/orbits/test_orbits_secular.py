@@ -295,5 +295,6 @@ def test_secular_orbit_refuses_to_leave_its_expansion(monkeypatch):
     from andoyer.planetary.orbits import secular as secular_module
 
     monkeypatch.setattr(secular_module, "E_MAX", 0.1)
-    with pytest.raises(ValueError, match="expected the planets' eccentricities below 0.1.*got mercury at e = 0.2"):
+    message = r"expected the planets' eccentricities below 0\.1.*got mercury at e = 0\.2"
+    with pytest.raises(ValueError, match=message):
         SecularOrbit("earth").normal(1e4)
