@@ -60,7 +60,7 @@ CHUNK_STEPS = 1 << 15
 STEP_FRACTION = 1.0 / 10.0
 #: Derivative monomials smaller than this fraction of their component's linear rate are left out
 #: of the flow (at 1.5 times the largest amplitude the linear theory allows each variable).
-PRUNE = 1e-6
+PRUNE = 1e-5
 
 
 @dataclass(frozen=True)
@@ -141,9 +141,10 @@ def secular_model(path: str | None = None) -> SecularModel:
     Lambda, a = np.array(raw["Lambda"]), np.array(raw["a"])
     gr = relativity_constant(raw["sun_gm"], np.array(raw["gm"]), a, C_AU_PER_YEAR)
     w0 = np.array([complex(*z) for z in raw["x0"] + raw["y0"]])
-    full = FlowTerms.from_polynomial(exponents, coefficients, count, gr, Lambda)
-    # The largest |w_b| the linear flow reaches from w0: Σ_m |V_bm| |(V⁻¹ w0)_m|.
-    _, vectors = np.linalg.eig(full.linear)
+    # The linear flow alone (an infinite threshold keeps only the quadratic terms), and the largest
+    # |w_b| it reaches from w0: Σ_m |V_bm| |(V⁻¹ w0)_m|.
+    linear = FlowTerms.from_polynomial(exponents, coefficients, count, gr, Lambda, np.ones(2 * count), np.inf)
+    _, vectors = np.linalg.eig(linear.linear)
     amplitude = 1.5 * np.abs(vectors) @ np.abs(np.linalg.solve(vectors, w0))
     terms = FlowTerms.from_polynomial(exponents, coefficients, count, gr, Lambda, amplitude, PRUNE)
     return SecularModel(

@@ -140,17 +140,6 @@ class FlowTerms:
                 linear[b, a] += -2j * c
         # Relativity's quadratic part −K(1 + |x|²/(2Λ) + …) is linear in the flow: ẋ = i (K/Λ) x.
         linear[np.arange(P), np.arange(P)] += 1j * gr / lam
-        derivatives: list[list[tuple[int, float, list[int]]]] = []
-        for m, c in zip(exponents, coefficients, strict=True):
-            rows_m = []
-            for b, column in enumerate(bars):
-                if m.sum() == 2 or m[column] == 0:
-                    continue
-                reduced = m.copy()
-                reduced[column] -= 1
-                nz = np.nonzero(reduced)[0]
-                rows_m.append((b, c * m[column], (nz * width + reduced[nz]).tolist()))
-            derivatives.append(rows_m)
         kept = np.ones(len(exponents), dtype=bool)
         if amplitude is not None and threshold > 0:
             # A term is left out when every component it drives gets less than ``threshold`` of
@@ -160,20 +149,24 @@ class FlowTerms:
             value = np.concatenate([amp[:P], amp[:P], amp[P:], amp[P:]])  # x, x̄, y, ȳ
             rate = np.abs(linear) @ amp
             component = np.concatenate([np.arange(P), np.arange(P), P + np.arange(P), P + np.arange(P)])
-            for t, m in enumerate(exponents):
-                if m.sum() == 2:
+            # ∂(c w^m)/∂w_v at the amplitudes, over every variable of the term, barred or not (a term
+            # and its conjugate agree), relative to the linear rate of the component v belongs to.
+            whole = np.abs(coefficients) * np.prod(value[None, :] ** exponents, axis=1)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                sizes = 2.0 * whole[:, None] * exponents / value[None, :] / rate[component][None, :]
+            sizes = np.where(exponents > 0, sizes, 0.0)
+            kept = (exponents.sum(axis=1) == 2) | (sizes.max(axis=1) >= threshold)
+        rows: list[tuple[int, float, list[int]]] = []
+        for m, c in zip(exponents[kept], coefficients[kept], strict=True):
+            if m.sum() == 2:
+                continue
+            for b, column in enumerate(bars):
+                if m[column] == 0:
                     continue
-                # Over every variable of the term, barred or not: a term and its conjugate agree.
-                sizes = [
-                    2.0
-                    * abs(coefficients[t])
-                    * m[v]
-                    * np.prod(value ** (m - np.eye(4 * P, dtype=np.int64)[v]))
-                    / rate[component[v]]
-                    for v in np.nonzero(m)[0]
-                ]
-                kept[t] = max(sizes) >= threshold
-        rows = [row for t, rows_m in enumerate(derivatives) if kept[t] for row in rows_m]
+                reduced = m.copy()
+                reduced[column] -= 1
+                nz = np.nonzero(reduced)[0]
+                rows.append((b, c * m[column], (nz * width + reduced[nz]).tolist()))
         rows.sort(key=lambda row: (len(row[2]), row[0]))
         most = max([len(f) for _, _, f in rows], default=1)
         sizes = np.bincount([len(f) for _, _, f in rows], minlength=most + 1)[1:]
