@@ -7,7 +7,7 @@ is Andoyer's node ``h = atan2(M₁, −M₂)`` of the angular momentum in the ec
 
 * splitting: :func:`andoyer.integrate.splitting.integrate_splitting`, order 2, exact free
   flow (compiled lean kernel when numba is installed), over the full span;
-* secular: :class:`andoyer.perturbations.secular.SecularGravityGradient` on the averaged
+* secular: :class:`andoyer.perturbations.averaged_gravity.SecularGravityGradient` on the averaged
   equations, over the full span: its default propagation (composition of exact rotations
   about the orbit normals, order 8, step set by Richardson's estimate for ``rtol``, compiled
   with numba when installed) at two tolerances, and its DOP853 path for comparison. Its
@@ -61,11 +61,11 @@ from andoyer import (  # noqa: E402
 )
 from andoyer._jit import NUMBA  # noqa: E402
 from andoyer.integrate import integrate_reference  # noqa: E402
-from andoyer.integrate.reference_heyoka import heyoka_system  # noqa: E402
+from andoyer.integrate.reference.heyoka import heyoka_system  # noqa: E402
 from andoyer.integrate.secular import propagate_momentum  # noqa: E402
 from andoyer.integrate.splitting import integrate_splitting  # noqa: E402
 from andoyer.perturbations import GravityGradient, Model  # noqa: E402
-from andoyer.perturbations.secular import SecularGravityGradient  # noqa: E402
+from andoyer.perturbations.averaged_gravity import SecularGravityGradient  # noqa: E402
 from andoyer.perturbations.solar_system import DAY, JULIAN_YEAR, OBLIQUITY, mean_perturbers  # noqa: E402
 
 try:
@@ -130,7 +130,7 @@ def public_secular_h(years):
 def heyoka_integrator(tol):  # pragma: no cover - optional
     """Quaternion + body momentum under Sun and Moon, time in days (compiled once per tol).
 
-    The library's formulation (:func:`andoyer.integrate.reference_heyoka.heyoka_system`,
+    The library's formulation (:func:`andoyer.integrate.reference.heyoka.heyoka_system`,
     orbits through ``kepE``), with momenta held as ``m·DAY``.
     """
     system, pars = heyoka_system(MODEL, scale=1 / DAY, time_unit=DAY)

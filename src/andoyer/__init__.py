@@ -32,7 +32,7 @@ _moved.install()
 if TYPE_CHECKING:  # the eager names, for type checkers and IDEs
     from andoyer import (
         bodies,
-        charts,
+        catalogue,
         free,
         integrate,
         liepoisson,
@@ -40,32 +40,32 @@ if TYPE_CHECKING:  # the eager names, for type checkers and IDEs
         planetary,
         series,
         special,
+        state,
         theories,
     )
     from andoyer._limits import PhasePrecisionWarning
     from andoyer.body import NonPhysicalInertiaWarning, RigidBody, Symmetry
-    from andoyer.charts import SingularChartWarning
-    from andoyer.free import FreeRotation
-    from andoyer.propagation import propagate
+    from andoyer.free_rotation import FreeRotation
+    from andoyer.integrate.propagation import propagate
     from andoyer.regime import Regime
-    from andoyer.state import State
+    from andoyer.state import SingularChartWarning, State
 
 #: Public name -> the module that defines it (a subpackage maps to itself).
 _LAZY = {
-    "FreeRotation": "andoyer.free",
+    "FreeRotation": "andoyer.free_rotation",
     "NonPhysicalInertiaWarning": "andoyer.body",
     "PhasePrecisionWarning": "andoyer._limits",
     "Regime": "andoyer.regime",
     "RigidBody": "andoyer.body",
-    "SingularChartWarning": "andoyer.charts",
+    "SingularChartWarning": "andoyer.state",
     "State": "andoyer.state",
     "Symmetry": "andoyer.body",
-    "propagate": "andoyer.propagation",
+    "propagate": "andoyer.integrate.propagation",
     **{
         name: f"andoyer.{name}"
         for name in (
             "bodies",
-            "charts",
+            "catalogue",
             "free",
             "integrate",
             "liepoisson",
@@ -73,6 +73,7 @@ _LAZY = {
             "planetary",
             "series",
             "special",
+            "state",
             "theories",
         )
     },
@@ -88,7 +89,7 @@ __all__ = [
     "State",
     "Symmetry",
     "bodies",
-    "charts",
+    "catalogue",
     "free",
     "integrate",
     "liepoisson",
@@ -97,6 +98,7 @@ __all__ = [
     "propagate",
     "series",
     "special",
+    "state",
     "theories",
 ]
 

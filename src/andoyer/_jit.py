@@ -14,7 +14,7 @@ import os
 from types import FunctionType
 
 # numba is imported by the first jit/jitable call, not here: a module that only runs kernels as
-# Python (a single state through andoyer.charts._kernels) must not pay numba's ~0.6 s import.
+# Python (a single state through andoyer.state._kernels) must not pay numba's ~0.6 s import.
 _numba = None
 
 #: Whether the kernels decorated with :func:`jit` are compiled.

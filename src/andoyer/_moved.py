@@ -36,6 +36,18 @@ MOVED: dict[str, str] = {
     "andoyer.cassini": "andoyer.planetary.cassini",
     "andoyer.spin_axis": "andoyer.planetary.spin_axis",
     "andoyer.nutation": "andoyer.planetary.nutation",
+    "andoyer.propagation": "andoyer.integrate.propagation",
+    "andoyer.integrate.averaged": "andoyer.integrate.secular",
+    "andoyer.integrate.secular_steps": "andoyer.integrate.secular.rotations",
+    "andoyer.integrate.split_kernel": "andoyer.integrate.splitting.kernel",
+    "andoyer.integrate.reference_heyoka": "andoyer.integrate.reference.heyoka",
+    "andoyer.integrate.euler_poisson": "andoyer.integrate.reference.euler_poisson",
+    "andoyer.perturbations.secular": "andoyer.perturbations.averaged_gravity",
+    "andoyer.charts": "andoyer.state",
+    "andoyer.equations": "andoyer.state",
+    "andoyer.hamiltonians": "andoyer.state",
+    "andoyer.state_charts": "andoyer.state.hub",
+    "andoyer.free.rotation": "andoyer.free_rotation",
 }
 
 

@@ -1,12 +1,16 @@
-"""Named solar-system bodies.
+"""The rigid bodies of Lara's (2013) Table 1: the Earth, Mars, the Moon and Eros.
 
-The principal-moment ratios are Lara's Table 1 (M. Lara, *Short-axis-mode
-rotation of a free rigid body by perturbation series*, 2013), which cites
-Mars [Konopliv et al.], Earth and Moon [the IERS/JPL values quoted there] and
-Eros [Souchay et al.]. Moments are normalised to ``C = 1``; the body axes are
-``(b1, b2, b3) = (A, B, C)``. Sidereal rotation periods are the IAU WGCCRE
-(Archinal et al. 2018) values, and ``J0`` is Lara's Table 1 estimate of the
-angle between the angular momentum and the figure axis.
+The SAM theory's reproduction of Lara's tables needs his moment ratios, so this module keeps
+them, read from the catalogue's named moment set ``"lara2013"``
+(:func:`andoyer.catalogue.get`). Moments are normalised to ``C = 1``; the body axes are
+``(b1, b2, b3) = (A, B, C)``; ``J0`` is Lara's estimate of the angle between the angular
+momentum and the figure axis, and ``rotation_period`` the sidereal period he uses.
+
+``bodies.get("earth")`` is Lara's Earth (``H = 0.0032789``), not the catalogue's default
+(``andoyer.catalogue.get("earth").rigid_body()``, the IAU/MHB2000 ``H = 0.00327379492`` with
+Lara's ``B − A``): the four bodies here are the test set of Lara's paper, and every result
+computed from them (the SAM series, the demo, Lara's figures) is his. Every other catalogued
+body is reached through :mod:`andoyer.catalogue`.
 
 Examples
 --------
@@ -21,17 +25,21 @@ Examples
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cache
 
+from andoyer import catalogue
 from andoyer.body import RigidBody
 
 __all__ = ["BodyInfo", "get", "info", "names"]
 
-ARCSEC = 3.141592653589793 / 648000.0
+#: The catalogue's name of Lara's (2013) Table 1 moment set.
+LARA_SET = "lara2013"
+_NAMES = ("earth", "mars", "moon", "eros")
 
 
 @dataclass(frozen=True)
 class BodyInfo:
-    """Catalogue entry of a named body.
+    """A body of Lara's Table 1.
 
     Attributes
     ----------
@@ -51,56 +59,46 @@ class BodyInfo:
     source: str
 
 
-_CATALOGUE: dict[str, BodyInfo] = {
-    "earth": BodyInfo(
-        RigidBody.from_ratios(0.9967200, 0.9967222, name="Earth"),
-        86164.0905,
-        1.0 * ARCSEC,
-        "Lara (2013) Table 1, ref. [32]; IAU WGCCRE 2015 sidereal day",
-    ),
-    "mars": BodyInfo(
-        RigidBody.from_ratios(0.9942917, 0.9949813, name="Mars"),
-        88642.6632,
-        0.1 * ARCSEC,
-        "Lara (2013) Table 1, refs. [14, 31]; IAU WGCCRE 2015 (350.891982443297 deg/day)",
-    ),
-    "moon": BodyInfo(
-        RigidBody.from_ratios(0.999368, 0.999601, name="Moon"),
-        27.321661 * 86400.0,
-        6.2 * ARCSEC,
-        "Lara (2013) Table 1, refs. [32, 33]; sidereal month 27.321661 d",
-    ),
-    "eros": BodyInfo(
-        RigidBody.from_ratios(0.229427, 0.963754, name="Eros"),
-        5.27025547 * 3600.0,
-        55.0 * ARCSEC,
-        "Lara (2013) Table 1, ref. [17]; IAU WGCCRE 2015 (1639.38864745 deg/day)",
-    ),
-}
-
-
 def names() -> tuple[str, ...]:
-    """Names of the catalogued bodies, lower case."""
-    return tuple(_CATALOGUE)
+    """Names of Lara's Table 1 bodies, lower case."""
+    return _NAMES
 
 
 def info(name: str) -> BodyInfo:
-    """Catalogue entry of ``name`` (case-insensitive).
+    """Lara's Table 1 entry of ``name`` (case-insensitive).
 
     Examples
     --------
     >>> round(info("mars").rotation_period / 3600, 4)
-    24.6230
+    24.623
     """
     key = str(name).strip().lower()
-    if key not in _CATALOGUE:
-        msg = f"expected one of {', '.join(_CATALOGUE)}, got {name!r}"
+    if key not in _NAMES:
+        msg = (
+            f"expected one of {', '.join(_NAMES)} (Lara's Table 1; andoyer.catalogue.get(name)"
+            f".rigid_body() for the other catalogued bodies), got {name!r}"
+        )
         raise ValueError(msg)
-    return _CATALOGUE[key]
+    return _info(key)
+
+
+@cache
+def _info(key: str) -> BodyInfo:
+    """The entry of ``key``, built once: every call gives the same body object."""
+    entry = catalogue.get(key)
+    values = entry.moment_sets[LARA_SET]
+    a, b = entry.moments(LARA_SET)
+    sources = dict.fromkeys(q.source for q in values.values())
+    return BodyInfo(
+        RigidBody.from_ratios(a, b, name=entry.name),
+        values["rotation_period"].si(),
+        values["j0"].si(),
+        "; ".join(sources),
+    )
 
 
 def get(name: str) -> RigidBody:
-    """The :class:`~andoyer.RigidBody` of a named body (case-insensitive).
+    """The :class:`~andoyer.RigidBody` of a body of Lara's Table 1 (case-insensitive).
 
     Examples
     --------

@@ -20,13 +20,22 @@ def run_cli(capsys, *argv):
     return code, out, err
 
 
-def test_cli_bodies_json_lists_lara_table1(capsys):
+def test_cli_bodies_lara_set_csv_lists_lara_table1(capsys):
+    code, out, _ = run_cli(capsys, "bodies", "--moments", "lara2013", "--format", "csv")
+    assert code == 0
+    rows = {r["name"]: r for r in csv.DictReader(out.splitlines())}
+    assert set(rows) == {"earth", "mars", "moon", "eros"}
+    assert float(rows["eros"]["beta"]) == pytest.approx(0.977853, abs=6e-7)  # Lara (2013) Table 1
+    assert float(rows["mars"]["I1"]) == 0.9942917
+
+
+def test_cli_bodies_json_lists_every_body_with_sources(capsys):
     code, out, _ = run_cli(capsys, "bodies", "--format", "json")
     assert code == 0
-    rows = {r["name"]: r for r in json.loads(out)}
-    assert set(rows) == {"earth", "mars", "moon", "eros"}
-    assert rows["eros"]["beta"] == pytest.approx(0.977853, abs=6e-7)
-    assert rows["mars"]["I1"] == 0.9942917
+    rows = {r["name"].lower(): r for r in json.loads(out)}
+    assert {"sun", "earth", "moon", "titan", "triton", "eros"} <= set(rows)
+    assert rows["mars"]["moment_sets"]["lara2013"]["a_over_c"]["value"] == 0.9942917
+    assert all(v["source"] for r in rows.values() for v in r.values() if isinstance(v, dict) and "value" in v)
 
 
 def test_cli_convert_values_matches_library(capsys):

@@ -14,6 +14,7 @@ deleted, links, devices and FIFOs untouched. A new command without an entry fail
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import stat
 from dataclasses import dataclass
@@ -41,7 +42,9 @@ class Valid:
 
 VALID: dict[str, Valid] = {
     "demo": Valid(("demo --body moon --quiet --out {out}",), "--out", ""),
-    "bodies": Valid(("bodies --format csv",)),
+    "bodies": Valid(
+        ("bodies --format csv", "bodies titan --format json", "bodies --moments lara2013 --format table")
+    ),
     "convert": Valid(
         (
             f"convert --from andoyer --to euler --values {STATE} --output {{out}}",
@@ -60,7 +63,13 @@ VALID: dict[str, Valid] = {
         ),
         "--output",
     ),
-    "precession": Valid(("precession earth --format json --output {out}",), "--output"),
+    "precession": Valid(
+        (
+            "precession earth --format json --output {out}",
+            "precession mars --dynamical-ellipticity 0.0054 --format json --output {out}",
+        ),
+        "--output",
+    ),
     "ensemble": Valid(
         (
             (
@@ -85,9 +94,30 @@ VALID: dict[str, Valid] = {
         ),
         "--output",
     ),
-    "nutation": Valid(("nutation earth --span 0 1 --step 0.5 --format json --output {out}",), "--output"),
+    "nutation": Valid(
+        (
+            "nutation earth --span 0 1 --step 0.5 --format json --output {out}",
+            "nutation earth --span 0 1 --step 0.5 --dynamical-ellipticity 0.0032737949 --output {out}",
+        ),
+        "--output",
+    ),
     "obliquity": Valid(
-        ("obliquity earth --span -1000 1000 --step 500 --format json --output {out}",), "--output"
+        (
+            "obliquity earth --span -1000 1000 --step 500 --format json --output {out}",
+            (
+                "obliquity earth --span -1000 1000 --step 500 --dynamical-ellipticity 0.0033 "
+                "--tidal-dissipation 0.5 --output {out}"
+            ),
+            "obliquity earth --span -1000 1000 --step 100 --precession-rate 500 --output {out}",
+        ),
+        "--output",
+    ),
+    "tides": Valid(
+        (
+            "tides earth --span -1e8 0 --step 5e7 --obliquity 23 --format json --output {out}",
+            "tides earth --model constant-lag --span -2e8 1e8 --step 1e8 --no-solar-tide --format csv",
+        ),
+        "--output",
     ),
     "brackets": Valid(("brackets --algebra so3 --format json --output {out}",), "--output"),
     "series sam": Valid(("series sam --order 2 --format tex --output {out}",), "--output"),
@@ -108,7 +138,15 @@ VALID: dict[str, Valid] = {
         ".png",
     ),
     "portrait cassini": Valid(
-        ("portrait cassini --body moon --levels 3 --dpi 20 --out {out}",), "--out", ".png"
+        (
+            "portrait cassini --body moon --levels 3 --dpi 20 --out {out}",
+            (
+                "portrait cassini --body mercury --j2 5.03e-5 --c22 0.81e-5 --moment-of-inertia 0.346 "
+                "--node-period 325000 --inclination 8.6 --levels 3 --dpi 20 --out {out}"
+            ),
+        ),
+        "--out",
+        ".png",
     ),
     "portrait precession": Valid(
         (
@@ -212,11 +250,44 @@ def mutations() -> list:
                     add(name, "output", f"{k}:{case}", (*argv[:i], path, *argv[i + 1 :]))
     # Positional choices (precession's body) and an unknown sub-command.
     add("precession", "choice", "body", ("precession", "pluto"))
+    add("bodies", "choice", "name", ("bodies", "vulcan"))
     add("", "choice", "command", ("frobnicate",))
     return cases
 
 
 MUTATIONS = mutations()
+
+
+def out_of_range() -> list:
+    """A ``pytest.param(command, argv)`` for each physical parameter of each command, just out of range.
+
+    The options are those whose type is :func:`andoyer.cli.numbers.physical`; the values lie just
+    outside each finite bound of the parameter's range in :mod:`andoyer.planetary.parameters`
+    (the bound itself where it is excluded), in the command line's unit.
+    """
+    cases = []
+    for name, valid in VALID.items():
+        flags = actions_by_flag(PARSERS[name]) if name in PARSERS else {}
+        seen = set()
+        for argv in valid.argvs:
+            for i, token in enumerate(argv):
+                action = flags.get(token)
+                p = getattr(getattr(action, "type", None), "parameter", None)
+                if p is None or token in seen:
+                    continue
+                seen.add(token)
+                scale = 180 / math.pi if action.type.degrees and p.unit == "rad" else 1.0
+                for bound, closed, sign in ((p.low, p.low_closed, -1), (p.high, p.high_closed, 1)):
+                    if not math.isfinite(bound):
+                        continue
+                    for x in ([] if closed else [bound]) + [bound + sign * 1e-6 * max(1.0, abs(bound))]:
+                        value = repr(x * scale)
+                        mutated = (*argv[: i + 1], value, *argv[i + 2 :])
+                        cases.append(pytest.param(name, mutated, id=f"{name}-{token}={value}"))
+    return cases
+
+
+OUT_OF_RANGE = out_of_range()
 
 
 @pytest.fixture
@@ -293,6 +364,26 @@ def _warns(argv: list[str]) -> bool:
             if value in values:
                 return True
     return False
+
+
+def test_bad_input_out_of_range_covers_the_physical_options():
+    """Every command with a physical parameter has its out-of-range cases (issue 26 item 4)."""
+    commands = {case.values[0] for case in OUT_OF_RANGE}
+    assert {"obliquity", "precession", "nutation", "cassini", "portrait cassini"} <= commands
+    flags = {case.id.split("=")[0] for case in OUT_OF_RANGE}
+    assert {"obliquity---tidal-dissipation", "obliquity---precession-rate", "cassini---inclination"} <= flags
+
+
+@pytest.mark.parametrize(("name", "argv"), OUT_OF_RANGE)
+def test_bad_input_out_of_range_one_line_exit_2_nothing_touched(name, argv, workdir, capsys):
+    suffix = VALID[name].suffix
+    argv = [a.replace("{out}", f"out{suffix}").replace("{input}", "in.csv") for a in argv]
+    before = snapshot(workdir)
+    code, err = run(argv, capsys)
+    assert code == 2, err
+    assert len(err.splitlines()) == 1, err
+    assert "expected a" in err
+    assert snapshot(workdir) == before
 
 
 @pytest.mark.parametrize(("name", "argv"), MUTATIONS)

@@ -9,15 +9,17 @@ from scipy.integrate import solve_ivp
 from scipy.spatial.transform import Rotation
 
 from andoyer import RigidBody, State, bodies
-from andoyer.equations import (
+from andoyer.state import (
     andoyer_equations,
+    andoyer_hamiltonian,
     attitude_rate,
     euler_equations,
+    euler_hamiltonian,
     euler_poinsot,
     euler_poinsot_omega,
     lie_poisson,
+    state_hamiltonian,
 )
-from andoyer.hamiltonians import andoyer_hamiltonian, euler_hamiltonian, state_hamiltonian
 from conftest import REGIME_BODIES, random_states, rotation_distance
 
 

@@ -7,9 +7,16 @@ import pytest
 from scipy.spatial.transform import Rotation
 
 from andoyer import RigidBody, State, bodies
-from andoyer.charts import andoyer_from_euler, andoyer_matrix, euler_matrix, inclinations
-from andoyer.equations import andoyer_equations, euler_poinsot
-from andoyer.hamiltonians import andoyer_hamiltonian, euler_hamiltonian
+from andoyer.state import (
+    andoyer_equations,
+    andoyer_from_euler,
+    andoyer_hamiltonian,
+    andoyer_matrix,
+    euler_hamiltonian,
+    euler_matrix,
+    euler_poinsot,
+    inclinations,
+)
 
 EARTH = RigidBody(0.99672, 0.9967222, 1.0)
 IDENT = Rotation.identity()

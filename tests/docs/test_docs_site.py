@@ -123,7 +123,7 @@ def test_docs_site_builds_strict(tmp_path):
     core = (site / "api/core/index.html").read_text(encoding="utf-8")
     assert 'id="andoyer.State"' in core
     # The chart methods installed on State from the registry (scripts/griffe_chart_methods.py).
-    from andoyer.charts.registry import charts
+    from andoyer.state.registry import charts
 
     for name in (n for n, chart in charts().items() if chart.method):
         assert f'id="andoyer.State.from_{name}"' in core, name

@@ -20,10 +20,10 @@ from scipy.spatial.transform import Rotation
 
 from andoyer import FreeRotation, RigidBody, State
 from andoyer.body import NonPhysicalInertiaWarning
-from andoyer.charts.sadov import andoyer_to_sadov, sadov_hamiltonian, sadov_to_andoyer
-from andoyer.charts.sam import sam_axes, sam_energy
 from andoyer.free import Regime
-from andoyer.hamiltonians import andoyer_hamiltonian
+from andoyer.state import andoyer_hamiltonian
+from andoyer.state.sadov import andoyer_to_sadov, sadov_hamiltonian, sadov_to_andoyer
+from andoyer.state.sam import sam_axes, sam_energy
 from conftest import random_states, rotation_distance
 
 M_TOL = 1e-13

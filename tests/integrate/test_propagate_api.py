@@ -1,4 +1,4 @@
-"""andoyer.propagation.propagate: the three methods agree to the accuracy each claims; dispatcher errors."""
+"""andoyer.propagate: the three methods agree to the accuracy each claims; dispatcher errors."""
 
 from __future__ import annotations
 
@@ -7,6 +7,7 @@ import pytest
 from scipy.spatial.transform import Rotation
 
 from andoyer import FreeRotation, RigidBody, State
+from andoyer.integrate.propagation import METHODS, propagate
 from andoyer.perturbations import (
     CircularOrbit,
     GravityGradient,
@@ -17,7 +18,6 @@ from andoyer.perturbations import (
     PrecessingFrame,
     TabulatedOrbit,
 )
-from andoyer.propagation import METHODS, propagate
 from conftest import rotation_distance
 
 TRIAXIAL = RigidBody(0.7, 1.0, 1.3)

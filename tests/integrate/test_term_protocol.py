@@ -25,7 +25,8 @@ TERM_CLASSES = {
     for name, value in vars(andoyer.perturbations).items()
     if inspect.isclass(value) and issubclass(value, Perturbation) and value is not Perturbation
 }
-MODULES = sorted(INTEGRATE.glob("*.py"))
+#: Every module of the package, those of the methods' subpackages included.
+MODULES = sorted(INTEGRATE.rglob("*.py"))
 
 
 def _type_switches(tree: ast.AST) -> list[str]:
@@ -62,12 +63,12 @@ def test_term_classes_found():
     assert {"GravityGradient", "HeavyTop", "PrecessingFrame", "LinearDamping", "UserTorque"} <= TERM_CLASSES
 
 
-@pytest.mark.parametrize("path", MODULES, ids=lambda p: p.name)
+@pytest.mark.parametrize("path", MODULES, ids=lambda p: p.relative_to(INTEGRATE).as_posix())
 def test_integrator_module_does_not_switch_on_term_types(path):
     assert _type_switches(ast.parse(path.read_text(encoding="utf-8"))) == []
 
 
-@pytest.mark.parametrize("path", MODULES, ids=lambda p: p.name)
+@pytest.mark.parametrize("path", MODULES, ids=lambda p: p.relative_to(INTEGRATE).as_posix())
 def test_integrator_module_reads_no_private_attribute(path):
     assert _private_reads(ast.parse(path.read_text(encoding="utf-8"))) == []
 

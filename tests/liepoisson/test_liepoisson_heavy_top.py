@@ -10,7 +10,7 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 from andoyer import RigidBody
-from andoyer.integrate.euler_poisson import euler_poisson_integrals, integrate_euler_poisson
+from andoyer.integrate.reference.euler_poisson import euler_poisson_integrals, integrate_euler_poisson
 from andoyer.liepoisson import andoyer_coordinates, e3_from_andoyer, e3_to_andoyer, get_algebra
 from andoyer.liepoisson.heavy_top import (
     LeafRates,

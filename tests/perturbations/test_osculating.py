@@ -8,10 +8,10 @@ from scipy.spatial.transform import Rotation
 
 from andoyer import State
 from andoyer import _quaternion as quat
-from andoyer.equations import euler_equations
 from andoyer.integrate import integrate_reference
 from andoyer.perturbations import Model, PrecessingFrame, perturbed_rates
 from andoyer.perturbations.osculating import convective_terms, euler_rates_to_omega, osculating_state
+from andoyer.state import euler_equations
 from conftest import REGIME_BODIES, rotation_distance
 
 MU = np.array([0.013, -0.021, 0.034])

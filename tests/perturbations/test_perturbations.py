@@ -287,9 +287,9 @@ ANDOYER_MODELS = {
 @pytest.mark.parametrize("name", list(ANDOYER_MODELS))
 def test_andoyer_form_gradient_matches_finite_differences(rng, name):
     """The chain rule through the attitude equals ∂ΔH/∂a by Richardson differences in the chart."""
-    from andoyer.charts.andoyer import andoyer_to_hub
-    from andoyer.equations import andoyer_equations
     from andoyer.perturbations import Model, andoyer_perturbed_equations
+    from andoyer.state import andoyer_equations
+    from andoyer.state.andoyer import andoyer_to_hub
 
     body = RigidBody(0.7, 1.0, 1.3)
     model = ANDOYER_MODELS[name](body)

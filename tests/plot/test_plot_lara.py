@@ -4,9 +4,9 @@ import numpy as np
 import pytest
 
 from andoyer import RigidBody
-from andoyer.charts.sam import sam_from_andoyer
-from andoyer.hamiltonians import andoyer_hamiltonian
 from andoyer.plot import LARA_LEVELS, lara_portrait, lara_portrait_data
+from andoyer.state import andoyer_hamiltonian
+from andoyer.state.sam import sam_from_andoyer
 
 BETA = 0.8
 
@@ -32,7 +32,7 @@ def test_free_contours_are_level_sets_of_the_free_hamiltonian(alpha):
 
 def test_main_problem_contours_are_level_sets_of_the_sam_action():
     # In Lara's SAM action-angle variables the main problem is A = G²/2C (1 + 2αs L/G) (eqs. 6,
-    # 21, 27), so A* = 2 s L/G with L from the library's SAM chart (andoyer.charts.sam).
+    # 21, 27), so A* = 2 s L/G with L from the library's SAM chart (andoyer.state.sam).
     data = lara_portrait_data()
     s = np.sqrt(1 - BETA**2)
     G = 1.0

@@ -4,8 +4,8 @@ import numpy as np
 import pytest
 
 from andoyer import RigidBody, bodies
-from andoyer.hamiltonians import andoyer_hamiltonian
 from andoyer.plot import phase_portrait, phase_portrait_data
+from andoyer.state import andoyer_hamiltonian
 
 ABC = RigidBody(1.0, 2.0, 3.0)  # b2 intermediate: saddles at l = 0, ±π
 BAC = RigidBody(2.0, 1.0, 2.5)  # b1 intermediate: saddles at l = ±π/2

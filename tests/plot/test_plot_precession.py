@@ -5,7 +5,7 @@ import pytest
 
 from andoyer import FreeRotation, RigidBody, State, bodies
 from andoyer.integrate.secular import propagate_momentum
-from andoyer.perturbations.secular import SecularGravityGradient
+from andoyer.perturbations.averaged_gravity import SecularGravityGradient
 from andoyer.perturbations.solar_system import JULIAN_YEAR, OBLIQUITY, mean_perturbers
 from andoyer.planetary.precession import fit_trend
 from andoyer.plot import precession, precession_data

@@ -9,10 +9,10 @@ import numpy as np
 import pytest
 
 from andoyer import RigidBody, State, bodies
-from andoyer.charts.sam import hub_to_sam, sam_axes, sam_to_hub
 from andoyer.integrate import integrate_reference
 from andoyer.perturbations import Model
 from andoyer.series import lie_sum
+from andoyer.state.sam import hub_to_sam, sam_axes, sam_to_hub
 from andoyer.theories.sam_rotation import SAMFrequencies, SAMRotation
 
 STRONG = RigidBody(0.4, 0.7, 1.0, name="strongly triaxial")

@@ -16,8 +16,8 @@ import numpy as np
 import pytest
 
 from andoyer import RigidBody, State
-from andoyer.charts.sam import sam_axes, sam_to_hub
 from andoyer.series import lie_sum
+from andoyer.state.sam import sam_axes, sam_to_hub
 from andoyer.theories import SAM_RING, sam_theory
 
 DPS = 60

@@ -46,7 +46,10 @@ COMMANDS: dict[str, tuple[str, str]] = {
         "andoyer.cli.demo_cmd",
         "tour a named body: every chart, exact and series propagation, precession, pictures",
     ),
-    "bodies": ("andoyer.cli.bodies_cmd", "list the named bodies (Lara 2013, Table 1)"),
+    "bodies": (
+        "andoyer.cli.bodies_cmd",
+        "the catalogue of bodies with their sources, one body, or a body file checked",
+    ),
     "convert": ("andoyer.cli.convert_cmd", "convert states between charts"),
     "propagate": (
         "andoyer.cli.propagate_cmd",
@@ -58,7 +61,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     ),
     "cassini": (
         "andoyer.cli.cassini_cmd",
-        "Cassini states (equilibria of Colombo's top) of the Moon, Mercury or any body",
+        "Cassini states (equilibria of Colombo's top) of the Moon or Mercury, moments and orbit changeable",
     ),
     "nutation": (
         "andoyer.cli.nutation_cmd",
@@ -67,6 +70,10 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "obliquity": (
         "andoyer.cli.obliquity_cmd",
         "obliquity, general and climatic precession of the Earth or Mars over 10^3-10^7 years",
+    ),
+    "tides": (
+        "andoyer.cli.tides_cmd",
+        "the Earth-Moon tidal history: lunar distance, day length, precession constant, obliquity (Gyr)",
     ),
     "ensemble": (
         "andoyer.cli.ensemble_cmd",
@@ -125,8 +132,8 @@ def main(argv: Sequence[str] | None = None) -> int:
 
     Examples
     --------
-    >>> main(["bodies", "--format", "csv"])  # doctest: +ELLIPSIS
-    name,I1,I2,I3,alpha,beta,kappa,rotation_period_s,J0_rad,source
+    >>> main(["bodies", "--moments", "lara2013", "--format", "csv"])  # doctest: +ELLIPSIS
+    name,I1,I2,I3,alpha,beta,kappa,rotation_period_s,J0_rad,source,...
     earth,0.99672,0.9967222,1.0,...
     0
     """

@@ -19,8 +19,8 @@ def register(commands: argparse._SubParsersAction) -> None:
             "algebra, symbolically (sympy normal form) and numerically (seeded points)."
         ),
     )
-    parser.add_argument("--algebra", choices=ALGEBRAS, required=True)
-    parser.add_argument("--format", choices=("table", "json"), default="table")
+    parser.add_argument("--algebra", choices=ALGEBRAS, required=True, help="the Lie-Poisson algebra")
+    parser.add_argument("--format", choices=("table", "json"), default="table", help="default table")
     add_output_argument(parser)
     parser.set_defaults(run=run)
 

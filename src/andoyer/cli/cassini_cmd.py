@@ -7,8 +7,8 @@ import json
 import math
 from typing import TYPE_CHECKING
 
-from andoyer.cli.numbers import finite_number
-from andoyer.cli.output import CliError, add_output_argument, atomic_output, format_rows
+from andoyer.cli.numbers import physical
+from andoyer.cli.output import add_output_argument, atomic_output, format_rows
 
 EXAMPLES = """examples:
   andoyer cassini moon
@@ -28,20 +28,33 @@ if TYPE_CHECKING:
 
 
 def add_cassini_arguments(parser: argparse.ArgumentParser) -> None:
-    """The options that override a named body's moments and orbit (shared with ``portrait cassini``)."""
-    parser.add_argument("--j2", type=finite_number, metavar="J2", help="unnormalised J2")
-    parser.add_argument("--c22", type=finite_number, metavar="C22", help="unnormalised C22")
+    """The options that override a named body's moments and orbit (shared with ``portrait cassini``).
+
+    Each is checked against its range in :mod:`andoyer.planetary.parameters`, as the API checks it.
+    """
     parser.add_argument(
-        "--moment-of-inertia", type=finite_number, metavar="C_MR2", help="polar moment C/MR^2"
+        "--j2", type=physical("j2"), metavar="J2", help="unnormalised J2 = (C - (A+B)/2)/MR^2 (J2 > 0)"
+    )
+    parser.add_argument(
+        "--c22", type=physical("c22"), metavar="C22", help="unnormalised C22 = (B - A)/4MR^2 (C22 <= J2/2)"
+    )
+    parser.add_argument(
+        "--moment-of-inertia",
+        type=physical("moment_of_inertia"),
+        metavar="C_MR2",
+        help="polar moment C/MR^2 (0 < C/MR^2 <= 1)",
     )
     parser.add_argument(
         "--node-period",
-        type=finite_number,
+        type=physical("node_period"),
         metavar="YEARS",
-        help="period of the node's regression, Julian years",
+        help="period of the node's regression, Julian years (> 0)",
     )
     parser.add_argument(
-        "--inclination", type=finite_number, metavar="DEG", help="orbit to Laplace plane, degrees"
+        "--inclination",
+        type=physical("laplace_inclination", degrees=True),
+        metavar="DEG",
+        help="orbit to Laplace plane, degrees (0 < DEG < 90)",
     )
 
 
@@ -57,14 +70,8 @@ def cassini_body_from_args(name: str, args: argparse.Namespace) -> CassiniBody:
     if args.moment_of_inertia is not None:
         changes["moment_of_inertia"] = args.moment_of_inertia
     if args.node_period is not None:
-        if not args.node_period > 0:
-            msg = f"expected --node-period > 0 (years of regression), got {args.node_period!r}"
-            raise CliError(msg)
         changes["node_rate"] = -2 * math.pi / args.node_period
     if args.inclination is not None:
-        if not 0 < args.inclination < 90:
-            msg = f"expected 0 < --inclination < 90 degrees, got {args.inclination!r}"
-            raise CliError(msg)
         changes["inclination"] = math.radians(args.inclination)
     return cassini.get(name).replace(**changes)
 
@@ -75,11 +82,14 @@ def register(commands: argparse._SubParsersAction) -> None:
 
     parser = commands.add_parser(
         "cassini",
+        description="The Cassini states of the Moon or of Mercury, from their numbers or from the "
+        "J2, C22, C/MR^2, node period and inclination given here (other bodies: andoyer.planetary."
+        "cassini.CassiniBody in Python).",
         epilog=EXAMPLES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    parser.add_argument("body", type=str.lower, choices=sorted(BODIES))
-    parser.add_argument("--format", choices=("table", "json"), default="table")
+    parser.add_argument("body", type=str.lower, choices=sorted(BODIES), help="the body whose numbers start")
+    parser.add_argument("--format", choices=("table", "json"), default="table", help="default table")
     add_cassini_arguments(parser)
     add_output_argument(parser)
     parser.set_defaults(run=run)

@@ -10,9 +10,9 @@ import numpy as np
 
 from andoyer import bodies
 from andoyer.body import RigidBody
-from andoyer.charts.registry import Chart, charts
 from andoyer.cli.output import CliError, read_csv_columns
 from andoyer.state import State
+from andoyer.state.registry import Chart, charts
 
 
 @dataclass(frozen=True)
@@ -27,7 +27,7 @@ class ChartColumns:
 
 
 # The charts the command line offers, in the order of its help; their signatures come from the
-# registry (andoyer.charts.registry), written once in each chart's module.
+# registry (andoyer.state.registry), written once in each chart's module.
 CLI_CHARTS = ("state", "euler", "andoyer", "sadov", "serret")
 
 
@@ -49,7 +49,9 @@ def add_body_arguments(parser: argparse.ArgumentParser) -> None:
     """``--body NAME`` or ``--moments I1 I2 I3`` for the charts and models that need the inertia."""
     group = parser.add_mutually_exclusive_group()
     group.add_argument("--body", choices=bodies.names(), help="a named body (andoyer bodies)")
-    group.add_argument("--moments", nargs=3, type=float, metavar=("I1", "I2", "I3"))
+    group.add_argument(
+        "--moments", nargs=3, type=float, metavar=("I1", "I2", "I3"), help="principal moments of inertia"
+    )
 
 
 def body_from_args(args: argparse.Namespace) -> RigidBody:
@@ -70,8 +72,16 @@ def body_from_args(args: argparse.Namespace) -> RigidBody:
 def add_time_arguments(parser: argparse.ArgumentParser) -> None:
     """``--times T ...`` or ``--range START STOP COUNT`` (one of them required)."""
     when = parser.add_mutually_exclusive_group(required=True)
-    when.add_argument("--times", nargs="+", type=float, metavar="T")
-    when.add_argument("--range", nargs=3, type=float, metavar=("START", "STOP", "COUNT"))
+    when.add_argument(
+        "--times", nargs="+", type=float, metavar="T", help="output times (the state's time unit)"
+    )
+    when.add_argument(
+        "--range",
+        nargs=3,
+        type=float,
+        metavar=("START", "STOP", "COUNT"),
+        help="COUNT output times evenly from START to STOP",
+    )
 
 
 def times_from_args(args: argparse.Namespace) -> np.ndarray:

@@ -23,14 +23,18 @@ def register(commands: argparse._SubParsersAction) -> None:
         epilog=EXAMPLES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    parser.add_argument("--from", dest="source", choices=tuple(CHARTS), required=True)
-    parser.add_argument("--to", dest="target", choices=tuple(CHARTS), required=True)
+    parser.add_argument(
+        "--from", dest="source", choices=tuple(CHARTS), required=True, help="chart of the input"
+    )
+    parser.add_argument(
+        "--to", dest="target", choices=tuple(CHARTS), required=True, help="chart of the output"
+    )
     given = parser.add_mutually_exclusive_group(required=True)
     given.add_argument("--values", nargs="+", type=float, metavar="X", help="one state, in column order")
     given.add_argument("--input", metavar="CSV", help="CSV file with a header naming the columns")
     parser.add_argument("--degrees", action="store_true", help="angles in degrees (input and output)")
     add_body_arguments(parser)
-    parser.add_argument("--format", choices=("table", "csv"), default="table")
+    parser.add_argument("--format", choices=("table", "csv"), default="table", help="default table")
     add_output_argument(parser)
     parser.set_defaults(run=run)
 

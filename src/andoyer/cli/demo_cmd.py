@@ -21,7 +21,9 @@ def register(commands: argparse._SubParsersAction) -> None:
             "its .andoyer-demo file); nothing in it is deleted."
         ),
     )
-    parser.add_argument("--body", default="earth", choices=bodies.names())
+    parser.add_argument(
+        "--body", default="earth", choices=bodies.names(), help="the body toured (default earth)"
+    )
     parser.add_argument(
         "--out",
         default="andoyer-demo",

@@ -26,7 +26,7 @@ from andoyer._files import new_dir_mode
 from andoyer.body import RigidBody
 from andoyer.cli.chart_table import CHARTS
 from andoyer.cli.output import CliError, atomic_output, output_target
-from andoyer.free import FreeRotation
+from andoyer.free_rotation import FreeRotation
 from andoyer.regime import Regime
 from andoyer.state import State
 
@@ -217,9 +217,9 @@ def precession_figure() -> tuple[Figure, PrecessionRates]:
     rates, Moon's 18.6 years), so that its rate ``p = −⟨ḣ⟩`` is the mean rate of the table.
     """
     from andoyer import plot
+    from andoyer.integrate.propagation import propagate
     from andoyer.perturbations.solar_system import JULIAN_YEAR, mean_perturbers
     from andoyer.planetary.precession import default_step, precession_problem, precession_rates
-    from andoyer.propagation import propagate
 
     rates = precession_rates("earth", integrate=PRECESSION_YEARS)
     model, states = precession_problem("earth")

@@ -37,14 +37,54 @@ def register(commands: argparse._SubParsersAction) -> None:
     parser.add_argument("--chunk", type=int, metavar="K", help="samples per chunk (default ~2^18 pairs)")
     parser.add_argument("--workers", type=int, default=2, metavar="W", help="local cluster workers")
     parser.add_argument("--scheduler", metavar="ADDR", help="Dask scheduler address, e.g. tcp://host:8786")
-    parser.add_argument("--seed", type=int, default=0, metavar="S")
-    parser.add_argument("--output", choices=("state", "andoyer", "euler"), default="state")
-    parser.add_argument("--sampler", choices=("andoyer", "momentum"), default="andoyer")
-    parser.add_argument("--G", nargs=2, type=float, default=(1.0, 1.0), metavar=("LOW", "HIGH"))
-    parser.add_argument("--cos-J", nargs=2, type=float, default=(-1.0, 1.0), metavar=("LOW", "HIGH"))
-    parser.add_argument("--cos-I", nargs=2, type=float, default=(-1.0, 1.0), metavar=("LOW", "HIGH"))
-    parser.add_argument("--m-low", nargs=3, type=float, default=(-1.0, -1.0, -1.0), metavar="M")
-    parser.add_argument("--m-high", nargs=3, type=float, default=(1.0, 1.0, 1.0), metavar="M")
+    parser.add_argument("--seed", type=int, default=0, metavar="S", help="seed of the samples (default 0)")
+    parser.add_argument(
+        "--output",
+        choices=("state", "andoyer", "euler"),
+        default="state",
+        help="variables stored (default state)",
+    )
+    parser.add_argument(
+        "--sampler",
+        choices=("andoyer", "momentum"),
+        default="andoyer",
+        help="how states are drawn (see below)",
+    )
+    parser.add_argument(
+        "--G", nargs=2, type=float, default=(1.0, 1.0), metavar=("LOW", "HIGH"), help="range of G (andoyer)"
+    )
+    parser.add_argument(
+        "--cos-J",
+        nargs=2,
+        type=float,
+        default=(-1.0, 1.0),
+        metavar=("LOW", "HIGH"),
+        help="range of L/G (andoyer)",
+    )
+    parser.add_argument(
+        "--cos-I",
+        nargs=2,
+        type=float,
+        default=(-1.0, 1.0),
+        metavar=("LOW", "HIGH"),
+        help="range of H/G (andoyer)",
+    )
+    parser.add_argument(
+        "--m-low",
+        nargs=3,
+        type=float,
+        default=(-1.0, -1.0, -1.0),
+        metavar="M",
+        help="box corner of m_body (momentum)",
+    )
+    parser.add_argument(
+        "--m-high",
+        nargs=3,
+        type=float,
+        default=(1.0, 1.0, 1.0),
+        metavar="M",
+        help="other corner of m_body (momentum)",
+    )
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.set_defaults(run=run)
 

@@ -6,7 +6,7 @@ import argparse
 import json
 import math
 
-from andoyer.cli.numbers import finite_number
+from andoyer.cli.numbers import finite_number, physical
 from andoyer.cli.output import CliError, add_output_argument, atomic_output, format_rows
 
 EXAMPLES = """examples:
@@ -33,19 +33,30 @@ def register(commands: argparse._SubParsersAction) -> None:
         epilog=EXAMPLES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    parser.add_argument("body", type=str.lower, choices=("earth",))
-    parser.add_argument("--span", nargs=2, type=finite_number, metavar=("T0", "T1"), required=True)
+    parser.add_argument(
+        "body", type=str.lower, choices=("earth",), help="the Earth (the only body with a lunar theory)"
+    )
+    parser.add_argument(
+        "--span",
+        nargs=2,
+        type=finite_number,
+        metavar=("T0", "T1"),
+        required=True,
+        help="first and last output time, Julian years from J2000 (within -100000 to 39747)",
+    )
     parser.add_argument("--step", type=finite_number, metavar="DT", required=True, help="years")
     parser.add_argument(
         "--dynamical-ellipticity",
-        type=finite_number,
+        type=physical("dynamical_ellipticity"),
         metavar="H",
         default=H_MHB2000,
         help=f"H = (C - (A+B)/2)/C (default {H_MHB2000}, MHB2000)",
     )
-    parser.add_argument("--axis", choices=AXES, default="figure")
+    parser.add_argument(
+        "--axis", choices=AXES, default="figure", help="the axis whose nutation is given (default figure)"
+    )
     parser.add_argument("--terms", action="store_true", help="print the fitted principal terms")
-    parser.add_argument("--format", choices=("json", "csv", "table"), default="table")
+    parser.add_argument("--format", choices=("json", "csv", "table"), default="table", help="default table")
     add_output_argument(parser)
     add_output_argument(parser, "--plot", "also draw dpsi and deps (PNG, SVG or PDF)")
     parser.set_defaults(run=run)
@@ -80,11 +91,15 @@ def _plot_format(path: str) -> str:
 
 def run(args: argparse.Namespace) -> int:
     """Compute the nutation and write it (and the terms, and the picture)."""
+    from andoyer.perturbations.lunar_theory import check_span
     from andoyer.planetary import nutation
     from andoyer.planetary.precession import check_dynamical_ellipticity
 
     H = check_dynamical_ellipticity(args.dynamical_ellipticity)
     t0, t1 = args.span
+    check_span(t0, t1, "--span T0 T1")
+    end = max(t1, t0 + nutation.minimum_span() * 1.001)  # the integration covers one 18.6-year node
+    check_span(t0, end, f"--span T0 T1 and the integration's {end - t0:.4g} years from T0")
     t = _times(t0, t1, args.step)
     fmt_plot = None if args.plot is None else _plot_format(args.plot)
     table = nutation.terms_table((t0, t1), H, args.axis) if args.terms else None

@@ -7,7 +7,7 @@ import json
 
 import numpy as np
 
-from andoyer.cli.numbers import finite_number
+from andoyer.cli.numbers import finite_number, physical
 from andoyer.cli.output import CliError, add_output_argument, atomic_output, format_rows
 
 EXAMPLES = """examples:
@@ -18,9 +18,12 @@ T0, T1 and DT are Julian years from J2000 (negative = past); output at T0, T0+DT
 --precession-rate P is the rate of the luni-solar precession psi_A at J2000 in arcsec per Julian
 year (default: Earth 50.38481507, IAU 2006; Mars 7.597); --dynamical-ellipticity H sets
 (C - (A+B)/2)/C instead. --tidal-dissipation TD scales the modern tidal rates of the Earth-Moon
-system (Zeebe & Lourens 2022; 0 = none). Orbit sources: vondrak (the Earth's ecliptic of
-Vondrak et al. 2011, +-200 kyr, no eccentricity), nbody, secular (the long secular model, +-1 Gyr),
-laplace-lagrange (the linear theory), or a table file PATH.
+system (Zeebe & Lourens 2022; 0 = none). Ranges (andoyer.planetary.parameters): 0 < H < 1/2
+(A + B >= C), P > 0 up to the rate of H = 1/2, 0 <= TD <= 1.2. DT must be below half the period
+of the fastest angle printed (the precession, or the perihelion from the equinox), else the
+table would alias it: such a request is refused. Orbit sources: vondrak (the Earth's ecliptic of
+Vondrak et al. 2011, +-200 kyr, no eccentricity), nbody (+-50 Myr), secular (the long secular model,
++-1 Gyr), laplace-lagrange (the linear theory), or a table file PATH.
 JSON keys: t (years), obliquity (deg), precession (deg, p_A accumulated since J2000), axis (N x 3),
 orbit_normal (N x 3, J2000 ecliptic frame), eccentricity and climatic_precession (e sin varpi,
 varpi heliocentric from the moving equinox; null without eccentricity), precession_rate (arcsec/yr).
@@ -38,23 +41,51 @@ def register(commands: argparse._SubParsersAction) -> None:
         epilog=EXAMPLES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    parser.add_argument("body", type=str.lower, choices=tuple(DEFAULT_ORBIT), metavar="BODY")
+    parser.add_argument(
+        "body", type=str.lower, choices=tuple(DEFAULT_ORBIT), metavar="BODY", help="earth or mars"
+    )
     parser.add_argument(
         "--orbit",
         metavar="SOURCE",
         help="vondrak|nbody|secular|laplace-lagrange|PATH (default: earth vondrak, mars nbody)",
     )
-    parser.add_argument("--span", nargs=2, type=finite_number, metavar=("T0", "T1"), default=DEFAULT_SPAN)
     parser.add_argument(
-        "--step", type=finite_number, metavar="DT", default=DEFAULT_STEP, help="output step, years"
+        "--span",
+        nargs=2,
+        type=finite_number,
+        metavar=("T0", "T1"),
+        default=DEFAULT_SPAN,
+        help="first and last output time, Julian years from J2000, within the orbit's span "
+        "(default -200000 0)",
+    )
+    parser.add_argument(
+        "--step",
+        type=finite_number,
+        metavar="DT",
+        default=DEFAULT_STEP,
+        help="output step, years (default 1000); below half the period of the fastest angle printed",
     )
     strength = parser.add_mutually_exclusive_group()
     strength.add_argument(
-        "--precession-rate", type=finite_number, metavar="P", help="psi_A rate at J2000, arcsec/yr"
+        "--precession-rate",
+        type=physical("precession_rate"),
+        metavar="P",
+        help="psi_A rate at J2000, arcsec/yr (default: the body's; P > 0, at most that of H = 1/2)",
     )
-    strength.add_argument("--dynamical-ellipticity", type=finite_number, metavar="H")
-    parser.add_argument("--tidal-dissipation", type=finite_number, metavar="TD", default=0.0)
-    parser.add_argument("--format", choices=("json", "csv", "table"), default="table")
+    strength.add_argument(
+        "--dynamical-ellipticity",
+        type=physical("dynamical_ellipticity"),
+        metavar="H",
+        help="H = (C - (A+B)/2)/C instead of a precession rate (0 < H < 1/2)",
+    )
+    parser.add_argument(
+        "--tidal-dissipation",
+        type=physical("tidal_dissipation"),
+        metavar="TD",
+        default=0.0,
+        help="modern tidal rates times TD, Earth only (default 0: none; 0 <= TD <= 1.2)",
+    )
+    parser.add_argument("--format", choices=("json", "csv", "table"), default="table", help="default table")
     add_output_argument(parser)
     add_output_argument(parser, "--plot", "PNG of obliquity and climatic precession")
     parser.set_defaults(run=run)
@@ -110,6 +141,43 @@ def _table(h, fmt: str) -> str:
     return format_rows(header, rows, fmt)
 
 
+def _check_span(orbit, source: str, body: str, t0: float, t1: float) -> None:  # type: ignore[no-untyped-def]
+    """Refuse a span outside the orbit's, naming the named sources that reach it."""
+    from andoyer.planetary.orbits import SOURCES, source_span
+
+    lo, hi = orbit.span
+    if lo <= t0 and t1 <= hi:
+        return
+    others = []
+    for name in SOURCES:
+        try:
+            a, b = source_span(name, body)
+        except ValueError:  # vondrak for Mars
+            continue
+        if name != source and a <= t0 and t1 <= b:
+            others.append(f"--orbit {name}")
+    hint = f"; {' or '.join(others)} reach{'es' if len(others) == 1 else ''} it" if others else ""
+    msg = (
+        f"expected --span T0 T1 within the {orbit.name} orbit's span {lo:g} to {hi:g} years from J2000, "
+        f"got {t0:g} {t1:g}{hint}"
+    )
+    raise CliError(msg)
+
+
+def _check_sampling(h, step: float) -> None:  # type: ignore[no-untyped-def]
+    """Refuse outputs that undersample the precession: an angle turns half a turn or more between two."""
+    if h.largest_turn < np.pi:
+        return
+    turns = h.largest_turn / (2 * np.pi)
+    most = step * np.pi / h.largest_turn
+    msg = (
+        f"expected --step DT below half the period of the fastest angle printed (the precession p_A "
+        f"or the perihelion from the equinox; the table and the plot would alias it), got DT = {step:g} "
+        f"years, over which it turns by up to {turns:.3g} turns: take DT below {most:.4g} years"
+    )
+    raise CliError(msg)
+
+
 def run(args: argparse.Namespace) -> int:
     """Integrate the axis and write the table (and the plot)."""
     from andoyer.planetary.spin_axis import output_times, spin_axis_history
@@ -124,7 +192,9 @@ def run(args: argparse.Namespace) -> int:
     if args.plot is not None and not args.plot.lower().endswith(".png"):
         msg = f"expected --plot PATH ending in .png, got {args.plot!r}"
         raise CliError(msg)
-    orbit = orbit_source(args.orbit or DEFAULT_ORBIT[args.body], args.body)
+    source = args.orbit or DEFAULT_ORBIT[args.body]
+    orbit = orbit_source(source, args.body)
+    _check_span(orbit, source, args.body, t0, t1)
     times = output_times(t0, t1, args.step)
     h = spin_axis_history(
         orbit,
@@ -134,6 +204,7 @@ def run(args: argparse.Namespace) -> int:
         dynamical_ellipticity=args.dynamical_ellipticity,
         tidal_dissipation=args.tidal_dissipation,
     )
+    _check_sampling(h, args.step)
     text = json.dumps(_fields(h)) + "\n" if args.format == "json" else _table(h, args.format)
     figure = None
     if args.plot is not None:

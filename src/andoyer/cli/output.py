@@ -5,10 +5,12 @@ from __future__ import annotations
 import argparse
 import contextlib
 import csv
+import errno
 import io
 import os
 import stat
 import sys
+import tempfile
 from collections.abc import Iterator, Sequence
 from pathlib import Path
 from typing import IO
@@ -90,6 +92,30 @@ def _resolve(path: str | os.PathLike[str]) -> tuple[Path, int | None]:
     return real, mode
 
 
+def _refusal(exc: OSError, path: str | os.PathLike[str], folder: Path) -> str:
+    """What a file system's refusal to create a file in ``folder`` means, as a message's end."""
+    where = repr(str(folder))
+    if exc.errno in (errno.EACCES, errno.EPERM):
+        why = f"{exc.strerror}: no permission to write in the folder {where}"
+    elif exc.errno == errno.EROFS:
+        why = f"{exc.strerror}: the folder {where} cannot be written"
+    elif exc.errno in (errno.ENOENT, errno.EOPNOTSUPP, errno.EINVAL) and folder.is_dir():
+        why = f"the folder {where} takes no new files: a special file system, like /proc or /sys"
+    else:
+        why = exc.strerror or str(exc)
+    return f"expected a writable place for the output, got {os.fspath(path)!r} ({why})"
+
+
+def _probe(real: Path, path: str | os.PathLike[str]) -> None:
+    """Create and remove a file beside ``real`` as the atomic write will; a refusal is a :class:`CliError`."""
+    try:
+        fd, name = tempfile.mkstemp(prefix=f".{real.name}.", suffix=".probe", dir=real.parent)
+    except OSError as exc:
+        raise CliError(_refusal(exc, path, real.parent)) from exc
+    os.close(fd)
+    os.unlink(name)
+
+
 def output_target(path: str | os.PathLike[str]) -> Path:
     r"""The regular file an output path names, symbolic links followed; :class:`CliError` otherwise.
 
@@ -123,6 +149,7 @@ def output_target(path: str | os.PathLike[str]) -> Path:
         # A rename would replace it all the same: respect the protection as open() would.
         msg = f"expected a writable file for the output, got the read-only file {os.fspath(path)!r}"
         raise CliError(msg)
+    _probe(real, path)
     return real
 
 
@@ -164,12 +191,28 @@ def check_outputs(args: argparse.Namespace) -> None:
     """Refuse, before any work, an output path of :func:`add_output_argument` that cannot be written.
 
     ``-`` (standard output) and absent options pass; others must satisfy :func:`output_target`
-    (checked again when the file is written).
+    (checked again when the file is written). Two outputs may not name the same file (through
+    links, relative paths or hard links), nor both be ``-``: one would overwrite the other.
     """
+    seen: dict[object, str] = {}
     for dest in getattr(args, "output_paths", ()):
         path = getattr(args, dest, None)
-        if path is not None and path != "-":
-            output_target(path)
+        if path is None:
+            continue
+        flag = "--" + dest.replace("_", "-")
+        same: list[object] = ["-"] if path == "-" else []
+        if path != "-":
+            real = output_target(path)
+            same.append(real)
+            with contextlib.suppress(OSError):  # an existing file: a hard link is the same file too
+                info = os.stat(real)
+                same.append((info.st_dev, info.st_ino))
+        for key in same:
+            if key in seen:
+                where = "standard output" if key == "-" else repr(os.fspath(path))
+                msg = f"expected different files for {seen[key]} and {flag}, got {where} for both"
+                raise CliError(msg)
+        seen.update(dict.fromkeys(same, flag))
 
 
 @contextlib.contextmanager
@@ -213,14 +256,14 @@ def atomic_output(path: str | os.PathLike[str] | None, binary: bool = False) -> 
     except OSError as exc:
         if isinstance(exc, BrokenPipeError):
             raise
-        msg = f"expected a writable place for the output, got {os.fspath(path)!r} ({exc.strerror})"
-        raise CliError(msg) from exc
+        raise CliError(_refusal(exc, path, target.parent)) from exc
 
 
 def read_csv_columns(path: str, columns: Sequence[str]) -> dict[str, np.ndarray]:
     """Read the named float columns of a CSV file with a header row."""
     try:
-        with open(path, newline="") as stream:
+        # utf-8-sig: a spreadsheet's byte-order mark would otherwise stick to the first column's name
+        with open(path, newline="", encoding="utf-8-sig") as stream:
             reader = csv.DictReader(stream)
             missing = [c for c in columns if c not in (reader.fieldnames or [])]
             if missing:
@@ -230,6 +273,9 @@ def read_csv_columns(path: str, columns: Sequence[str]) -> dict[str, np.ndarray]
     except OSError as exc:
         msg = f"expected a readable CSV file, got {path!r} ({exc.strerror})"
         raise CliError(msg) from exc
+    except UnicodeDecodeError as exc:
+        msg = f"expected a UTF-8 CSV file, got {path!r} (byte 0x{exc.object[exc.start]:02x} is not UTF-8)"
+        raise CliError(msg) from None
     if not rows:
         msg = f"expected at least one data row, got an empty table in {path!r}"
         raise CliError(msg)

@@ -13,7 +13,7 @@ from andoyer.body import RigidBody
 from andoyer.cli.cassini_cmd import add_cassini_arguments, cassini_body_from_args
 from andoyer.cli.chart_table import add_body_arguments, body_from_args
 from andoyer.cli.output import CliError, add_output_argument, atomic_output
-from andoyer.free import FreeRotation
+from andoyer.free_rotation import FreeRotation
 from andoyer.state import State
 
 EXAMPLES = """examples:
@@ -29,6 +29,8 @@ FORMATS = ("png", "svg")
 DEFAULT_STATE = (0.5, 0.0, 0.0, 0.9, 1.0, 0.9)
 #: Largest side of a PNG in pixels (matplotlib's Agg renderer refuses 2^16 and more).
 MAX_PIXELS = 2**16
+#: Smallest side of a PNG in pixels: Agg writes no image below 1.5 (rounded to one), 2 keeps clear.
+MIN_PIXELS = 2
 
 
 def register(commands: argparse._SubParsersAction) -> None:
@@ -67,14 +69,24 @@ def register(commands: argparse._SubParsersAction) -> None:
             sub.add_argument("--ratio-min", type=float, default=0.88, help="lower edge in N/M (default 0.88)")
         if kind in ("polhode", "precession"):
             sub.add_argument(
-                "--values", nargs=6, type=float, metavar=("l", "g", "h", "L", "G", "H"), default=DEFAULT_STATE
+                "--values",
+                nargs=6,
+                type=float,
+                metavar=("l", "g", "h", "L", "G", "H"),
+                default=DEFAULT_STATE,
+                help="the state in Andoyer variables (default 0.5 0 0 0.9 1 0.9)",
             )
             sub.add_argument(
                 "--duration", type=float, help="time span (default: one period of m, five for precession)"
             )
         if kind == "precession":
             sub.add_argument("--steps", type=int, default=2001, help="number of output times (default 2001)")
-            sub.add_argument("--axis", choices=("figure", "momentum"), default="figure")
+            sub.add_argument(
+                "--axis",
+                choices=("figure", "momentum"),
+                default="figure",
+                help="the axis drawn (default figure)",
+            )
             sub.add_argument("--degrees", action="store_true", help="angles in degrees")
         sub.set_defaults(run=run)
     _register_cassini(kinds)
@@ -177,10 +189,14 @@ def run(args: argparse.Namespace) -> int:
         msg = f"expected a finite --dpi > 0, got {args.dpi!r}"
         raise CliError(msg)
     figure = _figure(args)
-    pixels = max(figure.get_size_inches()) * args.dpi
-    if fmt == "png" and pixels >= MAX_PIXELS:
-        limit = MAX_PIXELS / max(figure.get_size_inches())
+    sides = figure.get_size_inches()
+    if fmt == "png" and max(sides) * args.dpi >= MAX_PIXELS:
+        limit = MAX_PIXELS / max(sides)
         msg = f"expected --dpi below {limit:.0f} for this picture, got {args.dpi!r}"
+        raise CliError(msg)
+    if fmt == "png" and min(sides) * args.dpi < MIN_PIXELS:
+        limit = MIN_PIXELS / min(sides)
+        msg = f"expected --dpi of at least {limit:.3g} (sides of {MIN_PIXELS} px), got {args.dpi!r}"
         raise CliError(msg)
     with atomic_output(path, binary=True) as stream:
         figure.savefig(stream, format=fmt, dpi=args.dpi)

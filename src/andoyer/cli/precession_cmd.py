@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import json
 
-from andoyer.cli.numbers import positive_number
+from andoyer.cli.numbers import physical, positive_number
 from andoyer.cli.output import CliError, add_output_argument, atomic_output
 
 EXAMPLES = """examples:
@@ -30,7 +30,7 @@ def register(commands: argparse._SubParsersAction) -> None:
         epilog=EXAMPLES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    parser.add_argument("body", type=str.lower, choices=PLANETS)
+    parser.add_argument("body", type=str.lower, choices=PLANETS, help="the planet")
     parser.add_argument(
         "--integrate", type=positive_number, metavar="YEARS", help="also integrate the full torque this long"
     )
@@ -43,11 +43,11 @@ def register(commands: argparse._SubParsersAction) -> None:
     parser.add_argument("--order", type=int, choices=(2, 4, 6), default=2, help="splitting order")
     parser.add_argument(
         "--dynamical-ellipticity",
-        type=float,
+        type=physical("dynamical_ellipticity"),
         metavar="H",
         help="H = (C - (A+B)/2)/C instead of the named body's (0 < H < 1/2)",
     )
-    parser.add_argument("--format", choices=("text", "json"), default="text")
+    parser.add_argument("--format", choices=("text", "json"), default="text", help="default text")
     add_output_argument(parser)
     parser.set_defaults(run=run)
 

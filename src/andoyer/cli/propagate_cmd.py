@@ -17,8 +17,8 @@ from andoyer.cli.chart_table import (
 )
 from andoyer.cli.named_models import MODELS, add_model_arguments, model_from_args
 from andoyer.cli.output import CliError, add_output_argument, atomic_output, format_rows
-from andoyer.free import FreeRotation
-from andoyer.propagation import propagate
+from andoyer.free_rotation import FreeRotation
+from andoyer.integrate.propagation import propagate
 
 EXAMPLES = """examples:
   andoyer propagate --body eros --from andoyer --values 0.1 0.2 0.3 0.99 1.0 0.5 --times 0 10 100
@@ -52,13 +52,19 @@ def register(commands: argparse._SubParsersAction) -> None:
     parser.add_argument("--method", choices=METHODS, help="default: exact for --model free, else reference")
     parser.add_argument("--step", type=float, metavar="H", help="splitting step (time units)")
     parser.add_argument("--order", type=int, choices=(2, 4, 6), help="splitting order (default 4)")
-    parser.add_argument("--from", dest="source", choices=tuple(CHARTS), default="andoyer")
+    parser.add_argument(
+        "--from",
+        dest="source",
+        choices=tuple(CHARTS),
+        default="andoyer",
+        help="chart of the input (default andoyer)",
+    )
     parser.add_argument("--to", dest="target", choices=tuple(CHARTS), default=None, help="default: --from")
     given = parser.add_mutually_exclusive_group(required=True)
     given.add_argument("--values", nargs="+", type=float, metavar="X", help="one state, in column order")
     given.add_argument("--input", metavar="CSV", help="CSV file with a header naming the columns")
     add_time_arguments(parser)
-    parser.add_argument("--format", choices=("table", "csv"), default="table")
+    parser.add_argument("--format", choices=("table", "csv"), default="table", help="default table")
     add_output_argument(parser)
     parser.set_defaults(run=run)
 

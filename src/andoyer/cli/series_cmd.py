@@ -42,7 +42,7 @@ def register(commands: argparse._SubParsersAction) -> None:
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     sam.add_argument("--order", type=_order, required=True, metavar="N", help="highest index i (>= 1)")
-    sam.add_argument("--format", choices=FORMATS, default="md")
+    sam.add_argument("--format", choices=FORMATS, default="md", help="default md")
     add_output_argument(sam)
     sam.set_defaults(run=run)
 

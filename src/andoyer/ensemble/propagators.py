@@ -16,7 +16,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer.body import RigidBody
-from andoyer.free import FreeMotion, FreeRotation
+from andoyer.free import FreeMotion
+from andoyer.free_rotation import FreeRotation
 from andoyer.state import State
 
 __all__ = ["FreePropagator", "Propagator"]

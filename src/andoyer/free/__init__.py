@@ -6,26 +6,23 @@ broadcast together.  Every regime is covered: short- and long-axis modes of a tr
 body (Jacobi elliptic functions via theta series), the separatrix, axisymmetric bodies,
 spheres, steady spins and rest.  See :mod:`andoyer.free.motion`.
 
-:class:`FreeRotation` works on :class:`~andoyer.State` arrays, which sit above the
-array kernels (the state's time-dependent charts use :class:`FreeMotion`), so it loads
-on first use: importing ``andoyer.free.motion`` does not import the state.
+This package knows nothing of :class:`~andoyer.State` (the state's time-dependent charts use
+:class:`FreeMotion`). :class:`~andoyer.FreeRotation`, which works on ``State`` arrays, is in
+:mod:`andoyer.free_rotation`, above both; ``andoyer.free.FreeRotation`` still gives it, with a
+DeprecationWarning, until the next release.
 """
 
 from __future__ import annotations
 
-import importlib
-from typing import TYPE_CHECKING, Any
+import warnings
+from typing import Any
 
 from andoyer.free.motion import FreeMotion, FreePeriods, attitude, momentum, periods, propagate
 from andoyer.regime import Regime, classify
 
-if TYPE_CHECKING:
-    from andoyer.free.rotation import FreeRotation
-
 __all__ = [
     "FreeMotion",
     "FreePeriods",
-    "FreeRotation",
     "Regime",
     "attitude",
     "classify",
@@ -37,6 +34,16 @@ __all__ = [
 
 def __getattr__(name: str) -> Any:
     if name == "FreeRotation":
-        return importlib.import_module("andoyer.free.rotation").FreeRotation
+        # The one upward import of this package, for one release (an exemption listed in
+        # tests/core/test_import_graph.py): FreeRotation moved above the state package.
+        warnings.warn(
+            "andoyer.free.FreeRotation moved to andoyer.free_rotation (andoyer.FreeRotation); "
+            "the old name works until the next release",
+            DeprecationWarning,
+            stacklevel=2,
+        )
+        from andoyer.free_rotation import FreeRotation
+
+        return FreeRotation
     msg = f"module 'andoyer.free' has no attribute {name!r}"
     raise AttributeError(msg)

@@ -24,7 +24,7 @@ that has just changed, with Carlson's integrals instead of theta series):
 ``"scalar"``
     one state, one step, no set-up: :mod:`andoyer.free.lean` (``_step_one``, compiled by numba
     when it is available, plain Python otherwise), behind :func:`andoyer.free.lean.free_step`
-    and the compiled splitting loop (:mod:`andoyer.integrate.split_kernel`).  Always available.
+    and the compiled splitting loop (:mod:`andoyer.integrate.splitting.kernel`).  Always available.
 
 :class:`~andoyer.free.FreeMotion` offers the first two (:data:`MOTION_BACKENDS`, its keyword
 ``backend``; by default :func:`default`, the fastest available).  Both treat the separatrix

@@ -19,7 +19,7 @@ from typing import Any
 
 import numpy as np
 
-from andoyer.charts.singular import SingularChartWarning  # one warning class for every chart
+from andoyer.state.singular import SingularChartWarning  # one warning class for every chart
 
 UNIT_TOL = 1e-9
 MOMENTUM_TOL = 8 * np.finfo(float).eps

@@ -65,7 +65,7 @@ class LeafRates(NamedTuple):
     """Time derivatives ``(dl/dt, dg/dt, dL/dt, dG/dt)`` on an e(3) leaf (arrays of equal shape).
 
     Named ``AndoyerRates`` before 0.1 (a second class of that name, with the six rates of the
-    full Andoyer chart, is :class:`andoyer.equations.AndoyerRates`); the old name still works,
+    full Andoyer chart, is :class:`andoyer.state.andoyer.AndoyerRates`); the old name still works,
     with a :class:`DeprecationWarning`.
     """
 

@@ -7,6 +7,7 @@ See :mod:`andoyer.perturbations.base` for the equations of motion they enter.
 """
 
 from andoyer.perturbations.andoyer_form import andoyer_perturbed_equations
+from andoyer.perturbations.averaged_gravity import SecularGravityGradient
 from andoyer.perturbations.base import Perturbation, SumOfPerturbations
 from andoyer.perturbations.equations import perturbed_rates
 from andoyer.perturbations.frame import PrecessingFrame
@@ -20,7 +21,6 @@ from andoyer.perturbations.heavy_top import (
 )
 from andoyer.perturbations.model import Model
 from andoyer.perturbations.orbits import CircularOrbit, KeplerOrbit, Orbit, TabulatedOrbit, solve_kepler
-from andoyer.perturbations.secular import SecularGravityGradient
 from andoyer.perturbations.user import LinearDamping, UserPotential, UserTorque
 
 __all__ = [

@@ -45,7 +45,7 @@ from andoyer.perturbations.expressions import HeyokaContext, HubRates, Quaternio
 
 if TYPE_CHECKING:
     from andoyer.body import RigidBody
-    from andoyer.perturbations.gravity import PointMass
+    from andoyer.perturbations.point_mass import PointMass
 
 __all__ = ["Perturbation", "SumOfPerturbations"]
 

@@ -5,7 +5,7 @@ r"""Equations of motion of a perturbed body on the hub ``(q, m)``.
    \dot{\mathbf m} = c \odot (m_2 m_3, m_3 m_1, m_1 m_2)
    + \mathbf m\times\partial\Delta H/\partial\mathbf m + \boldsymbol\tau,
 
-the free part written without cancellation (:func:`andoyer.equations.euler_poinsot`).
+the free part written without cancellation (:func:`andoyer.state.hub.euler_poinsot`).
 """
 
 from __future__ import annotations

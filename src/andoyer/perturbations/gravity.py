@@ -23,6 +23,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from andoyer import _quaternion as quat
 from andoyer.body import RigidBody
+from andoyer.perturbations.averaged_gravity import SecularGravityGradient
 from andoyer.perturbations.base import Perturbation
 from andoyer.perturbations.expressions import (
     HeyokaContext,
@@ -35,7 +36,6 @@ from andoyer.perturbations.expressions import (
 )
 from andoyer.perturbations.orbits import CircularOrbit, KeplerOrbit
 from andoyer.perturbations.point_mass import PointMass
-from andoyer.perturbations.secular import SecularGravityGradient
 
 __all__ = ["GravityGradient", "PointMass"]
 
@@ -159,7 +159,7 @@ class GravityGradient(Perturbation):
         return tuple((p, self.body.moments) for p in self.perturbers)
 
     def secular_average(self) -> Any | None:
-        """:class:`~andoyer.perturbations.secular.SecularGravityGradient` (Kepler orbits), else ``None``."""
+        """:class:`~andoyer.perturbations.SecularGravityGradient` (Kepler orbits), else ``None``."""
         if not all(isinstance(p.orbit, KeplerOrbit) for p in self.perturbers):
             return None
         return SecularGravityGradient(self.body, self.perturbers)

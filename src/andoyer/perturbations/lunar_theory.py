@@ -52,6 +52,8 @@ from andoyer.perturbations.solar_system import AU, GM_MOON, GM_SUN, JULIAN_YEAR
 
 __all__ = [
     "GENERAL_PRECESSION",
+    "LUNAR_THEORY_SPAN",
+    "check_span",
     "delaunay_arguments",
     "delaunay_rates",
     "ecliptic_vector",
@@ -144,16 +146,48 @@ _R0 = 385000.56e3  # Meeus (1998) ch. 47: the constant of the distance series, m
 #: The Delaunay polynomials (Simon et al. 1994) hold over a few millennia; far outside, their
 #: powers of T only lose meaning (and overflow near 1e77 years).
 DELAUNAY_SPAN_YEARS = 1e5
+#: The Sun's eccentricity ``e = e₀ + e₁ T`` (T in Julian centuries; Meeus 1998, eq. 25.4, from VSOP87).
+SUN_ECCENTRICITY = (0.016708634, -0.000042037)
+#: Span of validity of the lunar and solar arguments, Julian years from J2000: the Delaunay
+#: polynomials' ±100 000 years, cut where the Sun's eccentricity polynomial turns negative
+#: (``T = −e₀/e₁``, 39 747 years after J2000).
+LUNAR_THEORY_SPAN = (
+    -DELAUNAY_SPAN_YEARS,
+    min(DELAUNAY_SPAN_YEARS, -100.0 * SUN_ECCENTRICITY[0] / SUN_ECCENTRICITY[1]),
+)
+
+
+def check_span(t0: float, t1: float, name: str = "times") -> None:
+    """Refuse a span ``[t0, t1]`` (Julian years from J2000) outside :data:`LUNAR_THEORY_SPAN`.
+
+    Parameters
+    ----------
+    t0, t1 : float
+    name : str
+        What the span is, for the message (a command line names its option).
+
+    Examples
+    --------
+    >>> check_span(0.0, 100.0)
+    >>> check_span(0.0, 250000.0)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    ValueError: expected times within the lunar theory's span of validity -100000 to ..., got 0 to 250000
+    """
+    lo, hi = LUNAR_THEORY_SPAN
+    if not (lo <= t0 and t1 <= hi):  # NaN fails too
+        msg = (
+            f"expected {name} within the lunar theory's span of validity {lo:.0f} to {hi:.0f} years from "
+            f"J2000 (the Delaunay polynomials; after {hi:.0f} the Sun's eccentricity polynomial turns "
+            f"negative), got {t0:g} to {t1:g}"
+        )
+        raise ValueError(msg)
 
 
 def _centuries(t: ArrayLike) -> Array:
     years = as_finite(t, "t")
-    if np.any(np.abs(years) > DELAUNAY_SPAN_YEARS):
-        msg = (
-            f"expected times within ±{DELAUNAY_SPAN_YEARS:.0f} years of J2000 for the lunar arguments, "
-            f"got {float(np.max(np.abs(years))):.6g}"
-        )
-        raise ValueError(msg)
+    if years.size:
+        check_span(float(np.min(years)), float(np.max(years)))
     return years / 100.0
 
 
@@ -280,7 +314,7 @@ def sun_ecliptic(t: ArrayLike, args: ArrayLike | None = None) -> tuple[Array, Ar
     """
     T = _centuries(t)
     a = delaunay_arguments(t) if args is None else np.asarray(args, dtype=float)
-    e = 0.016708634 - 0.000042037 * T
+    e = SUN_ECCENTRICITY[0] + SUN_ECCENTRICITY[1] * T
     M = a[..., 1]
     E = solve_kepler(M, e)
     nu = 2 * np.arctan2(np.sqrt(1 + e) * np.sin(E / 2), np.sqrt(1 - e) * np.cos(E / 2))

@@ -29,10 +29,9 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer._validation import as_vectors
-from andoyer.charts.euler import Euler
-from andoyer.equations import EulerRates
 from andoyer.perturbations.model import Model
 from andoyer.state import State
+from andoyer.state.euler import Euler, EulerRates
 
 __all__ = ["convective_terms", "euler_rates_to_omega", "osculating_state"]
 
@@ -120,7 +119,7 @@ def euler_rates_to_omega(euler: Euler, rates: ArrayLike) -> Array:
 
     Examples
     --------
-    >>> from andoyer.charts import Euler
+    >>> from andoyer.state import Euler
     >>> e = Euler(0.0, 0.5, 0.0, 0.0, 0.0, 0.0)
     >>> euler_rates_to_omega(e, [0.0, 0.0, 2.0]).tolist()
     [0.0, 0.0, 2.0]

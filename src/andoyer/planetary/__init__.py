@@ -10,7 +10,11 @@ disturbing terms of :mod:`andoyer.perturbations` and the propagators of
 * :mod:`andoyer.planetary.spin_axis` -- the spin axis along a moving orbit: obliquity,
   general and climatic precession, insolation;
 * :mod:`andoyer.planetary.nutation` -- the rigid-Earth luni-solar nutation;
-* :mod:`andoyer.planetary.cassini` -- Cassini states (Colombo's top).
+* :mod:`andoyer.planetary.cassini` -- Cassini states (Colombo's top);
+* :mod:`andoyer.planetary.parameters` -- the range of every physical parameter, checked alike by
+  the API and the command line;
+* :mod:`andoyer.planetary.tides` -- the Earth–Moon tidal evolution (lunar distance, day length,
+  precession constant, obliquity) back to the Archean.
 
 The subpackages load when first used. Their old places (``andoyer.orbits``, ``andoyer.cassini``,
 ...) keep working for one release, with a :class:`DeprecationWarning`.
@@ -27,7 +31,7 @@ from __future__ import annotations
 import importlib
 from typing import Any
 
-__all__ = ["cassini", "nutation", "orbits", "precession", "spin_axis"]
+__all__ = ["cassini", "nutation", "orbits", "parameters", "precession", "spin_axis", "tides"]
 
 
 def __getattr__(name: str) -> Any:

@@ -16,7 +16,7 @@ Andoyer pair ``(h, H/G)`` of a frame with ``k`` as the reference axis: ``s·k = 
 and the last term is the precessing frame's ``ΔH = −μ·M`` (Gurfil et al. eq. 126) with
 ``μ = g K`` (:class:`~andoyer.perturbations.PrecessingFrame`). The sign convention is the
 project's: ``dM/dt = ∇H × M`` for reference-frame momenta
-(:class:`~andoyer.perturbations.secular.SecularGravityGradient`).
+(:class:`~andoyer.perturbations.averaged_gravity.SecularGravityGradient`).
 
 **The constants.** The orbit-averaged MacCullagh energy of a body rotating about ``C``,
 ``U = (3μ_p/2r³) r̂·I r̂``, with ``C − A = MR²(J2 + 2C22)``, ``B − A = 4MR²C22``,
@@ -86,6 +86,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq
 
 from andoyer._validation import as_finite
+from andoyer.planetary.parameters import check
 
 __all__ = [
     "BODIES",
@@ -212,11 +213,9 @@ class CassiniBody:
             if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value):
                 msg = f"expected a finite real {name}, got {value!r}"
                 raise ValueError(msg)
-        c, j2, c22 = self.moment_of_inertia, self.j2, self.c22
-        if not 0 < c <= 1:
-            msg = f"expected 0 < C/MR^2 <= 1, got {c!r}"
-            raise ValueError(msg)
-        if not (j2 > 0 and c22 >= 0 and j2 >= 2 * c22):
+        c = check("moment_of_inertia", self.moment_of_inertia)
+        j2, c22 = check("j2", self.j2), check("c22", self.c22)
+        if not j2 >= 2 * c22:
             msg = f"expected J2 > 0 and 0 <= C22 <= J2/2 (C the largest moment), got J2={j2!r}, C22={c22!r}"
             raise ValueError(msg)
         a = c - j2 - 2 * c22
@@ -225,12 +224,8 @@ class CassiniBody:
             msg = f"expected moments A > 0 with A + B >= C, got A={a!r}, B={b!r}, C={c!r} (units MR^2)"
             raise ValueError(msg)
         _positive_finite(self.mean_motion, "mean_motion")
-        if not 0 <= self.eccentricity < 1:
-            msg = f"expected 0 <= eccentricity < 1, got {self.eccentricity!r}"
-            raise ValueError(msg)
-        if not 0 < self.inclination < math.pi / 2:
-            msg = f"expected 0 < inclination < pi/2 (radians), got {self.inclination!r}"
-            raise ValueError(msg)
+        check("eccentricity", self.eccentricity)
+        check("laplace_inclination", self.inclination)
         if not self.node_rate < 0:
             msg = f"expected a regressing node (node_rate < 0), got {self.node_rate!r}"
             raise ValueError(msg)

@@ -16,7 +16,7 @@ reported in arcseconds per Julian year (the observed luni-solar precession
 of the Earth is 50.38″/yr; Mars' 7.58″/yr). Two computations:
 
 * **secular**: the averaged model (``method="secular"`` of
-  :func:`andoyer.propagation.propagate`) over ``secular_years``;
+  :func:`andoyer.integrate.propagation.propagate`) over ``secular_years``;
 * **integrated**: the full torque (``method="splitting"``) over ``integrate``
   years, resolving the orbital motion of the perturbers and the daily
   rotation exactly in the free flow.
@@ -72,11 +72,12 @@ from andoyer import bodies
 from andoyer._limits import check_size
 from andoyer.body import RigidBody
 from andoyer.integrate.output import OUTPUT_BYTES
+from andoyer.integrate.propagation import propagate
 from andoyer.integrate.splitting import splitting_coefficients
 from andoyer.perturbations.gravity import GravityGradient, PointMass
 from andoyer.perturbations.model import Model
 from andoyer.perturbations.solar_system import JULIAN_YEAR, OBLIQUITY, mean_perturbers
-from andoyer.propagation import propagate
+from andoyer.planetary.parameters import check
 from andoyer.state import State
 
 __all__ = [
@@ -113,19 +114,16 @@ def _planet(body: str) -> str:
 def check_dynamical_ellipticity(value: float) -> float:
     """``H = (C − (A+B)/2)/C`` as a float, or ``ValueError`` unless ``0 < H < 1/2``.
 
-    ``A + B ≥ C`` (the triangle inequality) bounds ``H`` by one half; ``H ≤ 0``
-    is a prolate or spherical body, which does not precess this way.
+    The range of :data:`andoyer.planetary.parameters.PARAMETERS` (``"dynamical_ellipticity"``):
+    ``A + B ≥ C`` (the triangle inequality) bounds ``H`` by one half; ``H ≤ 0`` is a prolate or
+    spherical body, which does not precess this way.
 
     Examples
     --------
     >>> check_dynamical_ellipticity(0.0032737949)
     0.0032737949
     """
-    H = float(value) if np.ndim(value) == 0 and isinstance(value, int | float | np.number) else np.nan
-    if not (np.isfinite(H) and 0 < H < 0.5):
-        msg = f"expected a dynamical ellipticity 0 < H < 1/2, got {value!r}"
-        raise ValueError(msg)
-    return H
+    return check("dynamical_ellipticity", value)
 
 
 def _with_ellipticity(planet: RigidBody, dynamical_ellipticity: float | None) -> RigidBody:

@@ -13,7 +13,8 @@ of Colombo's top, whose separatrix is exact).
 * :func:`precession` — precession, obliquity and nutation series of a propagation;
 * :func:`cassini_portrait`, :func:`cassini_geometry` — Colombo's top and its Cassini states.
 * :func:`obliquity_history` — obliquity and climatic precession of spin-axis histories;
-* :func:`nutation_plot` — the nutation in longitude and obliquity.
+* :func:`nutation_plot` — the nutation in longitude and obliquity;
+* :func:`tidal_history_plot` — the Earth–Moon tidal history against the geological constraints.
 
 Examples
 --------
@@ -40,6 +41,7 @@ from andoyer.plot.poinsot import (
 from andoyer.plot.precession import PrecessionSeries, precession, precession_data
 from andoyer.plot.sphere import MomentumSphere, momentum_sphere, momentum_sphere_data
 from andoyer.plot.spin_axis import obliquity_history
+from andoyer.plot.tides import tidal_history_plot
 
 __all__ = [
     "LARA_LEVELS",
@@ -71,4 +73,5 @@ __all__ = [
     "precession",
     "precession_data",
     "separatrix_contour",
+    "tidal_history_plot",
 ]

@@ -111,7 +111,7 @@ def phase_portrait_data(
     Examples
     --------
     >>> import numpy as np
-    >>> from andoyer.hamiltonians import andoyer_hamiltonian
+    >>> from andoyer.state.andoyer import andoyer_hamiltonian
     >>> body = RigidBody(1.0, 2.0, 3.0)
     >>> data = phase_portrait_data(body)
     >>> data.saddles.tolist()                           # (l, L) of the intermediate axis b2

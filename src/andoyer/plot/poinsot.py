@@ -23,7 +23,7 @@ from numpy.typing import NDArray
 
 from andoyer._validation import as_finite
 from andoyer.body import RigidBody
-from andoyer.free import FreeRotation
+from andoyer.free_rotation import FreeRotation
 from andoyer.plot.contours import separatrix_contour
 from andoyer.plot.projection import Orthographic, math_number, new_axes
 from andoyer.plot.sphere import DEFAULT_VIEW, SEPARATRIX_COLOR

@@ -3,20 +3,17 @@
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from flint.utils.flint_exceptions import DomainError
 
 from andoyer.series.bracket import derivative
-from andoyer.series.components import times_i
-
-if TYPE_CHECKING:
-    from andoyer.series.poisson import PoissonRing, PoissonSeries
+from andoyer.series.components import Ring, Series, times_i
 
 __all__ = ["average", "frequencies", "solve_homological"]
 
 
-def _angle_indices(ring: PoissonRing, angles: Sequence[str] | None) -> list[int]:
+def _angle_indices(ring: Ring, angles: Sequence[str] | None) -> list[int]:
     if angles is None:
         angles = ring.angles
     if isinstance(angles, str) or not set(angles) <= set(ring.angles):
@@ -25,7 +22,7 @@ def _angle_indices(ring: PoissonRing, angles: Sequence[str] | None) -> list[int]
     return [ring._index[a] for a in angles]
 
 
-def _split(f: PoissonSeries, idx: list[int]) -> dict[tuple[int, ...], dict[int, dict]]:
+def _split(f: Series, idx: list[int]) -> dict[tuple[int, ...], dict[int, dict]]:
     """Group the exponential terms by their harmonic in the angles ``idx``."""
     shift = f._shift
     groups: dict[tuple[int, ...], dict[int, dict]] = {}
@@ -36,12 +33,12 @@ def _split(f: PoissonSeries, idx: list[int]) -> dict[tuple[int, ...], dict[int, 
     return groups
 
 
-def _from_groups(f: PoissonSeries, by_mask: dict[int, dict]) -> PoissonSeries:
+def _from_groups(f: Series, by_mask: dict[int, dict]) -> Series:
     ctx = f.ring._ctx
     return f._new(f._shift, {m: ctx.from_dict(d) for m, d in by_mask.items()})
 
 
-def average(f: PoissonSeries, angles: Sequence[str] | None = None) -> PoissonSeries:
+def average(f: Series, angles: Sequence[str] | None = None) -> Series:
     """Average ``⟨f⟩ = (2π)^(−n) ∮ f dθ`` over the given angles.
 
     Parameters
@@ -70,7 +67,7 @@ def average(f: PoissonSeries, angles: Sequence[str] | None = None) -> PoissonSer
     return _from_groups(f, part) if part else f.ring.zero
 
 
-def frequencies(H0: PoissonSeries) -> dict[str, PoissonSeries]:
+def frequencies(H0: Series) -> dict[str, Series]:
     """Frequencies ``ω_j = ∂H0/∂p_j`` of the angles, for ``H0`` depending on momenta only.
 
     Parameters
@@ -105,7 +102,7 @@ def frequencies(H0: PoissonSeries) -> dict[str, PoissonSeries]:
     return out
 
 
-def _divide(g: PoissonSeries, d: PoissonSeries, k: Any) -> PoissonSeries:
+def _divide(g: Series, d: Series, k: Any) -> Series:
     if d.is_zero():
         msg = f"expected a nonresonant harmonic, got k·ω = 0 for k = {k}"
         raise ValueError(msg)
@@ -128,10 +125,10 @@ def _divide(g: PoissonSeries, d: PoissonSeries, k: Any) -> PoissonSeries:
 
 
 def solve_homological(
-    f: PoissonSeries,
-    H0: PoissonSeries | Mapping[str, PoissonSeries],
+    f: Series,
+    H0: Series | Mapping[str, Series],
     angles: Sequence[str] | None = None,
-) -> PoissonSeries:
+) -> Series:
     """Solve ``{H0, W} + f − ⟨f⟩ = 0`` for ``W`` with zero average.
 
     With ``H0`` depending on momenta only, ``{H0, W} = −Σ ω_j ∂W/∂θ_j`` with

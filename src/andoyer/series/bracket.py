@@ -3,17 +3,14 @@
 from __future__ import annotations
 
 from functools import lru_cache
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
-from andoyer.series.components import Comps, Shift, times_i
-
-if TYPE_CHECKING:
-    from andoyer.series.poisson import PoissonRing, PoissonSeries
+from andoyer.series.components import Comps, Ring, Series, Shift, times_i
 
 __all__ = ["derivative", "poisson_bracket"]
 
 
-def _relation_variables(ring: PoissonRing) -> set[str]:
+def _relation_variables(ring: Ring) -> set[str]:
     names = set(ring._rel)
     ctx_names = ring._free + ring.angles
     for d in ring._rel_polys:
@@ -21,7 +18,7 @@ def _relation_variables(ring: PoissonRing) -> set[str]:
     return names
 
 
-def _euler_index(f: PoissonSeries, i: int) -> Comps:
+def _euler_index(f: Series, i: int) -> Comps:
     """Shift-preserving derivative: ``x ∂f/∂x`` for a polynomial variable, ``∂f/∂θ`` for an angle.
 
     On ``x^a P`` the Euler operator gives ``x^a (a P + x ∂P/∂x)`` and on ``z^a P``
@@ -41,7 +38,7 @@ def _euler_index(f: PoissonSeries, i: int) -> Comps:
     return times_i(comps) if i >= ring._nfree else comps
 
 
-def _check_variable(ring: PoissonRing, name: str) -> None:
+def _check_variable(ring: Ring, name: str) -> None:
     if name in _relation_variables(ring):
         msg = (
             "expected a variable independent of the declared relations, "
@@ -53,7 +50,7 @@ def _check_variable(ring: PoissonRing, name: str) -> None:
         raise ValueError(msg)
 
 
-def derivative(f: PoissonSeries, name: str) -> PoissonSeries:
+def derivative(f: Series, name: str) -> Series:
     """Partial derivative of a series with respect to an angle, momentum or free parameter.
 
     The derivative of ``x^a · P`` is ``x^(a−1) (a P + x ∂P/∂x)``; for an angle ``θ`` with
@@ -91,7 +88,7 @@ def derivative(f: PoissonSeries, name: str) -> PoissonSeries:
 
 
 @lru_cache(maxsize=64)
-def _bracket_layout(ring: PoissonRing) -> tuple[Shift, tuple[tuple[Shift, int, int], ...]]:
+def _bracket_layout(ring: Ring) -> tuple[Shift, tuple[tuple[Shift, int, int], ...]]:
     """Common denominator monomial and, per canonical pair, ``(rest, index of q, index of p)``.
 
     With shift-preserving derivatives (``∂/∂θ``, or ``x ∂/∂x``) the pair ``(q, p)`` contributes
@@ -124,7 +121,7 @@ def _pairwise_sum(polys: list[Any]) -> Any:
     return polys[0]
 
 
-def poisson_bracket(f: PoissonSeries, g: PoissonSeries) -> PoissonSeries:
+def poisson_bracket(f: Series, g: Series) -> Series:
     """Poisson bracket over the ring's canonical pairs.
 
     ``{f, g} = Σ_(q,p) (∂f/∂q ∂g/∂p − ∂f/∂p ∂g/∂q)``, so ``{q, p} = 1``.  With this sign the

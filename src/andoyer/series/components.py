@@ -9,10 +9,7 @@ and relation generators (bit j+1) selected by the mask ``c``.  These functions w
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
-
-if TYPE_CHECKING:
-    from andoyer.series.poisson import PoissonRing
+from typing import Any
 
 __all__ = [
     "accumulate_products",
@@ -27,9 +24,14 @@ __all__ = [
 
 Comps = dict[int, Any]
 Shift = tuple[int, ...]
+# A ring and a series of :mod:`andoyer.series.poisson`, as the modules below it annotate them:
+# poisson imports those modules, so they name its classes without importing them (not even for
+# type checking: tests/core/test_import_graph.py); their docstrings name the classes.
+Ring = Any
+Series = Any
 
 
-def normalized(ring: PoissonRing, shift: Shift, comps: Comps) -> tuple[Shift, Comps]:
+def normalized(ring: Ring, shift: Shift, comps: Comps) -> tuple[Shift, Comps]:
     """Drop zero components and move the common monomial factor into the shift.
 
     Parameters
@@ -65,7 +67,7 @@ def normalized(ring: PoissonRing, shift: Shift, comps: Comps) -> tuple[Shift, Co
     return shift, comps
 
 
-def scaled(ring: PoissonRing, comps: Comps, diff: Shift) -> Comps:
+def scaled(ring: Ring, comps: Comps, diff: Shift) -> Comps:
     """Multiply every component by the monomial ``x^diff`` (nonnegative exponents).
 
     Examples
@@ -81,7 +83,7 @@ def scaled(ring: PoissonRing, comps: Comps, diff: Shift) -> Comps:
     return {m: p * mono for m, p in comps.items()}
 
 
-def aligned(ring: PoissonRing, a: tuple[Shift, Comps], b: tuple[Shift, Comps]) -> tuple[Shift, Comps, Comps]:
+def aligned(ring: Ring, a: tuple[Shift, Comps], b: tuple[Shift, Comps]) -> tuple[Shift, Comps, Comps]:
     """Rewrite two decompositions over their common (elementwise minimum) shift.
 
     Examples
@@ -155,7 +157,7 @@ def accumulate_products(acc: dict[tuple[int, int], Any], ca: Comps, cb: Comps) -
                 acc[key] = prod
 
 
-def reduce_overlaps(ring: PoissonRing, acc: dict[tuple[int, int], Any]) -> Comps:
+def reduce_overlaps(ring: Ring, acc: dict[tuple[int, int], Any]) -> Comps:
     """Apply ``i² = −1`` and ``g_j² = D_j`` to accumulated products, merging by result mask.
 
     Examples
@@ -179,7 +181,7 @@ def reduce_overlaps(ring: PoissonRing, acc: dict[tuple[int, int], Any]) -> Comps
     return out
 
 
-def product_comps(ring: PoissonRing, ca: Comps, cb: Comps) -> Comps:
+def product_comps(ring: Ring, ca: Comps, cb: Comps) -> Comps:
     """Multiply two decompositions, reducing ``i² = −1`` and ``g_j² = D_j`` (shifts add).
 
     Examples

@@ -7,13 +7,12 @@ arguments like any numpy expression.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-if TYPE_CHECKING:
-    from andoyer.series.poisson import PoissonSeries
+from andoyer.series.components import Series
 
 __all__ = ["CompiledSeries"]
 
@@ -24,7 +23,7 @@ def _power_name(name: str, e: int) -> str:
     return f"v_{name}" if e == 1 else (f"p_{name}_{e}" if e > 0 else f"m_{name}_{-e}")
 
 
-def _source(f: PoissonSeries, used: tuple[str, ...]) -> str:
+def _source(f: Series, used: tuple[str, ...]) -> str:
     ring = f.ring
     lines = [f"def _evaluate({', '.join('v_' + n for n in used)}):"]
     powers: dict[str, set[int]] = {}
@@ -87,7 +86,7 @@ class CompiledSeries:
            [4. , 2.5]])
     """
 
-    def __init__(self, series: PoissonSeries) -> None:
+    def __init__(self, series: Series) -> None:
         self.series = series
         self.variables = series.ring.variables
         self.used = series.variables()

@@ -8,16 +8,16 @@ from math import factorial
 from typing import TYPE_CHECKING, Any
 
 from andoyer.series.bracket import derivative
+from andoyer.series.components import Ring, Series
 from andoyer.series.rationals import as_rational
 
 if TYPE_CHECKING:
-    from andoyer.series.poisson import PoissonRing, PoissonSeries
     from andoyer.series.terms import Term
 
 __all__ = ["substitute", "taylor_shift", "term_order", "truncate"]
 
 
-def term_order(ring: PoissonRing, term: Term) -> Fraction:
+def term_order(ring: Ring, term: Term) -> Fraction:
     """Weighted order ``Σ w_x e_x`` of one real term.
 
     Parameters
@@ -42,7 +42,7 @@ def term_order(ring: PoissonRing, term: Term) -> Fraction:
     )
 
 
-def truncate(f: PoissonSeries, order: Any) -> PoissonSeries:
+def truncate(f: Series, order: Any) -> Series:
     """Drop the terms of weighted order larger than ``order``.
 
     Parameters
@@ -79,7 +79,7 @@ def truncate(f: PoissonSeries, order: Any) -> PoissonSeries:
     return f._new(f._shift, comps)
 
 
-def substitute(f: PoissonSeries, values: Mapping[str, Any]) -> PoissonSeries:
+def substitute(f: Series, values: Mapping[str, Any]) -> Series:
     """Substitute momenta or parameters simultaneously by rationals or series.
 
     Parameters
@@ -127,7 +127,7 @@ def substitute(f: PoissonSeries, values: Mapping[str, Any]) -> PoissonSeries:
                 rest[i] = 0
             d = groups.setdefault(key, {}).setdefault(mask & ~rel_bits, {})
             d[tuple(rest)] = c
-    powers: dict[tuple[int, int], PoissonSeries] = {}
+    powers: dict[tuple[int, int], Series] = {}
     out = ring.zero
     for key, by_mask in groups.items():
         part = f._new(tuple(shift), {m: ring._ctx.from_dict(d) for m, d in by_mask.items()})
@@ -140,7 +140,7 @@ def substitute(f: PoissonSeries, values: Mapping[str, Any]) -> PoissonSeries:
     return out
 
 
-def taylor_shift(f: PoissonSeries, deltas: Mapping[str, PoissonSeries], order: Any) -> PoissonSeries:
+def taylor_shift(f: Series, deltas: Mapping[str, Series], order: Any) -> Series:
     """Expand ``f(x + Δ(x))`` in a Taylor series truncated at weighted order ``order``.
 
     ``f(x + Δ) = Σ_α ∂^α f(x) Δ(x)^α / α!``, exact up to ``order``.  Every increment must
@@ -180,7 +180,7 @@ def taylor_shift(f: PoissonSeries, deltas: Mapping[str, PoissonSeries], order: A
     return _expand(f, items, 0, order)
 
 
-def _expand(g: PoissonSeries, items: list, i: int, order: Fraction) -> PoissonSeries:
+def _expand(g: Series, items: list, i: int, order: Fraction) -> Series:
     if g.is_zero() or g.order() > order:
         return g.ring.zero
     if i == len(items):

@@ -4,10 +4,9 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
-if TYPE_CHECKING:
-    from andoyer.series.poisson import PoissonRing, PoissonSeries
+from andoyer.series.components import Ring, Series
 
 __all__ = ["series_from_sympy", "series_to_latex", "series_to_sympy"]
 
@@ -19,13 +18,13 @@ def _sympy() -> Any:
     return sympy
 
 
-def _symbols(ring: PoissonRing, symbols: Mapping[str, Any] | None) -> dict[str, Any]:
+def _symbols(ring: Ring, symbols: Mapping[str, Any] | None) -> dict[str, Any]:
     sympy = _sympy()
     symbols = dict(symbols or {})
     return {n: symbols.get(n, sympy.Symbol(n)) for n in ring.variables}
 
 
-def series_to_sympy(f: PoissonSeries, symbols: Mapping[str, Any] | None = None) -> Any:
+def series_to_sympy(f: Series, symbols: Mapping[str, Any] | None = None) -> Any:
     """Convert a series to a sympy expression (exact rationals, ``cos``/``sin`` of sums).
 
     Parameters
@@ -60,7 +59,7 @@ def series_to_sympy(f: PoissonSeries, symbols: Mapping[str, Any] | None = None) 
     return sympy.Add(*terms)
 
 
-def series_from_sympy(ring: PoissonRing, expr: Any) -> PoissonSeries:
+def series_from_sympy(ring: Ring, expr: Any) -> Series:
     """Convert a sympy expression built from the ring's symbols to a series.
 
     Allowed: rationals, momenta and parameters (integer powers; negative only of monomials),
@@ -91,7 +90,7 @@ def series_from_sympy(ring: PoissonRing, expr: Any) -> PoissonSeries:
     return _convert(ring, sympy.sympify(expr), sympy)
 
 
-def _convert(ring: PoissonRing, expr: Any, sympy: Any) -> PoissonSeries:
+def _convert(ring: Ring, expr: Any, sympy: Any) -> Series:
     if expr.is_Rational:
         return ring.constant(Fraction(int(expr.p), int(expr.q)))
     if expr.is_Symbol:
@@ -119,7 +118,7 @@ def _convert(ring: PoissonRing, expr: Any, sympy: Any) -> PoissonSeries:
     raise ValueError(msg)
 
 
-def _harmonic(ring: PoissonRing, arg: Any) -> tuple[int, ...]:
+def _harmonic(ring: Ring, arg: Any) -> tuple[int, ...]:
     k = dict.fromkeys(ring.angles, 0)
     for term, coeff in arg.as_coefficients_dict().items():
         name = getattr(term, "name", None)
@@ -130,7 +129,7 @@ def _harmonic(ring: PoissonRing, arg: Any) -> tuple[int, ...]:
     return tuple(k[a] for a in ring.angles)
 
 
-def series_to_latex(f: PoissonSeries) -> str:
+def series_to_latex(f: Series) -> str:
     r"""LaTeX form grouping the terms by trigonometric argument.
 
     Parameters

@@ -9,13 +9,10 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any, NamedTuple
+from typing import Any, NamedTuple
 
-from andoyer.series.components import Comps, Shift, add_into, aligned, normalized, product_comps
+from andoyer.series.components import Comps, Ring, Shift, add_into, aligned, normalized, product_comps
 from andoyer.series.rationals import as_rational, to_fmpq
-
-if TYPE_CHECKING:
-    from andoyer.series.poisson import PoissonRing
 
 __all__ = ["Term", "decompose", "harmonic_sign", "real_terms"]
 
@@ -47,7 +44,7 @@ def harmonic_sign(k: Sequence[int]) -> int:
     return 0
 
 
-def real_terms(ring: PoissonRing, shift: Shift, comps: Comps) -> tuple[Term, ...]:
+def real_terms(ring: Ring, shift: Shift, comps: Comps) -> tuple[Term, ...]:
     """Real terms of a decomposition, sorted by harmonic, kind and total degree.
 
     Examples
@@ -88,7 +85,7 @@ def real_terms(ring: PoissonRing, shift: Shift, comps: Comps) -> tuple[Term, ...
 
 
 def _entries(
-    ring: PoissonRing, term: Sequence[Any]
+    ring: Ring, term: Sequence[Any]
 ) -> tuple[tuple[int, ...], list[tuple[int, tuple[int, ...], Fraction]]]:
     if len(term) != 4:
         msg = f"expected terms (coeff, exponents, kind, harmonics), got {term!r}"
@@ -121,7 +118,7 @@ def _entries(
     ]
 
 
-def decompose(ring: PoissonRing, terms: Iterable[Sequence[Any]]) -> tuple[Shift, Comps]:
+def decompose(ring: Ring, terms: Iterable[Sequence[Any]]) -> tuple[Shift, Comps]:
     """Exponential decomposition of real terms ``(coeff, exponents, kind, harmonics)``.
 
     Powers ``x^n`` of a relation generator become ``x^(n mod 2) D^(n // 2)``.

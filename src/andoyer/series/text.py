@@ -12,8 +12,9 @@ import ast
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
+from andoyer.series.components import Ring, Series
+
 if TYPE_CHECKING:
-    from andoyer.series.poisson import PoissonRing, PoissonSeries
     from andoyer.series.terms import Term
 
 __all__ = ["parse_series", "series_to_text"]
@@ -32,7 +33,7 @@ def _linear_text(names: Sequence[str], k: Sequence[int]) -> str:
     return out
 
 
-def _term_text(ring: PoissonRing, t: Term) -> str:
+def _term_text(ring: Ring, t: Term) -> str:
     factors = [
         name if e == 1 else f"{name}**{e}" for name, e in zip(ring.poly_names, t.exponents, strict=True) if e
     ]
@@ -49,7 +50,7 @@ def _term_text(ring: PoissonRing, t: Term) -> str:
     return f"{c}*{body}"
 
 
-def series_to_text(f: PoissonSeries) -> str:
+def series_to_text(f: Series) -> str:
     """Plain-text form that :meth:`PoissonRing.__call__` parses back exactly.
 
     Parameters
@@ -79,7 +80,7 @@ def series_to_text(f: PoissonSeries) -> str:
     return out or "0"
 
 
-def parse_series(ring: PoissonRing, text: str) -> PoissonSeries:
+def parse_series(ring: Ring, text: str) -> Series:
     """Parse a series expression written in Python syntax.
 
     Parameters
@@ -106,7 +107,7 @@ def parse_series(ring: PoissonRing, text: str) -> PoissonSeries:
 
 
 class _Parser:
-    def __init__(self, ring: PoissonRing, text: str) -> None:
+    def __init__(self, ring: Ring, text: str) -> None:
         self.ring = ring
         self.text = text
 
@@ -114,7 +115,7 @@ class _Parser:
         part = ast.get_source_segment(self.text.strip(), node) or ast.dump(node)
         return ValueError(f"expected {what}, got {part!r} in {self.text!r}")
 
-    def visit(self, node: ast.AST) -> PoissonSeries:
+    def visit(self, node: ast.AST) -> Series:
         ring = self.ring
         if isinstance(node, ast.Constant):
             if isinstance(node.value, int) and not isinstance(node.value, bool):
@@ -142,7 +143,7 @@ class _Parser:
             return ring.cos(k) if node.func.id == "cos" else ring.sin(k)
         raise self.fail(node, "a Poisson-series expression")
 
-    def binop(self, node: ast.BinOp) -> PoissonSeries:
+    def binop(self, node: ast.BinOp) -> Series:
         if isinstance(node.op, ast.Pow):
             n = self.integer(node.right)
             return self.visit(node.left) ** n

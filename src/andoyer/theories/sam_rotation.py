@@ -2,7 +2,7 @@ r"""Lara's SAM theory evaluated on physical states: the analytic free rotation o
 
 A state is taken through the chain
 
-    state → SAM chart (:mod:`andoyer.charts.sam`) → inverse Lie transformation (mean elements
+    state → SAM chart (:mod:`andoyer.state.sam`) → inverse Lie transformation (mean elements
     ``ℓ', g', L', G'``) → ``ℓ' + n_ℓ t``, ``g' + n_g t`` → direct transformation → SAM chart
     → state,
 
@@ -21,9 +21,9 @@ from numpy.typing import ArrayLike, NDArray
 
 from andoyer._validation import as_finite
 from andoyer.body import RigidBody
-from andoyer.charts.sam import SAM, SAMAxes, _sam_of_hub, sam_axes, sam_to_hub
 from andoyer.regime import Regime
 from andoyer.state import State
+from andoyer.state.sam import SAM, SAMAxes, _sam_of_hub, sam_axes, sam_to_hub
 from andoyer.theories.sam import SAMTheory, sam_theory
 
 __all__ = ["SAMFrequencies", "SAMRotation"]

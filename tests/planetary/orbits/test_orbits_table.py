@@ -124,6 +124,7 @@ def write(tmp_path, text, name="bad.csv"):
 
 GOOD_ROWS = "".join(f"{t},0,0,1\n" for t in range(5))
 HEAD = "t_years,nx,ny,nz\n"
+ELEMENTS = "t_years,e,inclination_deg,node_deg,varpi_deg\n"
 
 
 @pytest.mark.parametrize(
@@ -140,7 +141,9 @@ HEAD = "t_years,nx,ny,nz\n"
         (HEAD + "0,0,0,1\n1,0,0,1\n2,0,0,1\n", f"at least {MIN_ROWS} rows"),
         (HEAD + "0,0,0,1\n1,0,0,2\n2,0,0,1\n3,0,0,1\n", "unit orbit normals, got length 2 at row"),
         ("t_years,e,inclination_deg,node_deg,varpi_deg\n" + "".join(f"{t},1.2,0,0,0\n" for t in range(4)),
-         "expected e in"),
+         "expected an eccentricity 0 <= e < 1 .*got 1.2 in column e on line 2"),
+        (ELEMENTS + "".join(f"{t},0.1,{100 * t},0,0\n" for t in range(4)),
+         r"expected an inclination 0 <= i <= 180 deg .*got 200.0 in column inclination_deg on line 4"),
     ],
 )
 def test_table_csv_errors(tmp_path, text, match):

@@ -9,7 +9,7 @@ from scipy.integrate import solve_ivp
 from spin_cases import FixedOrbit, PrecessingOrbit, angle
 
 from andoyer import bodies
-from andoyer.perturbations.secular import SecularGravityGradient
+from andoyer.perturbations.averaged_gravity import SecularGravityGradient
 from andoyer.perturbations.solar_system import JULIAN_YEAR, mean_perturbers
 from andoyer.planetary.orbits import VondrakEcliptic
 from andoyer.planetary.spin_axis import (
@@ -188,7 +188,7 @@ def test_climatic_precession_at_j2000_convention():
 def test_model_rejects_bad_parameters_with_expected_messages():
     with pytest.raises(ValueError, match="expected a body in earth, mars, got 'venus'"):
         SpinAxisModel.from_precession_rate("venus", 1.0, 0.4)
-    with pytest.raises(ValueError, match="expected a positive precession rate"):
+    with pytest.raises(ValueError, match="expected a precession rate P > 0 arcsec/yr"):
         SpinAxisModel.from_precession_rate("earth", -1.0, 0.4)
     with pytest.raises(ValueError, match="expected tidal dissipation 0 for a planet without a moon"):
         SpinAxisModel.from_dynamical_ellipticity("mars", 0.005, tidal_dissipation=1.0)

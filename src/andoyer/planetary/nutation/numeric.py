@@ -15,6 +15,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer.perturbations.lunar_theory import (
+    check_span,
     delaunay_arguments,
     ecliptic_vector,
     moon_ecliptic,
@@ -164,6 +165,7 @@ def nutation(
     if times.ndim != 1 or times.size == 0 or not np.all(np.isfinite(times)):
         msg = f"expected finite times (T,), got shape {np.shape(t)}"
         raise ValueError(msg)
+    check_span(float(times.min()), float(times.max()))  # the user's times, before any epoch of theirs
     if method == "analytic":
         series = nutation_series(H, key, float(np.mean(times)), obliquity)
         return series(times)

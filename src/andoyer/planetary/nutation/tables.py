@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from andoyer.perturbations.lunar_theory import delaunay_arguments, delaunay_rates
+from andoyer.perturbations.lunar_theory import check_span, delaunay_arguments, delaunay_rates
 from andoyer.perturbations.solar_system import DAY, JULIAN_YEAR
 from andoyer.planetary.nutation.analytic import NutationSeries, nutation_series
 from andoyer.planetary.nutation.fit import _large, _split, fit_terms, minimum_span
@@ -103,6 +103,7 @@ def numeric_terms(
     key = _axis(axis)
     eps0 = float(obliquity)
     t0, t1 = (float(v) for v in span)
+    check_span(t0, t1)  # the user's span, before its middle is used as an epoch
     chosen = list(PRINCIPAL_TERMS.values()) if multipliers is None else multipliers
     wanted = np.atleast_2d(np.asarray(chosen, dtype=float))
     need = minimum_span(wanted, 0.5 * (t0 + t1))

@@ -29,7 +29,7 @@ Examples
 True
 """
 
-from andoyer.planetary.orbits.factory import SOURCES, orbit_history
+from andoyer.planetary.orbits.factory import SOURCES, orbit_history, source_span
 from andoyer.planetary.orbits.frequencies import fundamental_frequencies, spectral_lines
 from andoyer.planetary.orbits.laplace_lagrange import LaplaceLagrangeOrbit
 from andoyer.planetary.orbits.lyapunov import lyapunov_exponent
@@ -55,6 +55,7 @@ __all__ = [
     "orbit_history",
     "read_alkhqp",
     "read_orbit_csv",
+    "source_span",
     "spectral_lines",
     "write_orbit_csv",
 ]

@@ -9,7 +9,7 @@ from typing import Any
 from andoyer.planetary.orbits.planets import PLANETS, check_planet
 from andoyer.planetary.orbits.protocol import OrbitHistory
 
-__all__ = ["SOURCES", "orbit_history"]
+__all__ = ["SOURCES", "orbit_history", "source_span"]
 
 #: The named orbit sources.
 SOURCES = ("vondrak", "nbody", "secular", "laplace-lagrange")
@@ -86,3 +86,51 @@ def orbit_history(source: str | os.PathLike[str], body: str = "earth", **options
     from andoyer.planetary.orbits.table import read_orbit_csv
 
     return read_orbit_csv(path)
+
+
+def source_span(source: str, body: str = "earth") -> tuple[float, float]:
+    """The span of validity ``(t_min, t_max)`` (Julian years from J2000) of a named orbit source.
+
+    Read without building the source (an N-body orbit is integrated only when first asked).
+
+    Parameters
+    ----------
+    source : {"vondrak", "nbody", "secular", "laplace-lagrange"}
+    body : str
+        A planet of :data:`~andoyer.planetary.orbits.planets.PLANETS` (``vondrak``: the Earth only).
+
+    Returns
+    -------
+    tuple of float
+
+    Examples
+    --------
+    >>> source_span("vondrak"), source_span("nbody", "mars")
+    ((-200000.0, 200000.0), (-50000000.0, 50000000.0))
+    """
+    planet = PLANETS[check_planet(body)]
+    name = str(source)
+    if name == "vondrak":
+        from andoyer.planetary.orbits.vondrak import VondrakEcliptic
+
+        if planet != "earth":
+            msg = f"expected body 'earth' for the vondrak orbit (the ecliptic), got {body!r}"
+            raise ValueError(msg)
+        return tuple(map(float, VondrakEcliptic.span))  # type: ignore[return-value]
+    if name == "nbody":
+        import inspect
+
+        from andoyer.planetary.orbits.nbody import NBodyOrbit
+
+        most = float(inspect.signature(NBodyOrbit).parameters["max_span"].default)
+        return (-most, most)
+    if name == "secular":
+        from andoyer.planetary.orbits.secular import SecularOrbit
+
+        return tuple(map(float, SecularOrbit.span))  # type: ignore[return-value]
+    if name == "laplace-lagrange":
+        from andoyer.planetary.orbits.laplace_lagrange import LaplaceLagrangeOrbit
+
+        return tuple(map(float, LaplaceLagrangeOrbit.span))  # type: ignore[return-value]
+    msg = f"expected a named orbit source among {', '.join(SOURCES)}, got {source!r}"
+    raise ValueError(msg)

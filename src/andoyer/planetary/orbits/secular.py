@@ -304,6 +304,7 @@ class SecularOrbit:
 
     name = "secular"
     has_eccentricity = True
+    span = (-MAX_SPAN, MAX_SPAN)
 
     def __init__(
         self,

@@ -37,6 +37,7 @@ from andoyer._files import atomic_write_bytes
 from andoyer._validation import as_vectors
 from andoyer.planetary.orbits.elements import eccentricity_from_elements, normal_from_elements
 from andoyer.planetary.orbits.protocol import OrbitHistory, check_times
+from andoyer.planetary.parameters import PARAMETERS
 
 __all__ = ["TableOrbit", "read_alkhqp", "read_orbit_csv", "write_orbit_csv"]
 
@@ -155,11 +156,30 @@ class TableOrbit:
         return f"TableOrbit(name={self.name!r}, span={self.span})"
 
 
+def _text_lines(path: str | os.PathLike[str]) -> list[str]:
+    """The lines of a UTF-8 text file (a byte-order mark, as spreadsheets write it, dropped).
+
+    A file that is not UTF-8 text (a binary file, another encoding) is a :class:`ValueError`
+    naming the file and the first byte that is not.
+    """
+    with open(path, "rb") as stream:
+        data = stream.read()
+    try:
+        text = data.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        line = data.count(b"\n", 0, exc.start) + 1
+        msg = (
+            f"expected a UTF-8 text file, got byte 0x{data[exc.start]:02x} on line {line} of "
+            f"{str(path)!r} (a binary file or another encoding)"
+        )
+        raise ValueError(msg) from None
+    return text.splitlines(keepends=True)
+
+
 def _parse_rows(path: str | os.PathLike[str]) -> tuple[list[str], list[tuple[int, list[str]]]]:
     """Header and numbered data rows of a CSV file, ``#`` comment lines and blank lines skipped."""
-    with open(path, newline="", encoding="utf-8") as stream:
-        numbered = enumerate(stream, start=1)
-        lines = [(k, line) for k, line in numbered if line.strip() and not line.lstrip().startswith("#")]
+    numbered = enumerate(_text_lines(path), start=1)
+    lines = [(k, line) for k, line in numbered if line.strip() and not line.lstrip().startswith("#")]
     if not lines:
         msg = f"expected a CSV header row and data rows, got an empty file {str(path)!r}"
         raise ValueError(msg)
@@ -241,11 +261,16 @@ def read_orbit_csv(path: str | os.PathLike[str]) -> TableOrbit:
     if wanted[1] == "nx":
         ecc = values[:, 4:7] if len(wanted) == 7 else None
         return TableOrbit(t, values[:, 1:4], ecc, name=Path(path).name)
+    for c, name in ((1, "eccentricity"), (2, "inclination")):  # the ranges of andoyer.planetary.parameters
+        inside = [PARAMETERS[name].contains(value, degrees=True) for value in values[:, c]]
+        if not all(inside):
+            k = inside.index(False)
+            try:
+                PARAMETERS[name].check(float(values[k, c]), degrees=True)
+            except ValueError as exc:
+                msg = f"{exc} in column {wanted[c]} on line {lines[k]} of {str(path)!r}"
+                raise ValueError(msg) from None
     e, inc, node, varpi = values[:, 1], *np.radians(values[:, 2:5].T)
-    if np.any((e < 0) | (e >= 1)):
-        k = int(np.flatnonzero((e < 0) | (e >= 1))[0])
-        msg = f"expected e in [0, 1) in column e on line {lines[k]} of {str(path)!r}, got {e[k]:g}"
-        raise ValueError(msg)
     normal = normal_from_elements(inc, node)
     return TableOrbit(t, normal, eccentricity_from_elements(e, inc, node, varpi), name=Path(path).name)
 
@@ -278,8 +303,7 @@ def read_alkhqp(path: str | os.PathLike[str], rotation: ArrayLike) -> TableOrbit
     if R.shape != (3, 3) or not np.allclose(R @ R.T, np.eye(3), atol=1e-9):
         msg = f"expected an orthogonal 3x3 rotation matrix, got {R.tolist()}"
         raise ValueError(msg)
-    with open(path, encoding="utf-8") as stream:
-        rows = [(k + 1, line.split()) for k, line in enumerate(stream) if line.strip()]
+    rows = [(k + 1, line.split()) for k, line in enumerate(_text_lines(path)) if line.strip()]
     values = np.empty((len(rows), 7))
     for r, (line, fields) in enumerate(rows):
         if len(fields) != 7:

@@ -3,7 +3,7 @@ r"""Secular spin-axis dynamics under a moving orbit: obliquity, precession, inso
 The averaged torque of the Sun (and, for the Earth, the Moon) on an oblate planet turns its
 unit spin axis ``s`` about the orbit normal of date ``n(t)`` of any
 :class:`~andoyer.planetary.orbits.OrbitHistory` (:mod:`andoyer.planetary.spin_axis.model` derives it from
-:class:`~andoyer.perturbations.secular.SecularGravityGradient`):
+:class:`~andoyer.perturbations.averaged_gravity.SecularGravityGradient`):
 
 .. math:: \dot{\mathbf s} = \alpha(t)\,(\mathbf s\cdot\mathbf n)\,(\mathbf s\times\mathbf n),
    \qquad \alpha(t) = \alpha_\odot\big[(1 - e(t)^2)^{-3/2} + \beta\big],
@@ -23,6 +23,8 @@ Examples
 """
 
 from __future__ import annotations
+
+from collections.abc import Callable
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -118,6 +120,7 @@ def spin_axis_history(
     axis: ArrayLike | None = None,
     step: float = DEFAULT_STEP,
     order: int = 8,
+    coupling: Callable[[SpinAxisModel, tuple[float, float]], SpinAxisModel] | None = None,
 ) -> SpinAxisHistory:
     r"""The spin axis of ``body`` along ``orbit`` at ``times`` (Julian years from J2000).
 
@@ -134,23 +137,35 @@ def spin_axis_history(
     times : array_like, shape (N,)
         Increasing output times within ``orbit.span``.
     precession_rate : float, optional
-        ″/yr.
+        ″/yr, positive, at most the rate of ``H = 1/2``.
     dynamical_ellipticity : float, optional
-        ``H = (C − (A+B)/2)/C``.
+        ``H = (C − (A+B)/2)/C``, ``0 < H < 1/2``.
     tidal_dissipation : float
-        ``T_d`` (Zeebe & Lourens 2022; 0: none, 1: modern rates). Earth only.
+        ``T_d`` (Zeebe & Lourens 2022; 0: none, 1: modern rates), in ``[0, 1.2]``. Earth only.
     ellipticity_drift : float
-        ``Ḣ/H`` per Julian year.
+        ``Ḣ/H`` per Julian year; ``H`` must stay within ``(0, 1/2)`` over the span.
     axis : array_like, shape (3,), optional
         Spin axis at J2000, J2000 ecliptic frame.
     step : float
-        Largest integration step (years).
+        Largest integration step (years), shortened where the axis would turn by more than
+        1/16 of a turn in one (:data:`~andoyer.planetary.spin_axis.history.MAX_TURN_PER_STEP`).
     order : {2, 4, 6, 8}
         Order of the composition.
+    coupling : callable, optional
+        ``coupling(model, (T0, T1))`` returns the model to integrate in place of the one built
+        here (e.g. with ``α(t)`` following a tidal history:
+        ``andoyer.planetary.tides.tidal_spin_axis_history``).
 
     Returns
     -------
     SpinAxisHistory
+        Its ``largest_turn`` says whether the output times sample the precession.
+
+    Raises
+    ------
+    ValueError
+        For a parameter out of its range (:mod:`andoyer.planetary.parameters`), or times
+        outside the orbit's span.
 
     Examples
     --------
@@ -179,4 +194,7 @@ def spin_axis_history(
     model = build_model(
         orbit, body, s0, precession_rate, dynamical_ellipticity, tidal_dissipation, ellipticity_drift
     )
+    model.check_span(min(t[0], 0.0), max(t[-1], 0.0))
+    if coupling is not None:
+        model = coupling(model, (float(t[0]), float(t[-1])))
     return history(orbit, model, t, s0, step, order)

@@ -56,6 +56,12 @@ EPSILON_0 = 84381.406 * ARCSEC
 #: (DOP853's own level), 6.7e-12 at 2000. p_A is unwrapped between steps, so a step must stay
 #: below half a precession period.
 DEFAULT_STEP = 1000.0
+#: Largest turn of the axis about the orbit normal in one step (turns): a faster precession
+#: shortens the step to fit. Measured against DOP853 (rtol 1e-13, Vondrák ecliptic, order 8):
+#: at 1/16 turn per step the error is 1.1e-12 rad at 50″/yr, 1.9e-12 at 500″/yr and 1.9e-12
+#: at 5000″/yr (DOP853's own level there; the Earth's default, 1000 years, is 1/26 turn);
+#: at 1/4 turn it grows to 3e-8 rad. p_A, unwrapped between steps, needs less than 1/2 turn.
+MAX_TURN_PER_STEP = 1.0 / 16.0
 
 
 def mean_pole_j2000() -> Array:
@@ -190,6 +196,29 @@ def _segments(knots: Array, step: float) -> tuple[Array, Array, Array]:
     return starts, sizes, ends - 1
 
 
+def _alpha(orbit: OrbitHistory, model: SpinAxisModel | Sequence[SpinAxisModel], t: Array, runs: int) -> Array:
+    """``α`` of every run at the times ``t`` (the orbit's eccentricity where it knows it), shape (M, T)."""
+    e = np.linalg.norm(orbit.eccentricity_vector(t), axis=-1) if orbit.has_eccentricity else None
+    if isinstance(model, SpinAxisModel):
+        return np.broadcast_to(model.rate(t, e), (runs, t.size))
+    return np.stack([m.rate(t, e) for m in model])
+
+
+def _largest_step(
+    orbit: OrbitHistory, model: SpinAxisModel | Sequence[SpinAxisModel], times: Array, runs: int, step: float
+) -> float:
+    """``step``, shortened where ``α`` would turn the axis by more than :data:`MAX_TURN_PER_STEP`.
+
+    The axis turns about ``n`` at ``α (s·n) ≤ α``; ``α`` is sampled at the middle of every step
+    of ``step`` (it changes over the orbit's and the tides' slow times, not within a step).
+    """
+    knots = np.concatenate([[0.0], times])
+    starts, sizes, _ = _segments(np.sort(knots), step)
+    alpha = float(np.max(np.abs(_alpha(orbit, model, starts + 0.5 * sizes, runs)), initial=0.0))
+    most = 2 * np.pi * MAX_TURN_PER_STEP / alpha if alpha > 0 else np.inf
+    return min(step, most)
+
+
 def integrate_axis(
     orbit: OrbitHistory,
     model: SpinAxisModel | Sequence[SpinAxisModel],
@@ -210,7 +239,8 @@ def integrate_axis(
     s0 : ndarray, shape (M, 3)
         Unit axes at J2000 (``M`` runs sharing the orbit).
     step : float
-        Largest step, years.
+        Largest step, years (taken as it is: :func:`evolve_axes` shortens it where the axis
+        would turn by more than :data:`MAX_TURN_PER_STEP` in one).
     order : {2, 4, 6, 8}
 
     Returns
@@ -232,11 +262,7 @@ def integrate_axis(
         starts, sizes, at = _segments(np.concatenate([[0.0], side]), step)
         mid, dur = stage_times(starts, sizes, order)
         normals = np.ascontiguousarray(orbit.normal(mid))
-        e = np.linalg.norm(orbit.eccentricity_vector(mid), axis=-1) if orbit.has_eccentricity else None
-        if isinstance(model, SpinAxisModel):
-            alpha = np.broadcast_to(model.rate(mid, e), (len(s0), mid.size))
-        else:
-            alpha = np.stack([m.rate(mid, e) for m in model])
+        alpha = _alpha(orbit, model, mid, len(s0))
         out = np.empty((len(s0), len(starts), 3))
         stages = len(dur) // len(starts)
         rotate_stages(np.ascontiguousarray(s0), normals, np.ascontiguousarray(alpha), dur, stages, out)
@@ -274,6 +300,10 @@ class SpinAxisHistory:
         ``ψ̇`` at J2000 used, ″/yr.
     model : SpinAxisModel
     orbit_name : str
+    largest_turn : float
+        The largest angle (radians) by which ``p_A`` or ``ϖ`` turns between two consecutive
+        output times, measured on the integration grid: from ``π`` on, the outputs undersample
+        the precession (Nyquist) and a table or a picture of them aliases it.
     """
 
     t: Array
@@ -286,6 +316,7 @@ class SpinAxisHistory:
     precession_rate: float
     model: SpinAxisModel
     orbit_name: str = field(default="")
+    largest_turn: float = 0.0
 
     @property
     def climatic_precession(self) -> Array | None:
@@ -344,15 +375,55 @@ def history(
     """Integrate and describe (the work of :func:`andoyer.planetary.spin_axis.spin_axis_history`)."""
     s0 = as_vectors(s0, "initial axis")
     s0 = s0 / np.linalg.norm(s0)
-    axes, p = evolve_axes(orbit, model, times, s0, step, order)
-    s = axes[0]
+    grid, axes, p, index = _evolve(orbit, model, times, s0, step, order)
+    s = axes[0, index]
     n0 = orbit.normal(0.0)
     n, obliquity, e, perihelion = describe_orbit(orbit, times, s)
     e0 = np.linalg.norm(orbit.eccentricity_vector(0.0)) if orbit.has_eccentricity else None
     eps0 = float(np.arctan2(np.linalg.norm(np.cross(s0, n0)), s0 @ n0))
+    turns = [p[0]]
+    if orbit.has_eccentricity:  # ϖ from the moving equinox, on the grid
+        turns.append(np.unwrap(describe_orbit(orbit, grid, axes[0])[3]))
+    largest = max(float(np.max(np.abs(np.diff(angle[index])), initial=0.0)) for angle in turns)
     return SpinAxisHistory(
-        times, s, n, obliquity, p[0], e, perihelion, model.precession_rate(eps0, e0), model, orbit.name
+        times,
+        s,
+        n,
+        obliquity,
+        p[0, index],
+        e,
+        perihelion,
+        model.precession_rate(eps0, e0),
+        model,
+        orbit.name,
+        largest,
     )
+
+
+def _evolve(
+    orbit: OrbitHistory,
+    model: SpinAxisModel | Sequence[SpinAxisModel],
+    times: Array,
+    s0: Array,
+    step: float,
+    order: int,
+) -> tuple[Array, Array, Array, Array]:
+    """:func:`evolve_axes` on the whole integration grid: the grid, the axes, ``p_A`` and ``index``.
+
+    Shapes (K,), (M, K, 3), (M, K) and (N,): ``index`` gives the outputs' places in the grid.
+    """
+    times = as_finite(times, "times")
+    runs = 1 if isinstance(model, SpinAxisModel) else len(model)
+    s0 = np.broadcast_to(as_finite(s0, "s0"), (runs, 3)) if np.ndim(s0) == 1 else np.asarray(s0)
+    s0 = np.ascontiguousarray(s0, dtype=float)
+    if not (np.isfinite(step) and step > 0):
+        msg = f"expected a positive finite integration step in years, got {step!r}"
+        raise ValueError(msg)
+    step = _largest_step(orbit, model, times, runs, step)
+    grid, axes, index = integrate_axis(orbit, model, times, s0, step, order)
+    p = np.unwrap(general_precession(axes, orbit.normal(grid), s0, orbit.normal(0.0)), axis=-1)
+    p = p - p[:, np.searchsorted(grid, 0.0)][:, None]
+    return grid, axes, p, index
 
 
 def evolve_axes(
@@ -373,6 +444,8 @@ def evolve_axes(
     s0 : ndarray, shape (3,) or (M, 3)
         Unit axis at J2000 (shared, or one per run).
     step : float
+        Largest step, years, shortened where the axis would turn by more than
+        :data:`MAX_TURN_PER_STEP` in one (the unwrapping of ``p_A`` needs less than half a turn).
     order : {2, 4, 6, 8}
 
     Returns
@@ -381,13 +454,7 @@ def evolve_axes(
     precession : ndarray, shape (M, N)
         ``p_A`` (radians), unwrapped between integration steps, zero at J2000.
     """
-    times = as_finite(times, "times")
-    runs = 1 if isinstance(model, SpinAxisModel) else len(model)
-    s0 = np.broadcast_to(as_finite(s0, "s0"), (runs, 3)) if np.ndim(s0) == 1 else np.asarray(s0)
-    s0 = np.ascontiguousarray(s0, dtype=float)
-    grid, axes, index = integrate_axis(orbit, model, times, s0, step, order)
-    p = np.unwrap(general_precession(axes, orbit.normal(grid), s0, orbit.normal(0.0)), axis=-1)
-    p = p - p[:, np.searchsorted(grid, 0.0)][:, None]
+    _, axes, p, index = _evolve(orbit, model, times, s0, step, order)
     return axes[:, index], p[:, index]
 
 

@@ -1,6 +1,6 @@
 r"""The averaged torque on a planet's spin axis: strengths, precession rate, tides.
 
-**Derivation.** :class:`~andoyer.perturbations.secular.SecularGravityGradient` averages the
+**Derivation.** :class:`~andoyer.perturbations.averaged_gravity.SecularGravityGradient` averages the
 gravity-gradient disturbance of a perturber ``p`` (gravitational parameter ``μ_p``, orbit
 ``a_p, e_p``, normal ``k_p``) over the body's rotation and the perturber's mean anomaly:
 ``⟨ΔH⟩ = κ_p (m̂·k_p)²`` with ``κ_p = −3μ_p (C − (A+B)/2)(3cos²J − 1)/(8 a_p³(1−e_p²)^{3/2})``
@@ -62,6 +62,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from andoyer import bodies
 from andoyer.perturbations.solar_system import JULIAN_YEAR, mean_perturbers
+from andoyer.planetary.parameters import PARAMETERS, check
 
 __all__ = [
     "ARCSEC",
@@ -151,7 +152,6 @@ class SpinAxisModel:
         numbers = {
             "alpha_sun": self.alpha_sun,
             "beta": self.beta,
-            "eccentricity": self.eccentricity,
             "tide_spin": self.tide_spin,
             "tide_moon": self.tide_moon,
             "ellipticity_drift": self.ellipticity_drift,
@@ -160,18 +160,14 @@ class SpinAxisModel:
             if not (isinstance(value, int | float | np.floating) and np.isfinite(value)):
                 msg = f"expected a finite real {name}, got {value!r}"
                 raise ValueError(msg)
-        if self.alpha_sun <= 0 or self.beta < 0 or not 0 <= self.eccentricity < 1:
-            msg = (
-                "expected alpha_sun > 0, beta >= 0 and 0 <= eccentricity < 1, got "
-                f"{self.alpha_sun!r}, {self.beta!r}, {self.eccentricity!r}"
-            )
+        if self.alpha_sun <= 0 or self.beta < 0:
+            msg = f"expected alpha_sun > 0 and beta >= 0, got {self.alpha_sun!r}, {self.beta!r}"
             raise ValueError(msg)
+        check("eccentricity", self.eccentricity)
 
     @staticmethod
     def _tides(body: str, tidal_dissipation: float) -> tuple[float, float]:
-        if not np.isfinite(tidal_dissipation):
-            msg = f"expected a finite tidal dissipation T_d, got {tidal_dissipation!r}"
-            raise ValueError(msg)
+        tidal_dissipation = check("tidal_dissipation", tidal_dissipation)
         _, _, beta, _, ratio = _solar_terms(body)
         if tidal_dissipation != 0 and beta == 0:
             msg = f"expected tidal dissipation 0 for a planet without a moon, got {tidal_dissipation!r}"
@@ -212,13 +208,12 @@ class SpinAxisModel:
         50.4
         """
         key = _body(body)
-        if not (np.isfinite(ellipticity) and ellipticity > 0):
-            msg = f"expected a positive dynamical ellipticity, got {ellipticity!r}"
-            raise ValueError(msg)
+        ellipticity = check("dynamical_ellipticity", ellipticity)
+        drift = check("ellipticity_drift", ellipticity_drift)
         n2, e0, beta, omega, _ = _solar_terms(key)
         alpha = 1.5 * n2 * ellipticity / omega * JULIAN_YEAR
         spin, moon = cls._tides(key, tidal_dissipation)
-        return cls(key, float(alpha), float(beta), float(e0), spin, moon, float(ellipticity_drift))
+        return cls(key, float(alpha), float(beta), float(e0), spin, moon, drift)
 
     @classmethod
     def from_precession_rate(
@@ -255,17 +250,65 @@ class SpinAxisModel:
         0.00537
         """
         key = _body(body)
-        if not (np.isfinite(rate) and rate > 0):
-            msg = f"expected a positive precession rate in arcsec per year, got {rate!r}"
-            raise ValueError(msg)
-        if not (np.isfinite(obliquity) and 0 <= obliquity < np.pi / 2):
-            msg = f"expected an obliquity at J2000 in [0, π/2) radians, got {obliquity!r}"
-            raise ValueError(msg)
-        _, e0, beta, _, _ = _solar_terms(key)
-        e = e0 if eccentricity is None else float(eccentricity)
+        rate = check("precession_rate", rate)
+        obliquity = check("obliquity", obliquity)
+        drift = check("ellipticity_drift", ellipticity_drift)
+        n2, e0, beta, omega, _ = _solar_terms(key)
+        e = e0 if eccentricity is None else check("eccentricity", eccentricity)
         alpha = rate * ARCSEC / (np.cos(obliquity) * (((1 - e) * (1 + e)) ** -1.5 + beta))
+        # The rate and the ellipticity are one parameter (α_⊙ = (3/2) n_⊙² H / ω): H's bound
+        # A + B ≥ C is the rate's bound, for this body at this obliquity and eccentricity.
+        H = float(alpha / JULIAN_YEAR * omega / (1.5 * n2))
+        if not PARAMETERS["dynamical_ellipticity"].contains(H):
+            top = rate * PARAMETERS["dynamical_ellipticity"].high / H
+            msg = (
+                f"expected a precession rate P < {top:.6g} arcsec/yr for {key} at an obliquity of "
+                f"{np.degrees(obliquity):.4g} deg (the rate of H = 1/2: A + B >= C bounds the dynamical "
+                f"ellipticity H = (C - (A+B)/2)/C by 1/2), got {rate!r} (H = {H:.4g})"
+            )
+            raise ValueError(msg)
         spin, moon = cls._tides(key, tidal_dissipation)
-        return cls(key, float(alpha), float(beta), e, spin, moon, float(ellipticity_drift))
+        return cls(key, float(alpha), float(beta), e, spin, moon, drift)
+
+    def check_span(self, t0: float, t1: float) -> None:
+        """Refuse a span over which the model's linear drifts leave their ranges.
+
+        ``H (1 + ellipticity_drift · t)`` must stay within the dynamical ellipticity's range
+        (``0 < H < 1/2``) and the tidal factors ``1 + tide_spin · t``, ``1 + tide_moon · t``
+        positive, from J2000 (where the axis starts) to either end; all are linear in ``t``, so
+        the ends decide.
+
+        Parameters
+        ----------
+        t0, t1 : float
+            Julian years from J2000.
+
+        Examples
+        --------
+        >>> model = SpinAxisModel.from_dynamical_ellipticity("earth", 0.00327, ellipticity_drift=1e-6)
+        >>> model.check_span(-1000.0, 1000.0)
+        >>> model.check_span(-2e6, 0.0)  # doctest: +ELLIPSIS
+        Traceback (most recent call last):
+        ...
+        ValueError: expected an ellipticity drift that keeps 0 < H < 0.5 over the span, got H = -0.00327 ...
+        """
+        H = self.dynamical_ellipticity()
+        for t in (float(t0), float(t1)):
+            Ht = H * (1 + self.ellipticity_drift * t)
+            if not PARAMETERS["dynamical_ellipticity"].contains(Ht):
+                bounds = PARAMETERS["dynamical_ellipticity"].describe()
+                msg = (
+                    f"expected an ellipticity drift that keeps {bounds} over the span, got H = {Ht:.4g} "
+                    f"at t = {t:g} years (drift {self.ellipticity_drift!r} per year)"
+                )
+                raise ValueError(msg)
+            factors = (1 + self.tide_spin * t, 1 + self.tide_moon * t)
+            if not min(factors) > 0:
+                msg = (
+                    f"expected a span over which the linear tidal model stays positive, got the factor "
+                    f"{min(factors):.4g} at t = {t:g} years"
+                )
+                raise ValueError(msg)
 
     def rate(self, t: ArrayLike, e: ArrayLike | None = None) -> Array:
         """``α(t, e)``, radians per Julian year.

@@ -2,12 +2,13 @@ r"""Norm-preserving, high-order stepping of ``ṡ = α(t) (s·n(t)) (s×n(t))``.
 
 With ``n`` and ``α`` frozen at a time ``τ`` the flow conserves ``s·n`` and is therefore an
 exact rotation of ``s`` about ``n`` by the angle ``θ = −α (s·n) h`` in a time ``h``
-(Rodrigues: ``s cos θ + n×s sin θ + n (n·s)(1 − cos θ)``, with ``1 − cos θ = 2 sin²(θ/2)``).
+(Rodrigues: ``s cos θ + n×s sin θ + n (n·s)(1 − cos θ)``, with ``1 − cos θ = 2 sin²(θ/2)``;
+:func:`~andoyer.compositions.turn_about`, the kernel the secular gravity gradient turns ``M`` with).
 The *exponential midpoint* step ``E(h)``, that rotation with ``n, α`` taken at the middle of
 the step ``t + h/2``, is symmetric (``E(−h)`` from ``t + h`` undoes it: the rotation about
 ``n(t + h/2)`` conserves ``s·n``, so the angle is the same), hence of order 2, and the
 palindromic compositions ``E(γ_S h)⋯E(γ_1 h)`` of
-:data:`~andoyer.integrate.secular_steps.COMPOSITIONS` raise it to order 4, 6 or 8 (Yoshida
+:data:`~andoyer.compositions.COMPOSITIONS` raise it to order 4, 6 or 8 (Yoshida
 1990; Kahan & Li 1997). Every stage is a rotation, so ``|s| = 1`` to round-off; ``s`` is
 also rescaled to unit length after each step so that round-off cannot accumulate.
 
@@ -22,7 +23,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from andoyer._jit import jit
-from andoyer.integrate.secular_steps import COMPOSITIONS, turn_about
+from andoyer.compositions import COMPOSITIONS, turn_about
 
 __all__ = ["rotate_stages", "stage_times"]
 

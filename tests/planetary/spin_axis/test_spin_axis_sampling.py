@@ -1,0 +1,97 @@
+"""A fast precession: the integration step follows it, and outputs that alias it are refused.
+
+Issue 26 item 4: ``--precession-rate 1e10`` printed precession angles that aliased (+35°, +99°):
+``p_A`` is unwrapped between integration steps, so a step of half a precession period or more
+folds it.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from spin_cases import angle
+
+from andoyer.cli import main
+from andoyer.planetary.orbits import VondrakEcliptic
+from andoyer.planetary.spin_axis import (
+    EPSILON_0,
+    SpinAxisModel,
+    general_precession,
+    mean_pole_j2000,
+    output_times,
+    spin_axis_history,
+)
+from andoyer.planetary.spin_axis.history import integrate_axis_dop853
+
+
+def _dense_reference(model, end, count):
+    """DOP853 (rtol 1e-13) at ``count`` times to ``end``: axes and p_A unwrapped between them."""
+    t = np.linspace(0.0, end, count)
+    orbit = VondrakEcliptic()
+    s = integrate_axis_dop853(orbit, model, t, mean_pole_j2000(), rtol=1e-13)
+    p = np.unwrap(general_precession(s, orbit.normal(t), mean_pole_j2000(), orbit.normal(0.0)))
+    return s, p - p[0]
+
+
+def test_fast_precession_accumulates_p_a_at_coarse_outputs():
+    """P = 5000″/yr turns the axis once in 259 years: p_A at 1000 years needs the short step."""
+    model = SpinAxisModel.from_precession_rate("earth", 5000.0, EPSILON_0)
+    s_ref, p_ref = _dense_reference(model, 1000.0, 401)  # 2.5-year spacing: 1/100 turn
+    h = spin_axis_history(VondrakEcliptic(), "earth", [0.0, 1000.0], precession_rate=5000.0)
+    assert angle(h.axis[1], s_ref[-1]) <= 1e-10
+    assert h.precession[1] == pytest.approx(p_ref[-1], abs=1e-9)
+    assert abs(h.precession[1]) > 2 * np.pi * 3  # over three turns, not folded into one
+
+
+def test_largest_turn_is_the_precession_between_outputs():
+    """Earth, Vondrák ecliptic: p_A turns between outputs as IAU 2006's p_A (erfa.p06e) does."""
+    import erfa
+
+    times = output_times(-1000.0, 1000.0, 500.0)
+    h = spin_axis_history(VondrakEcliptic(), "earth", times)
+    p_a = np.array([erfa.p06e(2451545.0, t * 365.25)[12] for t in times])
+    assert h.largest_turn == pytest.approx(np.max(np.abs(np.diff(p_a))), rel=1e-4)
+    single = spin_axis_history(VondrakEcliptic(), "earth", [500.0])
+    assert single.largest_turn == 0.0
+
+
+def test_largest_turn_counts_the_perihelion_from_the_equinox():
+    """With an eccentricity, ϖ from the moving equinox turns faster than p_A (ϖ̇ = p + g)."""
+    from andoyer.planetary.orbits import SecularOrbit
+
+    times = output_times(-20000.0, 20000.0, 2000.0)
+    with_e = spin_axis_history(SecularOrbit("earth"), "earth", times)
+    assert with_e.perihelion is not None
+    cycles = np.unwrap(with_e.perihelion)
+    assert with_e.largest_turn >= np.max(np.abs(np.diff(cycles))) - 1e-12
+    assert with_e.largest_turn > np.max(np.abs(np.diff(with_e.precession)))
+
+
+@pytest.mark.parametrize(
+    ("argv", "refused"),
+    [
+        (["--precession-rate", "7000", "--span", "-1000", "1000", "--step", "500"], True),
+        (["--precession-rate", "7000", "--span", "-1000", "1000", "--step", "50"], False),
+        (["--span", "-200000", "200000", "--step", "20000"], True),  # half of 25.7 kyr is 12.9 kyr
+        (["--span", "-200000", "200000", "--step", "10000"], False),
+    ],
+)
+def test_obliquity_refuses_outputs_that_alias_the_precession(argv, refused, tmp_path, capsys):
+    out = tmp_path / "o.csv"
+    code = main(["obliquity", "earth", *argv, "--format", "csv", "--output", str(out)])
+    err = capsys.readouterr().err
+    if refused:
+        assert code == 2
+        assert "expected --step DT below half the period of the fastest angle printed" in err
+        assert len(err.splitlines()) == 1
+        assert not out.exists()
+    else:
+        assert code == 0, err
+        assert out.exists()
+
+
+def test_obliquity_refuses_a_precession_rate_no_body_can_have(capsys):
+    argv = ["obliquity", "earth", "--precession-rate", "1e10", "--span", "-1000", "1000", "--step", "500"]
+    code = main(argv)
+    assert code == 2
+    assert "expected a precession rate P < 7" in capsys.readouterr().err
