@@ -31,6 +31,7 @@ __all__ = ["MOVED", "install", "new_name"]
 #: Old dotted prefix -> new dotted prefix. An old name ``old.x.y`` maps to ``new.x.y``.
 MOVED: dict[str, str] = {
     "andoyer.orbits": "andoyer.planetary.orbits",
+    "andoyer.orbits.secular": "andoyer.planetary.orbits.laplace_lagrange",
     "andoyer.precession": "andoyer.planetary.precession",
     "andoyer.cassini": "andoyer.planetary.cassini",
     "andoyer.spin_axis": "andoyer.planetary.spin_axis",
@@ -82,7 +83,8 @@ def new_name(fullname: str) -> str | None:
     -------
     str or None
     """
-    for old, new in MOVED.items():
+    # The longest old prefix wins: a module that moved on its own inside a moved package.
+    for old, new in sorted(MOVED.items(), key=lambda item: -len(item[0])):
         if fullname == old or fullname.startswith(old + "."):
             return new + fullname[len(old) :]
     return None

@@ -21,7 +21,8 @@ system (Zeebe & Lourens 2022; 0 = none). Ranges (andoyer.planetary.parameters): 
 (A + B >= C), P > 0 up to the rate of H = 1/2, 0 <= TD <= 1.2. DT must be below half the period
 of the fastest angle printed (the precession, or the perihelion from the equinox), else the
 table would alias it: such a request is refused. Orbit sources: vondrak (the Earth's ecliptic of
-Vondrak et al. 2011, +-200 kyr, no eccentricity), nbody (+-50 Myr), secular, or a table file PATH.
+Vondrak et al. 2011, +-200 kyr, no eccentricity), nbody (+-50 Myr), secular (the long secular model,
++-1 Gyr), laplace-lagrange (the linear theory), or a table file PATH.
 JSON keys: t (years), obliquity (deg), precession (deg, p_A accumulated since J2000), axis (N x 3),
 orbit_normal (N x 3, J2000 ecliptic frame), eccentricity and climatic_precession (e sin varpi,
 varpi heliocentric from the moving equinox; null without eccentricity), precession_rate (arcsec/yr).
@@ -43,7 +44,9 @@ def register(commands: argparse._SubParsersAction) -> None:
         "body", type=str.lower, choices=tuple(DEFAULT_ORBIT), metavar="BODY", help="earth or mars"
     )
     parser.add_argument(
-        "--orbit", metavar="SOURCE", help="vondrak|nbody|secular|PATH (default: earth vondrak, mars nbody)"
+        "--orbit",
+        metavar="SOURCE",
+        help="vondrak|nbody|secular|laplace-lagrange|PATH (default: earth vondrak, mars nbody)",
     )
     parser.add_argument(
         "--span",
