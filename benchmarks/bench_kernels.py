@@ -6,9 +6,9 @@ Side by side, in one process on one core (CPU seconds, best of ``--repeat`` inte
   ``Rotation.__mul__`` (composition of the same rotations, which normalises too);
 * ``andoyer.special.am`` on 10⁶ arguments and parameters; peer: the amplitude of
   ``scipy.special.ellipj`` (Cephes' AGM, less accurate for large ``u`` and ``m → 1``);
-* the compiled amplitude kernel (``andoyer.free.kernels.elliptic.am`` in a numba loop),
+* the compiled amplitude kernel (``andoyer.free.common.elliptic.am`` in a numba loop),
   ns a call, for ``|u| ≤ 2`` and ``m`` uniform in [0, 1];
-* ``andoyer.free.lean.free_step`` (the one-step flow that calls both compiled) on 2·10⁴
+* ``andoyer.free.step_scalar.free_step`` (the one-step flow that calls both compiled) on 2·10⁴
   triaxial states.
 
 Run: ``OMP_NUM_THREADS=1 taskset -c 0 python3 benchmarks/bench_kernels.py [--repeat 7]``.
@@ -33,8 +33,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "src"))
 
 from andoyer._jit import NUMBA, jit
 from andoyer._quaternion import multiply
-from andoyer.free.kernels.elliptic import am as am_kernel
-from andoyer.free.lean import free_step
+from andoyer.free.common.elliptic import am as am_kernel
+from andoyer.free.step_scalar import free_step
 from andoyer.special import am
 
 

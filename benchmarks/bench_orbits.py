@@ -36,7 +36,7 @@ def main() -> None:
     parser.add_argument("--points", type=int, default=100000)
     args = parser.parse_args()
 
-    from andoyer.planetary.orbits import NBodyOrbit, SecularOrbit, VondrakEcliptic
+    from andoyer.planetary.orbits import LaplaceLagrangeOrbit, NBodyOrbit, SecularOrbit, VondrakEcliptic
     from andoyer.planetary.orbits.nbody import make_simulation
 
     print(f"N-body cost, CPU s per simulated kyr ({args.years:g} yr; IAS15 over {args.peer_years:g} yr)")
@@ -62,7 +62,14 @@ def main() -> None:
         os.environ["ANDOYER_CACHE_DIR"] = folder
         nbody = NBodyOrbit("earth", progress=False)
         nbody.normal([-2e4, 2e4])  # integrate once (cached), outside the clock
-        sources = {"vondrak": VondrakEcliptic(), "secular": SecularOrbit("earth"), "nbody (cached)": nbody}
+        secular = SecularOrbit("earth")
+        secular.normal([-2e4, 2e4])  # integrate once, outside the clock
+        sources = {
+            "vondrak": VondrakEcliptic(),
+            "laplace-lagrange": LaplaceLagrangeOrbit("earth"),
+            "secular (integrated)": secular,
+            "nbody (cached)": nbody,
+        }
         print(f"normal(t) on {args.points} times, CPU seconds (best of 5)")
         for name, orbit in sources.items():
             seconds = cpu(lambda orbit=orbit: orbit.normal(t), repeat=5)

@@ -1,16 +1,16 @@
 """The uniform motions (regular precession, spheres, steady spins, rest) on both paths, and one body.
 
-The kernels of :mod:`andoyer.free.kernels.uniform` run per state compiled
-(:mod:`andoyer.free.compiled_uniform`, ``FreeMotion`` with the compiled backend) and on whole
-arrays (:mod:`andoyer.free.uniform`, the numpy backend). CPU-independent wall times, best of
+The kernels of :mod:`andoyer.free.uniform` run per state compiled (``setup_compiled``,
+``evaluate_compiled``: ``FreeMotion`` with the compiled backend) and on whole arrays
+(``setup_numpy``, ``evaluate_numpy``: the numpy backend). CPU-independent wall times, best of
 ``--repeat``:
 
 * ``FreeMotion`` of one Earth-like axisymmetric body (set-up and periods, with an attitude;
-  without), and ``compiled_uniform.uniform_table`` alone for that body (µs);
+  without), and ``setup_compiled.uniform_table`` alone for that body (µs);
 * 10⁵ axisymmetric bodies: ``FreeMotion`` set-up on each backend, ``uniform_axes`` plus
   ``uniform`` (the numpy set-up alone) and ``propagate`` at 8 epochs (ms); the peer of the
   numpy path is the compiled one, run side by side;
-* ``lean.free_step`` on 10⁴ axisymmetric states (ns a state).
+* ``step_scalar.free_step`` on 10⁴ axisymmetric states (ns a state).
 
 Run: ``OMP_NUM_THREADS=1 python3 benchmarks/bench_uniform.py [--repeat 7]``.
 """
@@ -30,9 +30,9 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "src"))
 
-from andoyer.free import compiled_uniform, uniform
-from andoyer.free.lean import free_step
 from andoyer.free.motion import FreeMotion
+from andoyer.free.step_scalar import free_step
+from andoyer.free.uniform import setup_compiled, setup_numpy
 from andoyer.regime import Regime
 
 
@@ -60,8 +60,8 @@ def main():
     no_q = best(lambda: FreeMotion(mom, m), 200 * r)
     print(f"FreeMotion, one body, no attitude       {1e6 * no_q:8.1f} µs")
     one = (mom[None], m[None], np.array([Regime.AXISYMMETRIC]), q[None] / np.linalg.norm(q))
-    compiled_uniform.uniform_table(*one)
-    table = best(lambda: compiled_uniform.uniform_table(*one), 700 * r)
+    setup_compiled.uniform_table(*one)
+    table = best(lambda: setup_compiled.uniform_table(*one), 700 * r)
     print(f"uniform_table, one body                 {1e6 * table:8.2f} µs")
     rng = np.random.default_rng(0)
     n = 10**5
@@ -78,7 +78,7 @@ def main():
         print(f"10^5 bodies, {backend:8s}: set-up {1e3 * setup:7.1f} ms, 8 epochs {1e3 * prop:7.1f} ms")
     regime = np.full(n, Regime.AXISYMMETRIC)
     qn = q0 / np.linalg.norm(q0, axis=1)[:, None]
-    alone = best(lambda: uniform.uniform(m0, *uniform.uniform_axes(M, m0, regime), qn), r)
+    alone = best(lambda: setup_numpy.uniform(m0, *setup_numpy.uniform_axes(M, m0, regime), qn), r)
     print(f"10^5 bodies, uniform_axes + uniform     {1e3 * alone:8.1f} ms")
     k = 10**4
     free_step(M[:k], qn[:k], m0[:k], 0.1)

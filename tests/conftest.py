@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import os
 import stat
+import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -126,6 +128,10 @@ def run_cli(capsys):
 # --- the free solution's backends (tests/free; the drivers in tests/free/free_backends.py) ---
 # Here rather than in tests/free/conftest.py: a second module named conftest would replace this
 # one for every test that imports its helpers with ``from conftest import ...``.
+# The helpers of tests/free (free_backends, free_cases, free_reference) serve its subfolders
+# too (tests/free/triaxial, ...), whichever test is collected first.
+if str(Path(__file__).parent / "free") not in sys.path:
+    sys.path.append(str(Path(__file__).parent / "free"))
 
 _MOTION_BACKENDS = [b for b in free_backends.available() if b in free_backends.MOTION_BACKENDS]
 

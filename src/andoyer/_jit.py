@@ -186,7 +186,7 @@ def jit(function=None, *, inline=False):
     A kernel compiled (or not) this way is called like any function; Carlson's
     ``R_F(0, 1, 2)`` (DLMF 19.20.1: the lemniscate constant ``Γ(1/4)²/(4√(2π))``):
 
-    >>> from andoyer.free.kernels.elliptic import carlson_rf
+    >>> from andoyer.free.common.elliptic import carlson_rf
     >>> round(float(carlson_rf(0.0, 1.0, 2.0)), 13)
     1.3110287771461
     """

@@ -17,12 +17,22 @@ used is :func:`spin_rate`, ``|m| / min(I)``, a bound on every phase rate of the 
 motion (the angular velocity, the polhode frequency ``2π/T`` and the precession rate).
 
 **Sizes.** :func:`check_size` refuses, before anything is allocated, a run that needs
-more memory than the machine has (:func:`memory_limit`: the physical memory) or longer
-than :data:`MAX_STEPS` elementary steps (a state's Strang substep), about 3.6 hours at the
-compiled splitting's measured 1.3 µs (slower steps, e.g. DOP853's, count for their
-measured cost); the message gives what the request would need. :func:`progress` shows a
-progress bar on standard error for long runs when the command line asked for it
-(:func:`show_progress`).
+more memory than it may still take (:func:`memory_limit`: the least of the physical
+memory, what ``ulimit -v`` leaves above the address space in use, and what a control
+group's memory limit leaves above its use) or longer than :data:`MAX_STEPS` elementary
+steps (a state's Strang substep), about 3.6 hours at the compiled splitting's measured
+1.3 µs (slower steps, e.g. DOP853's, count for their measured cost; work measured in
+seconds counts as such); the message gives what the request would need. Every command's
+estimate is an upper bound of what it allocates, so that a request accepted here does not
+fail later for want of memory.
+
+**Long runs.** :func:`progress` shows a progress bar on standard error for long runs when
+the command line asked for it (:func:`show_progress`), on a terminal; :func:`announce` says
+once, on standard error whether or not it is a terminal, that a run estimated past
+:data:`ANNOUNCE_SECONDS` starts, how long it should take and where its work is kept. A run
+stopped by Ctrl-C (SIGINT) that kept part of its work raises :class:`Interrupted` (a
+:class:`KeyboardInterrupt`) saying what it kept; the command line prints that one line and
+exits with status 130.
 """
 
 from __future__ import annotations
@@ -40,17 +50,21 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 __all__ = [
+    "ANNOUNCE_SECONDS",
     "MAX_STEPS",
     "PHASE_ERROR_LIMIT",
     "PHASE_WARN_DIGITS",
     "PHASE_WARN_LIMIT",
     "STEP_SECONDS",
+    "Interrupted",
     "PhasePrecisionWarning",
+    "announce",
     "caller_stacklevel",
     "check_phase",
     "check_size",
     "check_spin_phase",
     "format_bytes",
+    "format_duration",
     "memory_limit",
     "progress",
     "show_progress",
@@ -69,9 +83,24 @@ PHASE_ERROR_LIMIT = 2.0**52
 STEP_SECONDS = 1.3e-6
 #: Most elementary steps of one run (states × substeps): about 3.6 hours at ``STEP_SECONDS``.
 MAX_STEPS = 10**10
+#: Estimated seconds of work past which :func:`announce` tells the command line's user.
+ANNOUNCE_SECONDS = 10.0
 
 _PACKAGE = str(Path(__file__).resolve().parent)
 _NO_CONTEXT = nullcontext()
+
+
+class Interrupted(KeyboardInterrupt):
+    """A run stopped by Ctrl-C (SIGINT); its message says, in one line, what was kept.
+
+    A :class:`KeyboardInterrupt`, so that code catching those still does. The command line
+    prints ``andoyer COMMAND: interrupted; MESSAGE`` and exits with status 130.
+
+    Examples
+    --------
+    >>> str(Interrupted("kept 1.2 Myr of the orbit in /tmp/cache"))
+    'kept 1.2 Myr of the orbit in /tmp/cache'
+    """
 
 
 class PhasePrecisionWarning(UserWarning):
@@ -227,10 +256,61 @@ def check_spin_phase(
     check_phase(spin_rate(moments, m), t, what)
 
 
-def memory_limit() -> int:
-    """Bytes one run may allocate: the machine's physical memory (``SC_PHYS_PAGES · SC_PAGE_SIZE``).
+def _address_space() -> int:
+    """Bytes of address space this process maps now (``/proc/self/statm``; 0 where unknown)."""
+    try:
+        with open("/proc/self/statm", encoding="ascii") as statm:
+            return int(statm.read().split()[0]) * int(os.sysconf("SC_PAGE_SIZE"))
+    except (OSError, ValueError, IndexError, AttributeError):
+        return 0
 
-    Falls back to 16 GiB where the operating system does not say.
+
+def _read_number(path: str) -> int | None:
+    try:
+        with open(path, encoding="ascii") as f:
+            text = f.read().strip()
+    except OSError:
+        return None
+    return int(text) if text.isdigit() else None
+
+
+def _cgroup_room() -> int | None:
+    """What the memory limit of this process's control group leaves above its use (``None``: no limit).
+
+    cgroup v2 (``memory.max`` less ``memory.current``) or v1 (``memory.limit_in_bytes`` less
+    ``memory.usage_in_bytes``), at the group ``/proc/self/cgroup`` names, else at the root of
+    the mount (a container sees its own group there).
+    """
+    try:
+        with open("/proc/self/cgroup", encoding="ascii") as f:
+            lines = f.read().splitlines()
+    except OSError:
+        return None
+    rooms = []
+    for line in lines:
+        _, controllers, path = [*line.split(":", 2), "", ""][:3]
+        if controllers == "":
+            files = ("/sys/fs/cgroup{}/memory.max", "/sys/fs/cgroup{}/memory.current")
+        elif "memory" in controllers.split(","):
+            v1 = "/sys/fs/cgroup/memory{}/memory."
+            files = (v1 + "limit_in_bytes", v1 + "usage_in_bytes")
+        else:
+            continue
+        for where in dict.fromkeys((path.rstrip("/"), "")):
+            limit, used = (_read_number(name.format(where)) for name in files)
+            if limit is not None:
+                rooms.append(limit - (used or 0))
+                break
+    return min(rooms) if rooms else None
+
+
+def memory_limit() -> int:
+    """Bytes one run may still allocate.
+
+    The least of the machine's physical memory (``SC_PHYS_PAGES · SC_PAGE_SIZE``, 16 GiB where
+    the operating system does not say), what the address-space limit (``ulimit -v``,
+    ``RLIMIT_AS``) leaves above the address space this process maps now, and what the memory
+    limit of its control group leaves above the group's use.
 
     Examples
     --------
@@ -238,9 +318,21 @@ def memory_limit() -> int:
     True
     """
     try:
-        return int(os.sysconf("SC_PHYS_PAGES")) * int(os.sysconf("SC_PAGE_SIZE"))
+        limits = [int(os.sysconf("SC_PHYS_PAGES")) * int(os.sysconf("SC_PAGE_SIZE"))]
     except (AttributeError, ValueError, OSError):
-        return 16 * 2**30
+        limits = [16 * 2**30]
+    try:
+        import resource
+
+        soft = resource.getrlimit(resource.RLIMIT_AS)[0]
+        if soft != resource.RLIM_INFINITY:
+            limits.append(soft - _address_space())
+    except (ImportError, OSError, ValueError):
+        pass
+    room = _cgroup_room()
+    if room is not None:
+        limits.append(room)
+    return max(0, min(limits))
 
 
 def format_bytes(n: float) -> str:
@@ -259,10 +351,33 @@ def format_bytes(n: float) -> str:
     return f"{n:.0f} {units[k]}" if k == 0 else f"{n:.3g} {units[k]}"
 
 
+def format_duration(seconds: float) -> str:
+    """A duration in the largest unit that keeps it above one.
+
+    Examples
+    --------
+    >>> format_duration(42.0), format_duration(754.0), format_duration(3.6 * 3600), format_duration(4e5)
+    ('42 s', '13 minutes', '3.6 hours', '4.6 days')
+    """
+    if not seconds < 3600 * 24 * 365.25 * 1e6:  # also NaN
+        return f"{seconds / (3600 * 24 * 365.25):.2g} years"
+    if seconds < 99.5:
+        return f"{seconds:.0f} s"
+    if seconds < 3600 * 1.5:
+        return f"{seconds / 60:.0f} minutes"
+    if seconds < 86400 * 1.5:
+        return f"{seconds / 3600:.2g} hours"
+    return f"{seconds / 86400:.2g} days"
+
+
 def check_size(
-    what: str, steps: float = 0.0, nbytes: float = 0.0, step_seconds: float = STEP_SECONDS
+    what: str,
+    steps: float = 0.0,
+    nbytes: float = 0.0,
+    step_seconds: float = STEP_SECONDS,
+    seconds: float = 0.0,
 ) -> None:
-    """Refuse, before it starts, a run of ``steps`` steps allocating ``nbytes`` bytes.
+    """Refuse, before it starts, a run of ``steps`` steps (or ``seconds``) allocating ``nbytes`` bytes.
 
     Parameters
     ----------
@@ -275,6 +390,8 @@ def check_size(
     step_seconds : float
         Measured seconds per step (default :data:`STEP_SECONDS`); ``steps · step_seconds``
         is at most :data:`MAX_STEPS` ``·`` :data:`STEP_SECONDS` (about 3.6 hours).
+    seconds : float
+        Estimated seconds of work not counted in steps (added to ``steps · step_seconds``).
 
     Raises
     ------
@@ -293,6 +410,10 @@ def check_size(
     ...
     ValueError: expected a test of at most 1e+10 steps (about 3.6 hours),
     got 1e+15 steps (about 3.6e+05 hours)
+    >>> check_size("a test", seconds=7.2e4)
+    Traceback (most recent call last):
+    ...
+    ValueError: expected a test of at most about 3.6 hours, got one of about 20 hours
     """
     limit = memory_limit()
     if not nbytes <= limit:
@@ -302,6 +423,13 @@ def check_size(
         )
         raise ValueError(msg)
     budget = MAX_STEPS * STEP_SECONDS
+    if seconds and not steps * step_seconds + seconds <= budget:
+        total = steps * step_seconds + seconds
+        msg = (
+            f"expected {what} of at most about {budget / 3600:.2g} hours, "
+            f"got one of about {format_duration(total)}"
+        )
+        raise ValueError(msg)
     if not steps * step_seconds <= budget:
         msg = (
             f"expected {what} of at most {budget / step_seconds:.2g} steps "
@@ -311,14 +439,15 @@ def check_size(
         raise ValueError(msg)
 
 
-_SHOW = {"enabled": False}
+_SHOW: dict[str, Any] = {"enabled": False, "prefix": "andoyer"}
 
 
 @contextmanager
-def show_progress(enabled: bool = True) -> Iterator[None]:
-    """Let :func:`progress` draw its bars (on standard error, if it is a terminal) inside this block.
+def show_progress(enabled: bool = True, prefix: str = "andoyer") -> Iterator[None]:
+    """Let :func:`progress` and :func:`announce` speak (on standard error) inside this block.
 
-    The command line turns it on; library calls stay silent.
+    The command line turns it on, with ``prefix`` its name (``andoyer obliquity``); library
+    calls stay silent.
 
     Examples
     --------
@@ -326,12 +455,57 @@ def show_progress(enabled: bool = True) -> Iterator[None]:
     ...     if bar is not None:
     ...         _ = bar.update(10)
     """
-    before = _SHOW["enabled"]
-    _SHOW["enabled"] = enabled
+    before = dict(_SHOW)
+    _SHOW.update(enabled=enabled, prefix=prefix)
     try:
         yield
     finally:
-        _SHOW["enabled"] = before
+        _SHOW.update(before)
+
+
+def announce(
+    seconds: float, what: str, where: str | os.PathLike[str] | None = None, stream: Any = None
+) -> bool:
+    r"""Say once, on ``stream`` (standard error), that a run of about ``seconds`` starts.
+
+    Only inside :func:`show_progress` (the command line) and only for runs estimated past
+    :data:`ANNOUNCE_SECONDS`; unlike a progress bar, also when standard error is not a
+    terminal (a log file, a batch job), so that a long wait is never silent.
+
+    Parameters
+    ----------
+    seconds : float
+        The estimate.
+    what : str
+        The work, e.g. ``"integrating 12 Myr of the Solar System"``.
+    where : str or path-like, optional
+        Where its result is kept (a cache folder).
+    stream : file, optional
+        Default ``sys.stderr``.
+
+    Returns
+    -------
+    bool
+        Whether it spoke.
+
+    Examples
+    --------
+    >>> import io
+    >>> out = io.StringIO()
+    >>> with show_progress(prefix="andoyer demo"):
+    ...     announce(754.0, "integrating 9 Myr of the Solar System", "/tmp/cache", out)
+    True
+    >>> out.getvalue()
+    'andoyer demo: integrating 9 Myr of the Solar System, about 13 minutes (kept in /tmp/cache)\n'
+    >>> announce(754.0, "quiet outside the command line", stream=out)
+    False
+    """
+    if not (_SHOW["enabled"] and seconds > ANNOUNCE_SECONDS):
+        return False
+    stream = sys.stderr if stream is None else stream
+    kept = "" if where is None else f" (kept in {os.fspath(where)})"
+    print(f"{_SHOW['prefix']}: {what}, about {format_duration(seconds)}{kept}", file=stream, flush=True)
+    return True
 
 
 @contextmanager

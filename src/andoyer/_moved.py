@@ -31,6 +31,7 @@ __all__ = ["MOVED", "install", "new_name"]
 #: Old dotted prefix -> new dotted prefix. An old name ``old.x.y`` maps to ``new.x.y``.
 MOVED: dict[str, str] = {
     "andoyer.orbits": "andoyer.planetary.orbits",
+    "andoyer.orbits.secular": "andoyer.planetary.orbits.laplace_lagrange",
     "andoyer.precession": "andoyer.planetary.precession",
     "andoyer.cassini": "andoyer.planetary.cassini",
     "andoyer.spin_axis": "andoyer.planetary.spin_axis",
@@ -47,6 +48,26 @@ MOVED: dict[str, str] = {
     "andoyer.hamiltonians": "andoyer.state",
     "andoyer.state_charts": "andoyer.state.hub",
     "andoyer.free.rotation": "andoyer.free_rotation",
+    "andoyer.free.kernels.elliptic": "andoyer.free.common.elliptic",
+    "andoyer.free.kernels.frame": "andoyer.free.common.polhode",
+    "andoyer.free.kernels.piecewise": "andoyer.free.triaxial.periodic",
+    "andoyer.free.kernels.series": "andoyer.free.triaxial.evaluate",
+    "andoyer.free.kernels.triaxial": "andoyer.free.triaxial.setup",
+    "andoyer.free.kernels.uniform": "andoyer.free.uniform.setup",
+    "andoyer.free.kernels": "andoyer.free.common",  # after its modules: the first prefix that matches wins
+    "andoyer.free.blocks": "andoyer.free.common.blocks",
+    "andoyer.free.compiled_eval": "andoyer.free.triaxial.evaluate_compiled",
+    "andoyer.free.compiled_regime": "andoyer.free.common.scaling_compiled",
+    "andoyer.free.compiled_setup": "andoyer.free.triaxial.setup_compiled",
+    "andoyer.free.compiled_uniform": "andoyer.free.uniform.evaluate_compiled",
+    "andoyer.free.constants": "andoyer.free.common.constants",
+    "andoyer.free.lean": "andoyer.free.step_scalar",
+    "andoyer.free.periodic": "andoyer.free.triaxial.periodic_numpy",
+    "andoyer.free.phase": "andoyer.free.common.cycles_numpy",
+    "andoyer.free.quaternion": "andoyer.free.common.polhode_numpy",
+    "andoyer.free.regime": "andoyer.free.common.polhode_numpy",
+    "andoyer.free.series": "andoyer.free.triaxial.evaluate_numpy",
+    "andoyer.free.table": "andoyer.free.triaxial.columns",
 }
 
 
@@ -62,7 +83,8 @@ def new_name(fullname: str) -> str | None:
     -------
     str or None
     """
-    for old, new in MOVED.items():
+    # The longest old prefix wins: a module that moved on its own inside a moved package.
+    for old, new in sorted(MOVED.items(), key=lambda item: -len(item[0])):
         if fullname == old or fullname.startswith(old + "."):
             return new + fullname[len(old) :]
     return None

@@ -25,7 +25,7 @@ whatever the rest.
 :func:`regime_code` is that decision for one state, written once with
 :func:`andoyer._jit.select` instead of ``if`` (and :func:`andoyer._jit.every` for its one
 branch, the rescaling of extreme magnitudes): compiled by numba it runs per state in a loop
-(:func:`andoyer.free.compiled_regime.classify_and_scale`), and called from Python it runs
+(:func:`andoyer.free.common.scaling_compiled.classify_and_scale`), and called from Python it runs
 on whole arrays (:func:`classify`, :meth:`andoyer.RigidBody.regime`), with the same result
 bit for bit.
 """

@@ -88,9 +88,11 @@ VALID: dict[str, Valid] = {
         (
             "cassini moon --format json --output {out}",
             (
-                "cassini mercury --j2 5.03e-5 --c22 0.81e-5 --moment-of-inertia 0.346 "
-                "--node-period 325000 --inclination 8.6 --format table"
+                "cassini --j2 5.03e-5 --c22 0.81e-5 --moment-of-inertia 0.346 --orbital-period 87.97 "
+                "--eccentricity 0.2056 --node-period 325000 --inclination 8.6 --mass-ratio 1.66e-7 "
+                "--resonance 1.5 --format table"
             ),
+            "cassini titan --node model --obliquity 0.32 --obliquity-error 0.02 --format json",
         ),
         "--output",
     ),
@@ -141,8 +143,9 @@ VALID: dict[str, Valid] = {
         (
             "portrait cassini --body moon --levels 3 --dpi 20 --out {out}",
             (
-                "portrait cassini --body mercury --j2 5.03e-5 --c22 0.81e-5 --moment-of-inertia 0.346 "
-                "--node-period 325000 --inclination 8.6 --levels 3 --dpi 20 --out {out}"
+                "portrait cassini --j2 5.03e-5 --c22 0.81e-5 --moment-of-inertia 0.346 "
+                "--orbital-period 87.97 --eccentricity 0.2056 --node-period 325000 --inclination 8.6 "
+                "--mass-ratio 1.66e-7 --resonance 1.5 --levels 3 --dpi 20 --out {out}"
             ),
         ),
         "--out",
@@ -164,6 +167,18 @@ VALID: dict[str, Valid] = {
 #: (issue 18 item 11): the command either refuses it in one line (a chart that needs the
 #: triangle inequality) or runs, with one warning line naming the triangle inequality.
 WARNS = {("--moments", "1e300")}
+
+#: Requests refused for their size (issue 26): (command, case, argument line).
+REFUSALS = (
+    ("obliquity", "steps", "obliquity earth --orbit secular --span -1e12 0 --step 1e10 --output {out}"),
+    ("obliquity", "rows", "obliquity earth --span -190000 0 --step 0.0001 --format table --output {out}"),
+    ("nutation", "time", "nutation earth --span 0 200000 --step 1000 --output {out}"),
+    ("precession", "memory", "precession earth --integrate 1e9 --output {out}"),
+    ("portrait cassini", "levels", "portrait cassini --levels 100000000 --out {out}"),
+    ("portrait phase", "levels", "portrait phase --body eros --levels 100000 --out {out}"),
+    ("portrait sphere", "levels", "portrait sphere --body eros --levels 100000 --out {out}"),
+    ("portrait precession", "points", "portrait precession --moments 1 1 1.5 --steps 100000000 --out {out}"),
+)
 
 INPUT_CSV = "phi,theta,psi,Phi,Theta,Psi\n0.3,0.8,1.2,0.5,0.2,0.9\n1.0,0.41,0.0,0.9,0.0,0.98\n"
 BAD_NUMBERS = ("nan", "inf", "-inf", "-1e300", "1e300")
@@ -248,6 +263,10 @@ def mutations() -> list:
                     ("empty", ""),
                 ):
                     add(name, "output", f"{k}:{case}", (*argv[:i], path, *argv[i + 1 :]))
+    # Requests too large for memory or time, or drawing without bound (issue 26), refused before
+    # any work with what they would need.
+    for name, case, line in REFUSALS:
+        add(name, "size", case, tuple(line.split()))
     # Positional choices (precession's body) and an unknown sub-command.
     add("precession", "choice", "body", ("precession", "pluto"))
     add("bodies", "choice", "name", ("bodies", "vulcan"))

@@ -63,7 +63,7 @@ def test_obliquity_span_outside_vondrak_points_to_the_other_sources(capsys):
     code, err = run(["obliquity", "earth", "--span", "-1000000", "0"], capsys)
     assert code == 2
     assert "within the vondrak orbit's span -200000 to 200000 years" in err
-    assert "--orbit nbody or --orbit secular reach it" in err
+    assert "--orbit nbody or --orbit secular or --orbit laplace-lagrange reach it" in err
     argv = ["obliquity", "earth", "--orbit", "secular", "--span", "-1e6", "0", "--step", "1e5"]
     code, err = run(argv, capsys)
     assert code == 2  # 1e5 years aliases the precession, but the span is the secular theory's

@@ -22,6 +22,7 @@ from scipy.spatial.transform import Rotation
 
 import andoyer
 import andoyer.planetary.cassini
+import andoyer.planetary.cassini as cassini_api
 import andoyer.planetary.nutation
 import andoyer.planetary.precession
 import andoyer.planetary.spin_axis
@@ -57,19 +58,24 @@ from andoyer.planetary.nutation import (
     minimum_span,
     numeric_terms,
     nutation,
+    nutation_cost,
     nutation_series,
     terms_table,
 )
 from andoyer.planetary.orbits import (
+    LaplaceLagrangeOrbit,
     NBodyOrbit,
     SecularOrbit,
     TableOrbit,
     VondrakEcliptic,
     check_times,
+    fundamental_frequencies,
+    lyapunov_exponent,
     orbit_history,
     read_alkhqp,
     read_orbit_csv,
     source_span,
+    spectral_lines,
     write_orbit_csv,
 )
 from andoyer.planetary.parameters import PARAMETERS, Parameter, check
@@ -90,6 +96,8 @@ from andoyer.planetary.spin_axis import (
     evolve_axes,
     general_precession,
     output_times,
+    run_cost,
+    spin_axis_blocks,
     spin_axis_history,
 )
 from andoyer.planetary.tides import (
@@ -342,6 +350,16 @@ CASES = [
     (NBodyOrbit, NBodyOrbit, ("pluto",), ValueError, "expected a planet"),
     (NBodyOrbit, P(NBodyOrbit, step_days=NAN), ("earth",), ValueError, "expected"),
     (SecularOrbit, SecularOrbit, ("pluto",), ValueError, "expected a planet"),
+    (SecularOrbit, P(SecularOrbit, step=NAN), ("earth",), ValueError, "expected an integration step"),
+    (SecularOrbit, SecularOrbit("mars").normal, (-HUGE,), ValueError, "expected times within"),
+    (LaplaceLagrangeOrbit, LaplaceLagrangeOrbit, ("pluto",), ValueError, "expected a planet"),
+    (LaplaceLagrangeOrbit, P(LaplaceLagrangeOrbit, frequencies="bvw"), ("earth",), ValueError, "expected"),
+    (spectral_lines, spectral_lines, ([0j] * 10, 1.0), ValueError, "expected a finite 1-d signal"),
+    (spectral_lines, spectral_lines, ([NAN] * 100, 1.0), ValueError, "expected a finite 1-d signal"),
+    (fundamental_frequencies, fundamental_frequencies, ([[0j] * 10], [[0j] * 10], 1.0, [1.0], [-1.0]),
+     ValueError, "expected"),
+    (lyapunov_exponent, P(lyapunov_exponent, span=NAN), (), ValueError, "expected a nonzero span"),
+    (lyapunov_exponent, P(lyapunov_exponent, separation=1.0), (), ValueError, "expected 0 < separation"),
     (TableOrbit, TableOrbit, ([0.0, 1.0], [[0, 0, 1], [0, 0, 1]]), ValueError, "expected at least 4 rows"),
     (TableOrbit, TableOrbit, ([0.0, 1.0, 2.0, NAN], [[0, 0, 1]] * 4), ValueError, "expected"),
     (check_times, check_times, (NAN, (-1.0, 1.0), "x"), ValueError, "expected finite"),
@@ -414,6 +432,21 @@ CASES = [
         "expected",
     ),
     (output_times, output_times, (0.0, 1.0, -1.0), ValueError, "expected a positive"),
+    # -- their cost, known before the work (issue 26)
+    (run_cost, run_cost, (VondrakEcliptic(), [NAN]), ValueError, "expected finite"),
+    (run_cost, P(run_cost, step=INF), (VondrakEcliptic(), [0.0]), ValueError, "expected a positive finite"),
+    (run_cost, run_cost, (VondrakEcliptic(), [1.0, 0.0]), ValueError, "expected increasing"),
+    (
+        andoyer.planetary.spin_axis.check_run,
+        andoyer.planetary.spin_axis.check_run,
+        (SecularOrbit("earth"), [0.0, 1e15], "a test"),
+        ValueError,
+        "expected a test of at most about 3.6 hours",
+    ),
+    (spin_axis_blocks, spin_axis_blocks, (VondrakEcliptic(), "pluto", [0.0]), ValueError, "expected"),
+    (spin_axis_blocks, P(spin_axis_blocks, rows=0), (VondrakEcliptic(), "earth", [0]), ValueError, "whole"),
+    (nutation_cost, nutation_cost, ([NAN],), ValueError, "expected finite"),
+    (nutation_cost, P(nutation_cost, method="x"), ([0.0],), ValueError, "expected method"),
     (output_times, output_times, (0.0, HUGE, 1e-300), ValueError, "expected"),
     # -- the Earth–Moon tides
     (ConstantTimeLag, ConstantTimeLag, (-1.0,), ValueError, "expected k2"),
@@ -448,13 +481,67 @@ CASES = [
     (CassiniBody, CassiniBody, ("x", 1e-4, -1e-5, 0.3, 1.0, 0.0, 0.1, -0.01), ValueError, "C22 >= 0"),
     (ColomboTop, ColomboTop, (NAN, 0.0, -0.01, 0.1), ValueError, "expected finite"),
     (eccentricity_function, eccentricity_function, (1.5, 1.0), ValueError, "expected"),
-    (andoyer.planetary.cassini.get, andoyer.planetary.cassini.get, ("pluto",), ValueError, "expected a body"),
+    (
+        andoyer.planetary.cassini.get,
+        andoyer.planetary.cassini.get,
+        ("vulcan",),
+        ValueError,
+        "expected a body",
+    ),
+    (andoyer.planetary.cassini.get, andoyer.planetary.cassini.get, ("triton",), ValueError, "to have gm"),
     (
         andoyer.planetary.cassini.states,
         andoyer.planetary.cassini.states,
-        ("pluto",),
+        ("vulcan",),
         ValueError,
         "expected a body",
+    ),
+    (
+        cassini_api.forced_obliquity,
+        cassini_api.forced_obliquity,
+        ("moon", "jpl"),
+        ValueError,
+        "expected node",
+    ),
+    (cassini_api.forced_obliquity, cassini_api.forced_obliquity, ("enceladus",), ValueError, "to have"),
+    (
+        cassini_api.satellite_system,
+        cassini_api.satellite_system,
+        ("mars",),
+        ValueError,
+        "expected satellites",
+    ),
+    (cassini_api.NodeMode, cassini_api.NodeMode, (0.1, 0.01), ValueError, "expected node_rate < 0"),
+    (cassini_api.NodeMode, cassini_api.NodeMode, (-0.1, NAN), ValueError, "expected finite"),
+    (
+        cassini_api.ForcedObliquity,
+        cassini_api.ForcedObliquity,
+        ("moon", ()),
+        ValueError,
+        "expected a CassiniBody",
+    ),
+    (cassini_api.Satellite, cassini_api.Satellite, ("s", 1.0, -1.0, 1.0), ValueError, "expected gm >= 0"),
+    (cassini_api.Satellite, cassini_api.Satellite, ("s", 1.0, INF, 1.0), ValueError, "expected a finite"),
+    (
+        cassini_api.SatelliteSystem,
+        cassini_api.SatelliteSystem,
+        (1.0, 1.0, NAN, 0.1, 1e-6, (cassini_api.Satellite("s", 0.0, 3.0, 0.2),)),
+        ValueError,
+        "expected finite",
+    ),
+    (
+        cassini_api.moment_of_inertia_from_obliquity,
+        cassini_api.moment_of_inertia_from_obliquity,
+        ("titan", NAN),
+        ValueError,
+        "expected an observed obliquity",
+    ),
+    (
+        cassini_api.moment_of_inertia_from_obliquity,
+        cassini_api.moment_of_inertia_from_obliquity,
+        ("titan", 0.005, HUGE),
+        ValueError,
+        "expected an obliquity error",
     ),
     # -- nutation
     (nutation, nutation, ([NAN],), ValueError, "expected finite"),
@@ -498,6 +585,10 @@ EXEMPT = {
     "TidalHistory": "a record of results",
     "NutationSeries": "a record of results",
     "CassiniState": "a record of results",
+    "LaplaceModes": "a record of results (SatelliteSystem.modes, in the table)",
+    "ModeResponse": "a record of results (ForcedObliquity.responses)",
+    "MomentEstimate": "a record of results (moment_of_inertia_from_obliquity, in the table)",
+    "NODE_SOURCES": "a constant",
     "mean_pole_j2000": "takes no argument",
     # constants of the applications
     "AXES": "a constant",

@@ -5,6 +5,7 @@ from __future__ import annotations
 import importlib
 import subprocess
 import sys
+import warnings
 
 import pytest
 
@@ -20,6 +21,11 @@ def _forget_old_names():
 
 @pytest.mark.parametrize(("old", "new"), sorted(MOVED.items()))
 def test_moved_old_name_is_new_module(old, new):
+    parent = old.rpartition(".")[0]
+    if new_name(parent) is not None:  # a moved package warns for itself (andoyer.free.kernels)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", DeprecationWarning)
+            importlib.import_module(parent)
     with pytest.warns(DeprecationWarning, match=f"{old} moved to {new}"):
         module = importlib.import_module(old)
     assert module is importlib.import_module(new)

@@ -21,7 +21,7 @@ from hypothesis import strategies as st
 import andoyer
 from andoyer._jit import jit
 from andoyer.body import NonPhysicalInertiaWarning, RigidBody
-from andoyer.free.compiled_regime import classify_and_scale
+from andoyer.free.common.scaling_compiled import classify_and_scale
 from andoyer.regime import Regime, classify, regime_code, regime_names
 
 

@@ -4,7 +4,7 @@ Three implementations of the torque-free solution (:mod:`andoyer.free.backends`)
 
 * ``"compiled"`` and ``"numpy"``: :class:`andoyer.free.FreeMotion` with that ``backend``;
   every operation (momentum, attitude, periods, regime) in every regime.
-* ``"scalar"``: the one-step kernel of :mod:`andoyer.free.lean` (``_step_one``, compiled when
+* ``"scalar"``: the one-step kernel of :mod:`andoyer.free.step_scalar` (``_step_one``, compiled when
   numba is available), driven here from the initial state to each time ``t`` in one step of
   length ``t``.  It has no set-up, hence no periods and no regime: only the flow ``(m(t),
   q(t))``.  It refuses states within ``10⁻¹²`` of the separatrix (``free_step`` would hand
@@ -29,7 +29,8 @@ import numpy as np
 import pytest
 from free_cases import cases
 
-from andoyer.free import FreeMotion, backends, lean
+from andoyer.free import FreeMotion, backends
+from andoyer.free import step_scalar as lean
 
 #: The backends that run here, and those of them that FreeMotion offers.
 AVAILABLE = backends.available()

@@ -93,7 +93,7 @@ def test_scalar_shapes():
 
 def test_long_time_series_is_chunked_consistently(motion_backend):
     fm = FreeMotion(MOMENTS[0], M0[0], Q0[0], backend=motion_backend)
-    fm.periodic_epochs = np.inf  # the direct path (the periodic one: tests/free/test_free_periodic.py)
+    fm.periodic_epochs = np.inf  # the direct path (the periodic one: triaxial/test_free_triaxial_periodic.py)
     t = np.linspace(0.0, 1e4, 50_001)
     m, q = fm.propagate(t)
     m2, q2 = fm.propagate(t[::997])

@@ -17,8 +17,11 @@ from free_cases import cases
 from free_reference import angle_between, relative_error
 from scipy.spatial.transform import Rotation
 
-from andoyer.free import FreeMotion, backends, lean, periodic, series
-from andoyer.free import compiled_eval as ceval
+from andoyer.free import FreeMotion, backends
+from andoyer.free import step_scalar as lean
+from andoyer.free.triaxial import evaluate_compiled as ceval
+from andoyer.free.triaxial import evaluate_numpy as series
+from andoyer.free.triaxial import periodic_numpy as periodic
 
 BY_NAME = {c[0]: c for c in cases()}
 M_TOL = 1e-13

@@ -1,8 +1,8 @@
 """The compiled backend of FreeMotion against the numpy backend it replaces, in every regime.
 
 With the compiled backend (the default with numba) :class:`andoyer.free.FreeMotion` builds
-the triaxial constants in a compiled per-body loop (:mod:`andoyer.free.compiled_setup`)
-instead of the vectorised double-double arithmetic of :func:`andoyer.free.triaxial.triaxial`.
+the triaxial constants in a compiled per-body loop (:mod:`andoyer.free.triaxial.setup_compiled`)
+instead of the vectorised double-double arithmetic of :func:`andoyer.free.triaxial.setup_numpy.triaxial`.
 The accuracy tests (``test_free_accuracy.py``) check every backend against the 57-digit
 reference; here both are run on the same states and compared directly: the set-up tables
 (without numba the "compiled" functions run as plain Python and are compared all the same)
@@ -16,10 +16,12 @@ from free_cases import cases, with_k2
 from scipy.spatial.transform import Rotation
 
 from andoyer.free import FreeMotion, motion
-from andoyer.free.compiled_regime import classify_and_scale
-from andoyer.free.compiled_setup import as_triaxial, triaxial_table
-from andoyer.free.regime import Regime, check_inputs, classify, normalise, polhode_frame
-from andoyer.free.triaxial import triaxial
+from andoyer.free.common.polhode_numpy import polhode_frame
+from andoyer.free.common.scaling_compiled import classify_and_scale
+from andoyer.free.common.scaling_numpy import normalise
+from andoyer.free.triaxial.setup_compiled import as_triaxial, triaxial_table
+from andoyer.free.triaxial.setup_numpy import triaxial
+from andoyer.regime import Regime, check_inputs, classify
 
 CASES = cases()
 EPS = np.finfo(float).eps
@@ -72,7 +74,7 @@ def test_compiled_constants_equal_numpy_constants():
         assert np.all(np.abs(diff) <= 1e-28 * np.abs(hi)), name
         assert np.array_equal(got[f"{name}.hh"] + got[f"{name}.hl"], got[f"{name}.hi"])
     # the working frame and the attitude anchor are the same kernels on both paths
-    # (andoyer.free.kernels.frame) on the same inputs: the same bits, sign included
+    # (andoyer.free.common.polhode) on the same inputs: the same bits, sign included
     for name in ("quat_u", "quat_v", "v_sn", "v_cn", "G", "s"):
         assert np.array_equal(got[name], want[name]), name
     # coefficients and phases of order one: absolute; the rest relative

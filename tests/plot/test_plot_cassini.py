@@ -71,11 +71,49 @@ def test_cassini_portrait_bad_input(system, n):
         plot.cassini_portrait_data(system, n_phi=n, n_theta=n)
 
 
-def test_portrait_cassini_cli_bad_moment_exit_2(tmp_path, capsys):
-    with pytest.raises(SystemExit, match="2"):  # refused as the arguments are read
-        main(["portrait", "cassini", "--moment-of-inertia", "2", "--out", str(tmp_path / "x.png")])
-    (line,) = capsys.readouterr().err.strip().splitlines()
-    assert line.startswith("andoyer portrait cassini: error: argument --moment-of-inertia: expected a polar")
-    assert line.endswith("0 < C/MR^2 <= 1 (C = integral of (x^2 + y^2) dm <= M R^2 for a body within the "
-                         "radius R (1: a ring)), got 2.0")
+MERCURY = [
+    *("--j2", "5.03e-5", "--c22", "0.81e-5", "--orbital-period", "87.97", "--eccentricity", "0.2056"),
+    *("--node-period", "325000", "--inclination", "8.6", "--mass-ratio", "1.66e-7", "--resonance", "1.5"),
+]
+
+
+@pytest.mark.parametrize(
+    ("argv", "message"),
+    [
+        ([*MERCURY, "--moment-of-inertia", "2"], "expected a polar moment of inertia 0 < C/MR^2 <= 1 ("),
+        (["--moment-of-inertia", "0.3"], "expected every value option or none"),
+        (["--body", "titan", "--node", "catalogue"], "expected Titan to have node_period"),
+    ],
+)
+def test_portrait_cassini_cli_bad_input_exit_2(tmp_path, capsys, argv, message):
+    try:
+        code = main(["portrait", "cassini", *argv, "--out", str(tmp_path / "x.png")])
+    except SystemExit as exc:  # refused as the arguments are read
+        code = exc.code
+    err = capsys.readouterr().err
+    assert code == 2
+    (line,) = err.strip().splitlines()
+    assert line.startswith("andoyer portrait")
+    assert message in line
     assert list(tmp_path.iterdir()) == []
+
+
+def test_portrait_cassini_cli_titan(tmp_path):
+    assert (
+        main(
+            [
+                "portrait",
+                "cassini",
+                "--body",
+                "titan",
+                "--levels",
+                "3",
+                "--dpi",
+                "20",
+                "--out",
+                str(tmp_path / "t.png"),
+            ]
+        )
+        == 0
+    )
+    assert (tmp_path / "t.png").stat().st_size > 0

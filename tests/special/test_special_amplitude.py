@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from andoyer._jit import jit
-from andoyer.free.kernels.elliptic import am as am_kernel
+from andoyer.free.common.elliptic import am as am_kernel
 from andoyer.special import am
 from andoyer.special.jacobi import amplitude
 

@@ -6,6 +6,10 @@ files are written through :func:`andoyer.cli.output.atomic_output`: a temporary
 file renamed into place (so an interrupted run never leaves a half-written
 file), through symbolic links, never over a directory or a device, with the
 mode the umask gives; nothing the user made is ever deleted.
+
+Ctrl-C (SIGINT) ends a command with one line on stderr, ``interrupted`` and what was kept
+(the N-body orbit integrated so far stays in its cache), and exit code 130 (128 + SIGINT,
+the shell's convention); the output file is left as it was.
 """
 
 from __future__ import annotations
@@ -144,6 +148,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     from andoyer._limits import show_progress
     from andoyer.cli.output import CliError, check_outputs
 
+    name = f"andoyer {args.command}"
+
     # The library's warnings (a lost phase digit, moments no body has, a singular chart, a
     # repaired store) are kept until the command has run: each is then one line on stderr, and a
     # command that fails prints only its error, so every failure is one line.
@@ -151,10 +157,22 @@ def main(argv: Sequence[str] | None = None) -> int:
         warnings.simplefilter("always")
         try:
             check_outputs(args)
-            with show_progress():
+            with show_progress(prefix=name):
                 code = int(args.run(args) or 0)
+        except KeyboardInterrupt as exc:
+            # What was kept (an N-body cache) is the exception's message, if any; the output
+            # files are written only once complete, so nothing half-written is left.
+            kept = " ".join(str(exc).split())
+            print(f"{name}: interrupted{'; ' + kept if kept else ''}", file=sys.stderr)
+            return 130
         except (CliError, ValueError) as exc:
-            print(f"andoyer {args.command}: error: {exc}", file=sys.stderr)
+            print(f"{name}: error: {exc}", file=sys.stderr)
+            return 2
+        except MemoryError as exc:
+            # Every command estimates its memory before the work and refuses what cannot fit
+            # (andoyer._limits.check_size); this is the net under those estimates.
+            print(f"{name}: error: expected a request that fits in memory, got one that ran out ({exc})",
+                  file=sys.stderr)
             return 2
         except BrokenPipeError:
             return 0
@@ -162,7 +180,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             # The file system said no (a full disk, a read-only place, a vanished folder): the
             # user's to fix, so one line; any other exception is a bug and keeps its traceback.
             where = f" ({exc.filename})" if exc.filename else ""
-            print(f"andoyer {args.command}: error: {exc.strerror or exc}{where}", file=sys.stderr)
+            print(f"{name}: error: {exc.strerror or exc}{where}", file=sys.stderr)
             return 2
     shown = set()
     for warning in caught:
@@ -171,5 +189,5 @@ def main(argv: Sequence[str] | None = None) -> int:
         text = " ".join(str(warning.message).split())
         if issubclass(warning.category, UserWarning | RuntimeWarning) and text not in shown:
             shown.add(text)
-            print(f"andoyer {args.command}: warning: {text}", file=sys.stderr)
+            print(f"{name}: warning: {text}", file=sys.stderr)
     return code

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-import json
 import math
 
 from andoyer.cli.numbers import finite_number, physical
@@ -89,8 +88,29 @@ def _plot_format(path: str) -> str:
     return fmt
 
 
+#: Bytes per point of a drawn curve (two panels; measured about 100 for PNG, SVG and PDF).
+PLOT_POINT_BYTES = 200
+
+
+def _check_cost(args: argparse.Namespace, t) -> float:  # type: ignore[no-untyped-def]
+    """Refuse a request that cannot fit in memory or time, before any work; its seconds."""
+    from andoyer._limits import check_size
+    from andoyer.cli.output import BLOCK_ROWS, FORMAT_SECONDS
+    from andoyer.planetary.nutation import nutation_cost
+
+    seconds, nbytes = nutation_cost(t, passes=2 if args.terms else 1)
+    seconds += t.size * 3 * FORMAT_SECONDS * (2 if args.format == "table" else 1)
+    nbytes += BLOCK_ROWS * 3 * 40  # a block's text
+    if args.plot is not None:
+        nbytes += t.size * PLOT_POINT_BYTES
+    check_size(f"a nutation run of {t.size} output times", nbytes=nbytes, seconds=seconds)
+    return seconds
+
+
 def run(args: argparse.Namespace) -> int:
-    """Compute the nutation and write it (and the terms, and the picture)."""
+    """Compute the nutation and write it (and the terms, and the picture), a block of rows at a time."""
+    from andoyer._limits import announce
+    from andoyer.cli.output import write_json, write_rows
     from andoyer.perturbations.lunar_theory import check_span
     from andoyer.planetary import nutation
     from andoyer.planetary.precession import check_dynamical_ellipticity
@@ -102,26 +122,10 @@ def run(args: argparse.Namespace) -> int:
     check_span(t0, end, f"--span T0 T1 and the integration's {end - t0:.4g} years from T0")
     t = _times(t0, t1, args.step)
     fmt_plot = None if args.plot is None else _plot_format(args.plot)
+    seconds = _check_cost(args, t)
+    announce(seconds, f"integrating the nutation over {max(t1 - t0, nutation.minimum_span()):.6g} years")
     table = nutation.terms_table((t0, t1), H, args.axis) if args.terms else None
     dpsi, deps = nutation.nutation(t, H, args.axis)
-    if args.format == "json":
-        fields = {"t": t.tolist(), "dpsi": dpsi.tolist(), "deps": deps.tolist()}
-        if table is not None:
-            fields["terms"] = table["terms"]
-            fields["precession_arcsec_per_year"] = table["precession"]
-        text = json.dumps(fields) + "\n"
-    elif table is not None:
-        header = list(table["terms"][0])
-        rows = [
-            [" ".join(map(str, row[key])) if isinstance(row[key], list) else row[key] for key in header]
-            for row in table["terms"]
-        ]
-        text = format_rows(header, rows, args.format)
-        if args.format == "table":
-            text += f"luni-solar precession (integrated): {table['precession']:.4f} arcsec/yr\n"
-    else:
-        rows = [[float(a), float(b), float(c)] for a, b, c in zip(t, dpsi, deps, strict=True)]
-        text = format_rows(["t", "dpsi", "deps"], rows, args.format)
     if args.plot is not None:
         from andoyer.plot.nutation import nutation_plot
 
@@ -129,5 +133,21 @@ def run(args: argparse.Namespace) -> int:
         with atomic_output(args.plot, binary=True) as stream:
             figure.savefig(stream, format=fmt_plot, dpi=120)
     with atomic_output(args.output) as stream:
-        stream.write(text)
+        if args.format == "json":
+            fields = {"t": t, "dpsi": dpsi, "deps": deps}
+            if table is not None:
+                fields["terms"] = table["terms"]
+                fields["precession_arcsec_per_year"] = table["precession"]
+            write_json(stream, fields)
+        elif table is not None:
+            header = list(table["terms"][0])
+            rows = [
+                [" ".join(map(str, row[key])) if isinstance(row[key], list) else row[key] for key in header]
+                for row in table["terms"]
+            ]
+            stream.write(format_rows(header, rows, args.format))
+            if args.format == "table":
+                stream.write(f"luni-solar precession (integrated): {table['precession']:.4f} arcsec/yr\n")
+        else:
+            write_rows(stream, ["t", "dpsi", "deps"], [t, dpsi, deps], args.format)
     return 0

@@ -1,4 +1,10 @@
-"""Tables, CSV and atomic files for the command line."""
+"""Tables, CSV, JSON and atomic files for the command line.
+
+Long outputs are written a block of rows at a time (:func:`write_rows`, :func:`write_json`)
+from numpy columns, so that what a command holds is its numbers (8 bytes each), never the
+text of its whole output or a Python object per number; the text is that of
+:func:`format_rows` and :func:`json.dumps`, byte for byte.
+"""
 
 from __future__ import annotations
 
@@ -7,15 +13,17 @@ import contextlib
 import csv
 import errno
 import io
+import json
 import os
 import stat
 import sys
 import tempfile
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from pathlib import Path
 from typing import IO
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from andoyer._files import atomic_replace
 
@@ -28,7 +36,14 @@ __all__ = [
     "output_store",
     "output_target",
     "read_csv_columns",
+    "write_json",
+    "write_rows",
 ]
+
+#: Rows formatted at once by :func:`write_rows` and :func:`write_json`.
+BLOCK_ROWS = 65536
+#: Seconds to format one number (a bound of the measured 0.2-0.4 µs of ``repr`` and ``.12g``).
+FORMAT_SECONDS = 1e-6
 
 
 class CliError(Exception):
@@ -54,6 +69,97 @@ def format_rows(header: Sequence[str], rows: Sequence[Sequence[object]], fmt: st
     lines = ["  ".join(c.rjust(w) for c, w in zip(r, widths, strict=True)) for r in table]
     lines.insert(1, "  ".join("-" * w for w in widths))
     return "\n".join(lines) + "\n"
+
+
+def _columns(columns: Sequence[ArrayLike]) -> list[np.ndarray]:
+    arrays = [np.asarray(c, dtype=np.float64) for c in columns]
+    if not arrays or any(a.ndim != 1 or a.shape != arrays[0].shape for a in arrays):
+        msg = f"expected columns of one length, got shapes {[a.shape for a in arrays]}"
+        raise ValueError(msg)
+    return arrays
+
+
+def write_rows(
+    stream: IO[str],
+    header: Sequence[str] | None,
+    columns: Sequence[ArrayLike],
+    fmt: str,
+    rows: int = BLOCK_ROWS,
+) -> None:
+    """Write float ``columns`` (each of shape (N,)) as :func:`format_rows` would, ``rows`` rows at a time.
+
+    CSV is written in one pass (``header=None``: rows only, to go on a CSV already begun);
+    an aligned table in two (the widths first, then the rows), formatting each block anew:
+    neither holds more text than one block's.
+
+    Examples
+    --------
+    >>> out = io.StringIO()
+    >>> write_rows(out, ["t", "x"], [[0.0, 10.0], [0.5, -1e-20]], "table", rows=1)
+    >>> print(out.getvalue(), end="")
+     t       x
+    --  ------
+     0     0.5
+    10  -1e-20
+    >>> out.getvalue() == format_rows(["t", "x"], [[0.0, 0.5], [10.0, -1e-20]], "table")
+    True
+    """
+    arrays = _columns(columns)
+    if (header is None and fmt != "csv") or (header is not None and len(header) != len(arrays)):
+        msg = f"expected one header per column, got {header!r} for {len(arrays)} columns"
+        raise ValueError(msg)
+    count = arrays[0].size
+    blocks = [slice(k, k + rows) for k in range(0, count, rows)]
+    if fmt == "csv":
+        if header is not None:
+            buffer = io.StringIO()
+            csv.writer(buffer, lineterminator="\n").writerow(header)
+            stream.write(buffer.getvalue())
+        for part in blocks:
+            cells = zip(*(map(repr, a[part].tolist()) for a in arrays), strict=True)
+            stream.write("".join(",".join(row) + "\n" for row in cells))
+        return
+    widths = [len(h) for h in header]
+    for part in blocks:
+        for i, a in enumerate(arrays):
+            widths[i] = max(widths[i], *(len(format(v, ".12g")) for v in a[part].tolist()))
+    stream.write("  ".join(h.rjust(w) for h, w in zip(header, widths, strict=True)) + "\n")
+    stream.write("  ".join("-" * w for w in widths) + "\n")
+    for part in blocks:
+        pairs = zip(arrays, widths, strict=True)
+        text = [[format(v, ".12g").rjust(w) for v in a[part].tolist()] for a, w in pairs]
+        cells = zip(*text, strict=True)
+        stream.write("".join("  ".join(row) + "\n" for row in cells))
+
+
+def write_json(stream: IO[str], fields: Mapping[str, object], rows: int = BLOCK_ROWS) -> None:
+    r"""Write ``json.dumps(fields)`` and a newline, numpy arrays a block of ``rows`` at a time.
+
+    A value that is a numpy array (of floats, any shape: its first axis is cut into blocks)
+    is written as its ``tolist()`` would be; any other value by :func:`json.dumps`.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> fields = {"t": np.array([0.0, 1.5, np.nan]), "axis": np.eye(3), "rate": 2.0, "e": None}
+    >>> out = io.StringIO()
+    >>> write_json(out, fields, rows=2)
+    >>> out.getvalue() == json.dumps({k: v.tolist() if isinstance(v, np.ndarray) else v
+    ...                               for k, v in fields.items()}) + "\n"
+    True
+    """
+    stream.write("{")
+    for k, (key, value) in enumerate(fields.items()):
+        stream.write((", " if k else "") + json.dumps(key) + ": ")
+        if not isinstance(value, np.ndarray) or value.ndim == 0:
+            stream.write(json.dumps(value.tolist() if isinstance(value, np.ndarray) else value))
+            continue
+        stream.write("[")
+        for first in range(0, len(value), rows):
+            text = json.dumps(value[first : first + rows].tolist())[1:-1]
+            stream.write((", " if first else "") + text)
+        stream.write("]")
+    stream.write("}\n")
 
 
 _KINDS = (

@@ -29,6 +29,16 @@ FORMATS = ("png", "svg")
 DEFAULT_STATE = (0.5, 0.0, 0.0, 0.9, 1.0, 0.9)
 #: Largest side of a PNG in pixels (matplotlib's Agg renderer refuses 2^16 and more).
 MAX_PIXELS = 2**16
+#: What is drawn is bounded (issue 26: ``--levels 100000000`` ran without end): energy contours
+#: of Colombo's top (1000 take 30 s), energy levels on each side of the separatrix of the free
+#: body (500 take a minute and 400 MB), and the points of a precession curve (a million take
+#: 600 MB; no figure shows more).
+MAX_CASSINI_LEVELS = 1000
+MAX_LEVELS_PER_SIDE = 500
+MAX_CURVE_POINTS = 1_000_000
+#: Bytes per point of a precession curve: the states, the angles and matplotlib's paths
+#: (measured 430 at a million points).
+CURVE_POINT_BYTES = 1024
 #: Smallest side of a PNG in pixels: Agg writes no image below 1.5 (rounded to one), 2 keeps clear.
 MIN_PIXELS = 2
 
@@ -97,7 +107,7 @@ def _register_cassini(kinds: argparse._SubParsersAction) -> None:
 
     text = "phase portrait of Colombo's top with the Cassini states and the separatrix"
     sub = kinds.add_parser("cassini", help=text, description=text)
-    sub.add_argument("--body", type=str.lower, choices=sorted(BODIES), default="moon", help="default moon")
+    sub.add_argument("--body", type=str.lower, choices=sorted(BODIES), help="default moon")
     add_cassini_arguments(sub)
     sub.add_argument(
         "--out", metavar="FILE", help="PNG or SVG file, or - for stdout (default portrait-cassini.png)"
@@ -136,8 +146,8 @@ def _figure(args: argparse.Namespace) -> Figure:
             beta = 0.8
         return plot.lara_portrait(beta, ratio_min=args.ratio_min)
     if kind == "cassini":
-        if args.levels < 1:
-            msg = f"expected --levels >= 1, got {args.levels}"
+        if not 1 <= args.levels <= MAX_CASSINI_LEVELS:
+            msg = f"expected 1 <= --levels <= {MAX_CASSINI_LEVELS} (contours drawn), got {args.levels}"
             raise CliError(msg)
         return plot.cassini_portrait(cassini_body_from_args(args.body, args), levels=args.levels)
     body = body_from_args(args)
@@ -152,9 +162,12 @@ def _figure(args: argparse.Namespace) -> Figure:
     if kind == "polhode":
         _view(args)  # checked, although plot.poinsot does not take a view yet
         return plot.poinsot(body, state, args.duration)
-    if args.steps < 2:
-        msg = f"expected --steps >= 2, got {args.steps}"
+    if not 2 <= args.steps <= MAX_CURVE_POINTS:
+        msg = f"expected 2 <= --steps <= {MAX_CURVE_POINTS} (points drawn), got {args.steps}"
         raise CliError(msg)
+    from andoyer._limits import check_size
+
+    check_size(f"a precession picture of {args.steps} points", nbytes=args.steps * CURVE_POINT_BYTES)
     duration = args.duration
     if duration is None:
         period = float(FreeRotation(body).periods(state).period)
@@ -175,8 +188,8 @@ def _view(args: argparse.Namespace) -> dict[str, float]:
 
 
 def _levels(body: RigidBody, args: argparse.Namespace) -> np.ndarray:
-    if args.levels < 0:
-        msg = f"expected --levels >= 0, got {args.levels}"
+    if not 0 <= args.levels <= MAX_LEVELS_PER_SIDE:
+        msg = f"expected 0 <= --levels <= {MAX_LEVELS_PER_SIDE} (levels on each side), got {args.levels}"
         raise CliError(msg)
     return plot.default_energies(body, args.G, args.levels)
 

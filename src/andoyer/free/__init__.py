@@ -10,6 +10,19 @@ This package knows nothing of :class:`~andoyer.State` (the state's time-dependen
 :class:`FreeMotion`). :class:`~andoyer.FreeRotation`, which works on ``State`` arrays, is in
 :mod:`andoyer.free_rotation`, above both; ``andoyer.free.FreeRotation`` still gives it, with a
 DeprecationWarning, until the next release.
+
+Layout.  :mod:`~andoyer.free.motion` (:class:`FreeMotion`) routes each state to its regime,
+one subpackage each: :mod:`~andoyer.free.triaxial` (SAM and LAM),
+:mod:`~andoyer.free.separatrix` and :mod:`~andoyer.free.uniform` (axisymmetric bodies,
+spheres, steady spins, rest), on what they share, :mod:`~andoyer.free.common` (the working
+frame, the scaling, the phases, the blocks of states × epochs).  One naming rule holds in
+every folder, so that a step's name leads to its file on every backend
+(:mod:`~andoyer.free.backends`): ``<step>.py`` holds the kernels of the step, each formula
+written once (plain arithmetic that runs compiled on floats and on numpy arrays), and
+``<step>_compiled.py``, ``<step>_numpy.py`` its drivers on the ``"compiled"`` and
+``"numpy"`` backends (``triaxial/setup.py``, ``triaxial/setup_compiled.py``,
+``triaxial/setup_numpy.py``).  The ``"scalar"`` backend, one step of one state, is
+:mod:`~andoyer.free.step_scalar`.
 """
 
 from __future__ import annotations

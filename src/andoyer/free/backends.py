@@ -1,30 +1,35 @@
 """The implementations (backends) of the exact torque-free solution: their names, which run here, the default.
 
 The closed-form solution runs three ways, each a *backend* chosen by name. The compiled and the
-numpy backends call the same kernels, each formula written once (:mod:`andoyer.free.kernels`:
-the frame, the set-up, the series, the uniform motions; :mod:`andoyer.regime`,
-:mod:`andoyer.special.compensated`): compiled per state in numba loops, or on whole arrays.
-The scalar backend is a different algorithm for a different use (one short step from a state
-that has just changed, with Carlson's integrals instead of theta series):
+numpy backends call the same kernels, each formula written once (``<step>.py`` in the folders
+of :mod:`andoyer.free`; :mod:`andoyer.regime`, :mod:`andoyer.special.compensated`): compiled
+per state in numba loops, or on whole arrays.  A backend's drivers carry its name,
+``<step>_<backend>.py``.  The scalar backend is a different algorithm for a different use (one
+short step from a state that has just changed, with Carlson's integrals instead of theta
+series):
 
 ``"compiled"``
-    numba loops: the classification and exact scaling (:mod:`~andoyer.free.compiled_regime`),
-    the set-up of triaxial states (:mod:`~andoyer.free.compiled_setup`), their evaluation
-    (:mod:`~andoyer.free.compiled_eval`) and the fill of their periodic representation
-    (:func:`andoyer.free.periodic.fill`), and the uniform rotations (axisymmetric bodies,
-    spheres, steady spins, rest: :mod:`~andoyer.free.compiled_uniform`).  Available when numba is
+    numba loops, ``*_compiled.py``: the classification and exact scaling
+    (:mod:`~andoyer.free.common.scaling_compiled`), the set-up of triaxial states
+    (:mod:`~andoyer.free.triaxial.setup_compiled`), their evaluation
+    (:mod:`~andoyer.free.triaxial.evaluate_compiled`) and the fill of their periodic
+    representation (:mod:`~andoyer.free.triaxial.periodic_compiled`), and the uniform rotations
+    (axisymmetric bodies, spheres, steady spins, rest: :mod:`~andoyer.free.uniform.setup_compiled`,
+    :mod:`~andoyer.free.uniform.evaluate_compiled`).  Available when numba is
     (:data:`andoyer._jit.NUMBA`: installed, and not switched off by ``ANDOYER_NUMBA=0``).
 ``"numpy"``
-    vectorised numpy on arrays of states: :func:`~andoyer.free.regime.normalise` and
-    :func:`~andoyer.free.regime.classify_scaled`, :func:`andoyer.free.triaxial.triaxial`,
-    :func:`andoyer.free.series.evaluate`, :mod:`andoyer.free.uniform` and
-    :func:`andoyer.free.periodic.fill_numpy` (whose
-    piecewise kernels, :mod:`andoyer.free.kernels.piecewise`, numba compiles for arrays when
-    it is installed).  Always available.
+    vectorised numpy on arrays of states, ``*_numpy.py``:
+    :mod:`~andoyer.free.common.scaling_numpy`, :mod:`~andoyer.free.triaxial.setup_numpy`,
+    :mod:`~andoyer.free.triaxial.evaluate_numpy`, :mod:`~andoyer.free.uniform.setup_numpy`,
+    :mod:`~andoyer.free.uniform.evaluate_numpy` and
+    :func:`andoyer.free.triaxial.periodic_numpy.fill_numpy` (whose piecewise kernels,
+    :mod:`andoyer.free.triaxial.periodic`, numba compiles for arrays when it is installed).
+    Always available.
 ``"scalar"``
-    one state, one step, no set-up: :mod:`andoyer.free.lean` (``_step_one``, compiled by numba
-    when it is available, plain Python otherwise), behind :func:`andoyer.free.lean.free_step`
-    and the compiled splitting loop (:mod:`andoyer.integrate.splitting.kernel`).  Always available.
+    one state, one step, no set-up: :mod:`andoyer.free.step_scalar` (``_step_one``, compiled by
+    numba when it is available, plain Python otherwise), behind
+    :func:`andoyer.free.step_scalar.free_step` and the compiled splitting loop
+    (:mod:`andoyer.integrate.splitting.kernel`).  Always available.
 
 :class:`~andoyer.free.FreeMotion` offers the first two (:data:`MOTION_BACKENDS`, its keyword
 ``backend``; by default :func:`default`, the fastest available).  Both treat the separatrix
@@ -114,7 +119,7 @@ def resolve(backend: str | None = None) -> str:
     if backend == "scalar":
         msg = (
             "expected backend 'compiled' or 'numpy' for FreeMotion, got 'scalar': the scalar kernel "
-            "has no set-up and advances states one step at a time (andoyer.free.lean.free_step)"
+            "has no set-up and advances states one step at a time (andoyer.free.step_scalar.free_step)"
         )
         raise ValueError(msg)
     if backend not in MOTION_BACKENDS:

@@ -3,7 +3,7 @@
 :class:`FreeMotion` prepares the per-state constants once (regime, working frame,
 frequencies in double-double, theta-series coefficients) and then evaluates the body
 angular momentum and the attitude at any times, vectorised and in cache-sized chunks.
-Each state is routed to one kernel:
+Each state is routed to its regime:
 
 * :mod:`andoyer.free.triaxial` — SAM and LAM of a triaxial body (circular theta series
   for ``k² ≤ 1/2``, hyperbolic for ``k² > 1/2``);
@@ -14,14 +14,15 @@ Each state is routed to one kernel:
 The backend (:mod:`andoyer.free.backends`, the keyword ``backend``) decides how: with
 ``"compiled"``, the default when numba is installed (:data:`andoyer._jit.NUMBA`), states are
 classified, and the triaxial ones prepared and evaluated, in compiled loops
-(:mod:`~andoyer.free.compiled_regime`, :mod:`~andoyer.free.compiled_setup`,
-:mod:`~andoyer.free.compiled_eval`: the same formulas and accuracy, ~1.5 µs a body to set up
-and evaluate once, against ~10 µs), and so are the uniform motions
-(:mod:`~andoyer.free.compiled_uniform`); with ``"numpy"``, by the vectorised kernels above.
+(:mod:`~andoyer.free.common.scaling_compiled`, :mod:`~andoyer.free.triaxial.setup_compiled`,
+:mod:`~andoyer.free.triaxial.evaluate_compiled`: the same formulas and accuracy, ~1.5 µs a body
+to set up and evaluate once, against ~10 µs), and so are the uniform motions
+(:mod:`~andoyer.free.uniform.setup_compiled`, :mod:`~andoyer.free.uniform.evaluate_compiled`);
+with ``"numpy"``, by the vectorised drivers of the same kernels (``*_numpy``).
 
 With many epochs per state (:attr:`FreeMotion.periodic_epochs`), the triaxial states are
 evaluated through a piecewise-polynomial representation of one period built once per state
-(:mod:`~andoyer.free.periodic`: same accuracy, several times cheaper per epoch).
+(:mod:`~andoyer.free.triaxial.periodic_numpy`: same accuracy, several times cheaper per epoch).
 
 Times are measured from the initial state.  Conventions (as the rest of ``andoyer``):
 moments ``I`` along body axes b1, b2, b3 in any order; body angular momentum ``m``;
@@ -37,21 +38,26 @@ import numpy as np
 
 from andoyer._jit import NUMBA
 from andoyer._limits import PHASE_WARN_LIMIT, check_spin_phase, spin_bound
-from andoyer.free import compiled_eval as _ceval
-from andoyer.free import compiled_uniform as _cuni
-from andoyer.free import constants as _const
-from andoyer.free import periodic as _periodic
-from andoyer.free import separatrix as _sep
-from andoyer.free import series
-from andoyer.free import triaxial as _tri
-from andoyer.free import uniform as _uni
 from andoyer.free.backends import resolve
-from andoyer.free.blocks import Group, evaluate_blocks
-from andoyer.free.compiled_regime import classify_and_scale
-from andoyer.free.compiled_setup import as_triaxial, triaxial_table
-from andoyer.free.kernels.frame import steady_spin_limit
-from andoyer.free.regime import normalise, polhode_frame
-from andoyer.free.table import PRECESSION_RATE
+from andoyer.free.common import constants as _const
+from andoyer.free.common.blocks import Group, evaluate_blocks
+from andoyer.free.common.polhode import steady_spin_limit
+from andoyer.free.common.polhode_compiled import polhode_limit
+from andoyer.free.common.polhode_numpy import polhode_frame
+from andoyer.free.common.scaling_compiled import classify_and_scale
+from andoyer.free.common.scaling_numpy import normalise
+from andoyer.free.separatrix import evaluate_numpy as _sep_eval
+from andoyer.free.separatrix.setup_numpy import separatrix
+from andoyer.free.triaxial import evaluate_compiled as _ceval
+from andoyer.free.triaxial import evaluate_numpy as series
+from andoyer.free.triaxial import periodic_numpy as _periodic
+from andoyer.free.triaxial.columns import PRECESSION_RATE
+from andoyer.free.triaxial.setup_compiled import as_triaxial, triaxial_table
+from andoyer.free.triaxial.setup_numpy import triaxial
+from andoyer.free.uniform import evaluate_compiled as _cuni_eval
+from andoyer.free.uniform import evaluate_numpy as _uni_eval
+from andoyer.free.uniform.setup_compiled import uniform_table
+from andoyer.free.uniform.setup_numpy import uniform, uniform_axes
 from andoyer.regime import Regime, check_inputs, regime_codes
 
 __all__ = ["FreeMotion", "FreePeriods", "attitude", "momentum", "periods", "propagate"]
@@ -119,8 +125,8 @@ class FreeMotion:
     periodic_epochs : float
         Epochs per state from which triaxial states are evaluated through a
         piecewise-polynomial representation of one period, built once
-        (:mod:`andoyer.free.periodic`: same accuracy, several times faster per epoch);
-        below it, directly.  A class default (4096 with numba, ``inf`` without, where the
+        (:mod:`andoyer.free.triaxial.periodic_numpy`: same accuracy, several times faster per
+        epoch); below it, directly.  A class default (4096 with numba, ``inf`` without, where the
         vectorised direct path is faster; ``inf`` too for the numpy backend with numba),
         settable per instance (``0``: always, ``inf``: never).
 
@@ -200,25 +206,25 @@ class FreeMotion:
         if sep.any():
             idx = np.nonzero(sep)[0]
             frame = polhode_frame(moments[idx], m0[idx], np.zeros(idx.size, dtype=bool))
-            const = _sep.separatrix(frame, None if q0 is None else q0[idx])
+            const = separatrix(frame, None if q0 is None else q0[idx])
             period[idx] = np.inf
             rate[idx] = 2.0 * np.pi * const.spin.hi
-            groups.append((_sep.evaluate, idx, const))
+            groups.append((_sep_eval.evaluate, idx, const))
         if uni.any():
             idx = np.nonzero(uni)[0]
             qi = None if q0 is None else q0[idx]
             if compiled:  # the set-up and evaluation of one body take µs instead of ~0.5 ms
-                const, kernel = _cuni.uniform_table(moments[idx], m0[idx], regime[idx], qi), _cuni.evaluate
+                const, kernel = uniform_table(moments[idx], m0[idx], regime[idx], qi), _cuni_eval.evaluate
             else:
-                axis, I_s, I_t = _uni.uniform_axes(moments[idx], m0[idx], regime[idx])
-                const, kernel = _uni.uniform(m0[idx], axis, I_s, I_t, qi), _uni.evaluate
+                axis, I_s, I_t = uniform_axes(moments[idx], m0[idx], regime[idx])
+                const, kernel = uniform(m0[idx], axis, I_s, I_t, qi), _uni_eval.evaluate
             period[idx] = const.period
             rate[idx] = const.precession_rate
             lim = spin[idx] & (regime[idx] != Regime.SEPARATRIX)
             if lim.any():  # steady spin about the polhode axis: the limit of nearby polhodes
                 j = idx[lim]
                 if compiled:
-                    period[j], rate[j] = _cuni.polhode_limit(moments[j], m0[j], regime[j] == Regime.LAM)
+                    period[j], rate[j] = polhode_limit(moments[j], m0[j], regime[j] == Regime.LAM)
                 else:
                     frame = polhode_frame(moments[j], m0[j], regime[j] == Regime.LAM)
                     period[j], rate[j] = steady_spin_limit(
@@ -367,10 +373,11 @@ def _flat(a, shape):
 
 
 class _NumpyPieces:
-    """The numpy backend's kernel of periodic groups: :func:`andoyer.free.periodic.fill_numpy`, vectorised.
+    """The numpy backend's kernel of periodic groups: the vectorised fill (``periodic_numpy.fill_numpy``).
 
-    :func:`andoyer.free.periodic.evaluate` fills through the compiled per-epoch loop whenever
-    numba is installed; :func:`andoyer.free.blocks.evaluate_blocks` calls only this ``fill``.
+    :func:`andoyer.free.triaxial.periodic_numpy.evaluate` fills through the compiled per-epoch
+    loop whenever numba is installed; :func:`andoyer.free.common.blocks.evaluate_blocks` calls
+    only this ``fill``.
     """
 
     fill = staticmethod(_periodic.fill_numpy)
@@ -380,9 +387,9 @@ def _triaxial_groups(moments, m0, lam, q0, idx, compiled):
     """Constants and evaluation groups of triaxial states (SAM, LAM) with flat indices ``idx``.
 
     ``compiled`` (the compiled backend): one compiled loop builds the constants and a
-    compiled kernel evaluates them (:mod:`andoyer.free.compiled_setup`,
-    :mod:`andoyer.free.compiled_eval`); else (numpy) the vectorised
-    :mod:`andoyer.free.triaxial` and :mod:`andoyer.free.series`.  Returns
+    compiled kernel evaluates them (:mod:`andoyer.free.triaxial.setup_compiled`,
+    :mod:`andoyer.free.triaxial.evaluate_compiled`); else (numpy) the vectorised
+    :mod:`andoyer.free.triaxial.setup_numpy` and :mod:`andoyer.free.triaxial.evaluate_numpy`.  Returns
     the indices kept, those found to be steady spins (a wobble ``P₁`` that underflows),
     the ``(kernel, indices, constants)`` groups, the :class:`Triaxial` constants and, where
     the compiled set-up skipped the precession rate (no attitude), what it needs to
@@ -408,7 +415,7 @@ def _triaxial_groups(moments, m0, lam, q0, idx, compiled):
             frame = polhode_frame(moments[sel], m0[sel], lam[sel])
             qb = None if q0 is None else q0[sel]
         flat.append(fl)
-        consts.append(_tri.triaxial(frame, qb))
+        consts.append(triaxial(frame, qb))
     flat = np.concatenate(flat)
     const = consts[0] if len(consts) == 1 else _const.concatenate(consts)
     keep = idx[~flat]

@@ -10,7 +10,7 @@ than 16.
 As the double-double operations they are built on (:mod:`andoyer.special.compensated`),
 the schemes are written once: from Python they run element-wise on numpy arrays (the loop
 stops when every element has converged, :func:`andoyer._jit.every`) or on floats, and the
-compiled set-up of the free solution (:mod:`andoyer.free.compiled_setup`) compiles them
+compiled set-up of the free solution (:mod:`andoyer.free.triaxial.setup_compiled`) compiles them
 inline, one body at a time.
 """
 

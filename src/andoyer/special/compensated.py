@@ -13,7 +13,7 @@ called from Python it works element-wise on numpy arrays (broadcast together) or
 floats (the numpy path of the free solution, :mod:`andoyer.special.agm`); a kernel
 compiled by :func:`andoyer._jit.jit` that calls it compiles it inline (the functions are
 registered with :func:`andoyer._jit.jitable`), which is how the compiled set-up of
-:mod:`andoyer.free.compiled_setup` uses them.  The one place where the two paths differ is
+:mod:`andoyer.free.triaxial.setup_compiled` uses them.  The one place where the two paths differ is
 the exact rounding error of a product, :func:`product_error`: a fused multiply-add when
 compiled, Dekker's splitting in numpy (which has no fused multiply-add); both return the
 same, exact, value.

@@ -21,7 +21,7 @@ for ``m`` near 1, where it only sees the rounded ``m`` (measured in
 The amplitude has one source, :func:`amplitude`: the arithmetic-geometric mean (DLMF
 22.20(ii)) written once for floats, numpy arrays (branches by :func:`andoyer._jit.select`,
 the loop stopped by :func:`andoyer._jit.every`) and numba kernels, which call it compiled
-(:mod:`andoyer.free.kernels.elliptic` registers it); :func:`am` and :func:`ellipj` apply it
+(:mod:`andoyer.free.common.elliptic` registers it); :func:`am` and :func:`ellipj` apply it
 to arrays.
 """
 

@@ -80,7 +80,7 @@ class ThetaLattice(NamedTuple):
 def nome(p, pc):
     """Nome ``e^{−πK(1−p)/K(p)}`` for a parameter ``p ≤ 1/2``, from ``p`` and ``pc = 1 − p`` (A&S 17.3.21).
 
-    One definition for floats (compiled callers, :mod:`andoyer.free.compiled_setup`) and
+    One definition for floats (compiled callers, :mod:`andoyer.free.triaxial.setup_compiled`) and
     arrays (:func:`lattice`).
 
     Parameters

@@ -12,7 +12,8 @@ from scipy.spatial.transform import Rotation
 
 from andoyer import RigidBody, State
 from andoyer import _jit as andoyer_jit
-from andoyer.free import FreeMotion, Regime, classify, lean
+from andoyer.free import FreeMotion, Regime, classify
+from andoyer.free import step_scalar as lean
 from andoyer.integrate import integrate_reference, splitting
 from andoyer.integrate.splitting import integrate_splitting
 from andoyer.perturbations import CircularOrbit, GravityGradient, HeavyTop, Model, PointMass, PrecessingFrame
@@ -114,7 +115,7 @@ def _fresh_copy(monkeypatch, module, name):
 
 
 def _load_interpreted(monkeypatch):
-    """A fresh copy of ``andoyer.free.lean`` imported with ``ANDOYER_NUMBA=0`` (no compilation).
+    """A fresh copy of ``andoyer.free.step_scalar`` imported with ``ANDOYER_NUMBA=0`` (no compilation).
 
     Its ``jit`` decorator comes from a fresh copy of ``andoyer._jit`` read under the same
     environment, so none of its kernels is compiled.

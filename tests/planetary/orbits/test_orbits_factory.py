@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from andoyer.planetary.orbits import (
+    LaplaceLagrangeOrbit,
     NBodyOrbit,
     OrbitHistory,
     SecularOrbit,
@@ -23,11 +24,18 @@ def test_factory_vondrak():
 
 
 @pytest.mark.parametrize("body", ["earth", "Mars", "jupiter"])
-def test_factory_secular(body):
-    orbit = orbit_history("secular", body=body, frequencies="la2004")
-    assert isinstance(orbit, SecularOrbit)
+def test_factory_laplace_lagrange(body):
+    orbit = orbit_history("laplace-lagrange", body=body, frequencies="la2004")
+    assert isinstance(orbit, LaplaceLagrangeOrbit)
     assert orbit.body == body.lower()
     assert orbit.frequencies == "la2004"
+
+
+@pytest.mark.parametrize("body", ["earth", "Mars"])
+def test_factory_secular_is_the_long_model(body):
+    orbit = orbit_history("secular", body=body, step=4000.0)
+    assert isinstance(orbit, SecularOrbit)
+    assert (orbit.body, orbit.step) == (body.lower(), 4000.0)
 
 
 def test_factory_nbody(tmp_path, monkeypatch):
@@ -54,7 +62,8 @@ def test_factory_csv_path(tmp_path):
         ("vondrak", "earth", {"gr": True}, "expected no options for the vondrak orbit, got gr"),
         ("secular", "pluto", {}, "expected a planet among"),
         ("nbody", "moon", {}, "expected a planet among"),
-        ("laskar", "earth", {}, "expected an orbit source among vondrak, nbody, secular or an"),
+        ("laplace-lagrange", "pluto", {}, "expected a planet among"),
+        ("laskar", "earth", {}, "expected an orbit source among vondrak, nbody, secular, laplace-lagrange"),
         ("/no/such/file.csv", "earth", {}, "expected an orbit source among"),
     ],
 )

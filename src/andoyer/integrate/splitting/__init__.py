@@ -35,7 +35,7 @@ from andoyer import _quaternion as quat
 from andoyer._limits import STEP_SECONDS, check_size, progress
 from andoyer._validation import as_finite
 from andoyer.compositions import splitting_coefficients
-from andoyer.free.lean import NUMBA, free_step
+from andoyer.free.step_scalar import NUMBA, free_step
 from andoyer.integrate.output import gather_states, output_times
 from andoyer.integrate.splitting.kernel import run_tabulated
 from andoyer.perturbations.base import Perturbation
@@ -85,7 +85,7 @@ FreeFlow = Callable[[Array, Array, Array, float], tuple[Array, Array]]
 def exact_free_flow(moments: Array, q: Array, m: Array, h: float) -> tuple[Array, Array]:
     """The closed-form torque-free flow over ``h`` of attitudes (N, 4) and momenta (N, 3).
 
-    :func:`andoyer.free.lean.free_step`: the scalar kernel (compiled with numba when
+    :func:`andoyer.free.step_scalar.free_step`: the scalar kernel (compiled with numba when
     installed) for one step, :class:`~andoyer.free.FreeMotion` for separatrix states
     and for large batches without numba.
 

@@ -13,7 +13,7 @@ every state through every step with no Python in between:
       + \boldsymbol\gamma\times\mathbf c,
 
 ``ρ_p = Rᵀ r_p``, ``γ = Rᵀ s₃``, ``c = m g₀ r_c`` (summed over heavy tops), between
-the exact free flows of the substeps ``w_k h`` (:mod:`andoyer.free.lean`) and the frame
+the exact free flows of the substeps ``w_k h`` (:mod:`andoyer.free.step_scalar`) and the frame
 rotations ``q → exp(−μ w_k h/2) ⊗ q`` with ``μ`` at the substep's midpoint. The two
 half kicks that meet between substeps are one kick (the attitude does not change in a
 kick), so a step of ``K`` substeps evaluates the torque ``K + 1`` times.
@@ -30,7 +30,7 @@ import numpy as np
 
 from andoyer._jit import jit, jitable
 from andoyer._quaternion import apply, product
-from andoyer.free.lean import _step_one
+from andoyer.free.step_scalar import _step_one
 
 __all__ = ["run_tabulated"]
 

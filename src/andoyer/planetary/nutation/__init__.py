@@ -88,7 +88,7 @@ from andoyer.planetary.nutation.model import (
     MEAN_OBLIQUITY,
     PRINCIPAL_TERMS,
 )
-from andoyer.planetary.nutation.numeric import nutation
+from andoyer.planetary.nutation.numeric import nutation, nutation_cost
 from andoyer.planetary.nutation.tables import (
     IAU2000A,
     REN2000,
@@ -115,6 +115,7 @@ __all__ = [
     "minimum_span",
     "numeric_terms",
     "nutation",
+    "nutation_cost",
     "nutation_series",
     "terms_table",
 ]

@@ -8,9 +8,9 @@ from numpy.typing import ArrayLike, NDArray
 from andoyer.perturbations.lunar_theory import check_span, delaunay_arguments, delaunay_rates
 from andoyer.perturbations.solar_system import DAY, JULIAN_YEAR
 from andoyer.planetary.nutation.analytic import NutationSeries, nutation_series
-from andoyer.planetary.nutation.fit import _large, _split, fit_terms, minimum_span
+from andoyer.planetary.nutation.fit import _large, _split, minimum_span
 from andoyer.planetary.nutation.model import ARCSEC, H_MHB2000, MEAN_OBLIQUITY, PRINCIPAL_TERMS, _axis
-from andoyer.planetary.nutation.numeric import _angles, _axis_vectors, _numeric_run
+from andoyer.planetary.nutation.numeric import _angle_blocks, _LeastSquares, _window
 from andoyer.planetary.precession import check_dynamical_ellipticity
 
 __all__ = ["IAU2000A", "REN2000", "REN2000_NODE", "WOOLARD1953", "numeric_terms", "terms_table"]
@@ -110,25 +110,52 @@ def numeric_terms(
     if not (t1 - t0 >= need * (1 - 1e-9)):
         msg = f"expected a span of at least {need:.3f} years to fit these terms, got {t1 - t0:.3f}"
         raise ValueError(msg)
-    run, series = _numeric_run(t0, t1, H, float(obliquity))
-    psi, eps = _angles(_axis_vectors(run, key, H))
-    inside = run.t <= t1 + 1e-12
-    every, close = _split(_large(series), t1 - t0, 0.5 * (t0 + t1), first=wanted)
+    w = _window(t0, max(t1, t0 + minimum_span() * 1.001), H, eps0)
+    middle = 0.5 * (t0 + t1)
+    every, close = _split(_large(w.series), t1 - t0, middle, first=wanted)
     # Terms closer in frequency to a regressor than one cycle over the span cannot be told apart
     # from it (l′ and 2F − 2D + 2Ω − l′ differ by the Sun's perigee, 21 000 years): take them
     # out with the analytic series of this axis first.
-    own = nutation_series(H, key, float(run.t.mean()), float(obliquity))
+    own = nutation_series(H, key, 0.5 * (w.t0 + w.end), eps0)
     amplitudes = np.array([own.term(tuple(row)) for row in close]).T.reshape(4, -1)
     prior = NutationSeries(close, *amplitudes, 0.0, H, eps0, key)
-    known_psi, known_eps = prior(run.t)
-    psi = psi - known_psi * ARCSEC
-    eps = eps - known_eps * ARCSEC
-    fitted = fit_terms(run.t[inside][::8], psi[inside][::8], eps[inside][::8], every)
-    design = np.stack([np.ones(inside.sum()), run.t[inside] - run.t[inside].mean()], -1)
-    theta = delaunay_arguments(run.t[inside]) @ every.T
-    periodic = np.sin(theta) @ fitted[:, 0] + np.cos(theta) @ fitted[:, 1]
-    drift = np.linalg.lstsq(design, psi[inside] - periodic, rcond=None)[0][1]
-    return fitted[: wanted.shape[0]] / ARCSEC, (run.precession + drift) / ARCSEC
+    # The terms are fitted on every eighth point of the span (with a constant and a drift), and
+    # the drift of ψ once they are removed on every point: both from sums over the grid, a block
+    # at a time. Centred times (any centre: the constant absorbs it).
+    fit = _LeastSquares(2 + 2 * every.shape[0], 2)
+    K = every.shape[0]
+    sums = np.zeros(5)  # n, Σx, Σx², Σy, Σxy
+    sin_sums = np.zeros((2, K))  # Σ sin θ, Σ x sin θ
+    cos_sums = np.zeros((2, K))
+    reference = None
+    for first, grid, psi_grid, eps_grid in _angle_blocks(w, key):
+        inside = grid <= t1 + 1e-12
+        if not inside.any():
+            break
+        t = grid[inside]
+        index = first + np.arange(t.size)
+        known_psi, known_eps = prior(t)
+        psi = psi_grid[inside] - known_psi * ARCSEC
+        eps = eps_grid[inside] - known_eps * ARCSEC
+        theta = delaunay_arguments(t) @ every.T
+        sin, cos = np.sin(theta), np.cos(theta)
+        x = t - middle
+        rows = index % 8 == 0
+        design = np.concatenate([np.ones((rows.sum(), 1)), x[rows, None], sin[rows], cos[rows]], 1)
+        fit.add(design, np.stack([psi[rows], eps[rows]], -1))
+        reference = float(psi[0]) if reference is None else reference
+        y = psi - reference
+        sums += (t.size, x.sum(), x @ x, y.sum(), x @ y)
+        sin_sums += (sin.sum(0), x @ sin)
+        cos_sums += (cos.sum(0), x @ cos)
+    coefficients = fit.solve()
+    fitted = np.stack([coefficients[2 : 2 + K, 0], coefficients[2 + K :, 0],
+                       coefficients[2 + K :, 1], coefficients[2 : 2 + K, 1]], axis=-1)
+    n, sx, sxx, sy, sxy = sums
+    sy -= fitted[:, 0] @ sin_sums[0] + fitted[:, 1] @ cos_sums[0]
+    sxy -= fitted[:, 0] @ sin_sums[1] + fitted[:, 1] @ cos_sums[1]
+    drift = (n * sxy - sx * sy) / (n * sxx - sx * sx)
+    return fitted[: wanted.shape[0]] / ARCSEC, (w.p + drift) / ARCSEC
 
 
 def terms_table(

@@ -14,9 +14,10 @@ the time ``t`` in Julian years TT from J2000 (negative = past):
 
 Sources: :class:`VondrakEcliptic` (the long-term ecliptic of Vondrák, Capitaine &
 Wallace 2011, through pyerfa's ``ltpecl``), :class:`NBodyOrbit` (the Sun and the eight
-planets integrated with REBOUND, cached), :class:`SecularOrbit` (the Laplace–Lagrange
-secular theory), :class:`TableOrbit` (CSV and La2010-style tables); :func:`orbit_history`
-picks one by name or path.
+planets integrated with REBOUND, cached), :class:`SecularOrbit` (the long secular model of
+the eight planets: nonlinear, with the Jupiter–Saturn second-order terms, 10⁸–10⁹ years),
+:class:`LaplaceLagrangeOrbit` (the linear Laplace–Lagrange theory), :class:`TableOrbit`
+(CSV and La2010-style tables); :func:`orbit_history` picks one by name or path.
 
 Examples
 --------
@@ -29,6 +30,9 @@ True
 """
 
 from andoyer.planetary.orbits.factory import SOURCES, orbit_history, source_span
+from andoyer.planetary.orbits.frequencies import fundamental_frequencies, spectral_lines
+from andoyer.planetary.orbits.laplace_lagrange import LaplaceLagrangeOrbit
+from andoyer.planetary.orbits.lyapunov import lyapunov_exponent
 from andoyer.planetary.orbits.nbody import NBodyOrbit
 from andoyer.planetary.orbits.planets import PLANETS
 from andoyer.planetary.orbits.protocol import OrbitHistory, check_times
@@ -39,15 +43,19 @@ from andoyer.planetary.orbits.vondrak import VondrakEcliptic
 __all__ = [
     "PLANETS",
     "SOURCES",
+    "LaplaceLagrangeOrbit",
     "NBodyOrbit",
     "OrbitHistory",
     "SecularOrbit",
     "TableOrbit",
     "VondrakEcliptic",
     "check_times",
+    "fundamental_frequencies",
+    "lyapunov_exponent",
     "orbit_history",
     "read_alkhqp",
     "read_orbit_csv",
     "source_span",
+    "spectral_lines",
     "write_orbit_csv",
 ]

@@ -12,7 +12,7 @@ from andoyer.planetary.orbits.protocol import OrbitHistory
 __all__ = ["SOURCES", "orbit_history", "source_span"]
 
 #: The named orbit sources.
-SOURCES = ("vondrak", "nbody", "secular")
+SOURCES = ("vondrak", "nbody", "secular", "laplace-lagrange")
 
 
 def orbit_history(source: str | os.PathLike[str], body: str = "earth", **options: Any) -> OrbitHistory:
@@ -21,14 +21,16 @@ def orbit_history(source: str | os.PathLike[str], body: str = "earth", **options
     Parameters
     ----------
     source : str or path-like
-        ``"vondrak"`` (the Earth only), ``"nbody"``, ``"secular"``, or the path of a CSV
+        ``"vondrak"`` (the Earth only), ``"nbody"``, ``"secular"`` (the long secular model),
+        ``"laplace-lagrange"`` (the linear theory), or the path of a CSV
         table (:func:`~andoyer.planetary.orbits.table.read_orbit_csv`; a table holds one orbit, so
         ``body`` is not used).
     body : str
         A planet of :data:`~andoyer.planetary.orbits.planets.PLANETS`.
     **options
-        Passed to :class:`~andoyer.planetary.orbits.nbody.NBodyOrbit` or
-        :class:`~andoyer.planetary.orbits.secular.SecularOrbit`.
+        Passed to :class:`~andoyer.planetary.orbits.nbody.NBodyOrbit`,
+        :class:`~andoyer.planetary.orbits.secular.SecularOrbit` or
+        :class:`~andoyer.planetary.orbits.laplace_lagrange.LaplaceLagrangeOrbit`.
 
     Returns
     -------
@@ -60,6 +62,10 @@ def orbit_history(source: str | os.PathLike[str], body: str = "earth", **options
             from andoyer.planetary.orbits.nbody import NBodyOrbit
 
             return NBodyOrbit(planet, **options)
+        if name == "laplace-lagrange":
+            from andoyer.planetary.orbits.laplace_lagrange import LaplaceLagrangeOrbit
+
+            return LaplaceLagrangeOrbit(planet, **options)
         from andoyer.planetary.orbits.secular import SecularOrbit
 
         return SecularOrbit(planet, **options)
@@ -89,7 +95,7 @@ def source_span(source: str, body: str = "earth") -> tuple[float, float]:
 
     Parameters
     ----------
-    source : {"vondrak", "nbody", "secular"}
+    source : {"vondrak", "nbody", "secular", "laplace-lagrange"}
     body : str
         A planet of :data:`~andoyer.planetary.orbits.planets.PLANETS` (``vondrak``: the Earth only).
 
@@ -122,5 +128,9 @@ def source_span(source: str, body: str = "earth") -> tuple[float, float]:
         from andoyer.planetary.orbits.secular import SecularOrbit
 
         return tuple(map(float, SecularOrbit.span))  # type: ignore[return-value]
+    if name == "laplace-lagrange":
+        from andoyer.planetary.orbits.laplace_lagrange import LaplaceLagrangeOrbit
+
+        return tuple(map(float, LaplaceLagrangeOrbit.span))  # type: ignore[return-value]
     msg = f"expected a named orbit source among {', '.join(SOURCES)}, got {source!r}"
     raise ValueError(msg)

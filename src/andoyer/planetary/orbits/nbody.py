@@ -43,27 +43,52 @@ climatic precession over 1 Myr, and the distance from La2004, are measured in
 docs/spin-axis.md (``scripts/nbody_variants.py``, ``scripts/compare_la2004.py``).
 
 **Cache.** Results are stored under ``$ANDOYER_CACHE_DIR``, else ``$XDG_CACHE_HOME/andoyer``,
-else ``~/.cache/andoyer``, in files named by a SHA-256 of the initial conditions, the
-integrator settings and the REBOUND(x) versions (not the span): one file per direction,
-holding every planet's normal and eccentricity vector, and the last state so that a later
-request for a longer span extends the run instead of repeating it. Writes are atomic; an
-unreadable or inconsistent file is recomputed. A progress bar (tqdm, on standard error)
-shows on long runs when standard error is a terminal.
+else ``~/.cache/andoyer``, named by a SHA-256 of the initial conditions, the integrator
+settings and the REBOUND(x) versions (not the span), in *pieces*: each file
+``nbody-KEY-DIRECTION-FIRST-LAST.npz`` holds samples ``FIRST`` to ``LAST`` of one direction
+(sample ``i`` at ``±i · sample_years``) of every planet's normal and eccentricity vector, and
+the state at its last sample, from which a later request for a longer span goes on instead
+of starting again. A piece is written (atomically) every :data:`PIECE_YEARS` of integration
+and when a run ends or is interrupted (Ctrl-C: the run raises
+:class:`~andoyer._limits.Interrupted` saying how much it kept), so that no more than a
+thousand years of work is lost to Ctrl-C, and no more than a piece to ``kill -9``.
+
+Every thousand years (:data:`CHUNK_YEARS`) the integration starts again from the state it
+saved, exactly as a later run resuming from the cache does: an orbit is the same to the last
+bit however its span was reached (in one run, in several, or interrupted and resumed), and
+the pieces of concurrent runs agree wherever they overlap. Pieces are only ever added (a
+run reads the longest chain of pieces from J2000), so two concurrent runs of different
+spans never shrink the cache.
+
+On loading, each piece is checked (shapes; finite values; unit normals to 10⁻⁹;
+eccentricities below 1; times strictly increasing away from J2000, each within a step of
+its sample's; the saved state finite and giving the piece's last sample): a piece that
+fails is removed with a warning and its span recomputed. A temporary ``.part`` file left by
+a killed write is removed once it is older than :data:`STALE_PART_SECONDS` (15 minutes; a
+piece is written in well under a second, so no live writer holds one that old). A cache
+folder that cannot be written costs a recomputation next time, with one warning. A run
+estimated past ten seconds says so once on standard error (the command line), with where
+it is cached; a progress bar (tqdm) shows on a terminal.
 """
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import io
 import json
 import os
+import re
 import sys
+import time
+import warnings
 from pathlib import Path
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer._files import atomic_write_bytes
+from andoyer._limits import Interrupted, announce, check_size
 from andoyer.planetary.orbits.elements import state_to_vectors
 from andoyer.planetary.orbits.planets import PLANETS, check_planet, planet_data
 from andoyer.planetary.orbits.protocol import check_times
@@ -74,9 +99,21 @@ Array = NDArray[np.float64]
 
 #: Speed of light, au per Julian year (299 792.458 km/s, au = 149 597 870.700 km).
 C_AU_PER_YEAR = 299792.458 * 365.25 * 86400.0 / 149597870.700
-#: Integrations are extended in chunks of this many years (whole sampling intervals).
+#: Integrations are extended in chunks of this many years (whole sampling intervals), each
+#: started from the state saved at the end of the one before.
 CHUNK_YEARS = 1000.0
-CACHE_FORMAT = 2  # 2: samples at the times reached (aimed half a step short)
+#: A piece of the cache is written every this many years of integration (a whole number of chunks).
+PIECE_YEARS = 500_000.0
+#: A ``.part`` file of the cache folder older than this (seconds) belongs to no live writer.
+STALE_PART_SECONDS = 900.0
+#: Seconds per Myr integrated, one direction (84 CPU s on one core, GR 3 % more; measured with
+#: ``benchmarks/bench_orbits.py``), for the estimate announced before a run.
+SECONDS_PER_MYR = 87.0
+#: Bytes held per sample and direction: its time, the planet's normal and eccentricity vector
+#: (56), the two cubic splines (192) and their construction (a bound of the measured ~100).
+SAMPLE_BYTES = 400
+# 3: in pieces, each chunk started from the saved state; 2: samples at the times reached
+CACHE_FORMAT = 3
 
 
 def cache_directory() -> Path:
@@ -167,63 +204,221 @@ def _vectors(states: Array) -> tuple[Array, Array]:
     return state_to_vectors(data.sun_gm + data.gm, rel[..., :3], rel[..., 3:])
 
 
+_PIECE = re.compile(
+    r"^nbody-(?P<key>[0-9a-f]+)-(?P<direction>forward|backward)-(?P<first>\d+)-(?P<last>\d+)\.npz$"
+)
+_UNWRITABLE: set[str] = set()  # cache folders already warned about (one warning per folder)
+
+
+def _clean_stale_parts(folder: Path) -> None:
+    """Remove what killed writes left: ``.nbody-*.part`` files older than :data:`STALE_PART_SECONDS`."""
+    try:
+        names = list(folder.glob(".nbody-*.part"))
+    except OSError:
+        return
+    now = time.time()
+
+    def stale(path: Path) -> bool:
+        try:
+            return now - path.stat().st_mtime > STALE_PART_SECONDS
+        except OSError:
+            return False
+
+    for path in filter(stale, names):
+        with contextlib.suppress(OSError):
+            path.unlink()
+
+
+def _years(years: float) -> str:
+    """``12 kyr``, ``1.35 Myr``."""
+    return f"{years / 1e6:.3g} Myr" if years >= 1e5 else f"{years / 1e3:.3g} kyr"
+
+
 class _Segment:
-    """Samples of one direction of integration (``sign = ±1``), cached in one file."""
+    """Samples of one direction of integration (``sign = ±1``) of planet ``index``, cached in pieces."""
 
-    def __init__(self, path: Path | None, sign: int, step: float, sample: float, gr: bool) -> None:
-        self.path, self.sign, self.step, self.sample, self.gr = path, sign, step, sample, gr
+    def __init__(
+        self, folder: Path | None, key: str, sign: int, step: float, sample: float, gr: bool, index: int
+    ) -> None:
+        self.folder, self.key, self.sign, self.index = folder, key, sign, index
+        self.step, self.sample, self.gr = step, sample, gr
+        self.direction = "forward" if sign > 0 else "backward"
         self.t = np.zeros(0)
-        self.normal = np.zeros((0, 8, 3))
-        self.ecc = np.zeros((0, 8, 3))
+        self.normal = np.zeros((0, 3))
+        self.ecc = np.zeros((0, 3))
         self.last_state = np.zeros((9, 6))
-        if path is not None:
-            self._load()
+        self._parts: list[tuple] = []  # pieces read and not yet joined to the arrays above
+        if folder is not None:
+            _clean_stale_parts(folder)
 
-    def _load(self) -> None:
+    # -- reading ------------------------------------------------------------------------------
+
+    def _pieces(self) -> list[tuple[int, int, Path]]:
+        try:
+            names = list(self.folder.iterdir())
+        except OSError:
+            return []
+        found = []
+        for path in names:
+            match = _PIECE.match(path.name)
+            if match and match["key"] == self.key and match["direction"] == self.direction:
+                found.append((int(match["first"]), int(match["last"]), path))
+        return found
+
+    def _check(self, first: int, last: int, t, normal, ecc, state) -> str | None:
+        """What is wrong with a piece's contents, or ``None``."""
+        count = last - first + 1
+        shapes = (t.shape, normal.shape, ecc.shape, state.shape)
+        if shapes != ((count,), (count, 8, 3), (count, 8, 3), (9, 6)):
+            return f"shapes {shapes} for samples {first} to {last}"
+        named = (("times", t), ("normals", normal), ("eccentricities", ecc), ("last state", state))
+        bad = [name for name, values in named if not np.all(np.isfinite(values))]
+        if bad:
+            return f"{bad[0]} not finite"
+        if not np.all(np.abs(np.linalg.norm(normal, axis=-1) - 1.0) <= 1e-9):
+            return "normals not of unit length"
+        if not np.all(np.linalg.norm(ecc, axis=-1) < 1.0):
+            return "an eccentricity of 1 or more"
+        nominal = self.sign * self.sample * np.arange(first, last + 1)
+        if not (np.all(np.diff(self.sign * t) > 0) and np.all(np.abs(t - nominal) <= self.step)):
+            return "times not those of its samples"
+        n_last, e_last = _vectors(state[None])
+        if not (np.array_equal(n_last[0], normal[-1]) and np.array_equal(e_last[0], ecc[-1])):
+            return "a last state that does not give its last sample"
+        return None
+
+    def _read(self, first: int, last: int, path: Path) -> tuple | None:
+        """A checked piece ``(t, normal_j, ecc_j, state)``, or ``None`` (a bad one is removed, warned)."""
         try:
             # Read the bytes first: np.load on a truncated file leaves its handle open.
-            with np.load(io.BytesIO(self.path.read_bytes()), allow_pickle=False) as f:
-                t, normal, ecc, last = f["t"], f["normal"], f["ecc"], f["last_state"]
-            ok = (
-                t.ndim == 1
-                and normal.shape == ecc.shape == (t.size, 8, 3)
-                and last.shape == (9, 6)
-                and t.size > 0
-                and np.all(np.isfinite(normal))
-                and np.all(np.isfinite(ecc))
-                and np.all(np.diff(self.sign * t) > 0)
-            )
-        except Exception:  # any unreadable cache file is recomputed, never trusted
-            ok = False
-        if ok:
-            self.t, self.normal, self.ecc, self.last_state = t, normal, ecc, last
+            with np.load(io.BytesIO(path.read_bytes()), allow_pickle=False) as f:
+                t, normal, ecc, state = f["t"], f["normal"], f["ecc"], f["last_state"]
+            problem = self._check(first, last, t, normal, ecc, state)
+        except FileNotFoundError:  # removed by a concurrent run since it was listed
+            return None
+        except Exception as exc:  # any unreadable file is recomputed, never trusted
+            problem = f"unreadable ({type(exc).__name__})"
+        if problem is not None:
+            msg = f"the N-body cache file {path} was damaged ({problem}): removed, its span is recomputed"
+            warnings.warn(msg, RuntimeWarning, stacklevel=2)
+            with contextlib.suppress(OSError):
+                path.unlink()
+            return None
+        j = self.index
+        return t, normal[:, j].copy(), ecc[:, j].copy(), state
+
+    def _load(self, reach: float) -> None:
+        """Read the chain of good pieces from where the samples end until they cover ``reach`` years.
+
+        At each end, the piece that goes furthest; only what a request needs is read (a 10 kyr
+        request does not read a 50 Myr cache).
+        """
+        if self.folder is None or self.reach >= reach:
+            return
+        pieces = self._pieces()
+        end = self.t.size - 1  # index of the last sample held
+        while self.reach_of(end) < reach:
+            usable = sorted((p for p in pieces if p[0] <= end + 1 <= p[1]), key=lambda p: -p[1])
+            for first, last, path in usable:
+                read = self._read(first, last, path)
+                pieces.remove((first, last, path))
+                if read is not None:
+                    t, normal, ecc, state = read
+                    skip = end + 1 - first
+                    self._parts.append((t[skip:], normal[skip:], ecc[skip:]))
+                    self.last_state = state
+                    end = last
+                    break
+            else:
+                break
+        if self._parts:
+            self.t = np.concatenate([self.t, *(p[0] for p in self._parts)])
+            self.normal = np.concatenate([self.normal, *(p[1] for p in self._parts)])
+            self.ecc = np.concatenate([self.ecc, *(p[2] for p in self._parts)])
+            self._parts = []
+
+    def reach_of(self, index: int) -> float:
+        """Years from J2000 of sample ``index`` (``-1``: none)."""
+        return index * self.sample if index >= 0 else -1.0
+
+    def cached_reach(self) -> float:
+        """How far (years) the pieces on disk go from J2000 along one chain, by their names only."""
+        if self.folder is None:
+            return max(self.reach, 0.0)
+        end = self.t.size - 1
+        pieces = self._pieces()
+        while True:
+            further = [p[1] for p in pieces if p[0] <= end + 1 <= p[1]]
+            if not further or max(further) <= end:
+                return self.reach_of(end)
+            end = max(further)
+
+    # -- integrating --------------------------------------------------------------------------
 
     @property
     def reach(self) -> float:
         """How far from J2000 (years, ≥ 0) the samples go."""
         return float(abs(self.t[-1])) if self.t.size else -1.0
 
+    def years_to(self, reach: float) -> float:
+        """Years this direction must integrate to cover ``reach`` years from J2000 (cache by its names)."""
+        cached = max(self.reach, self.cached_reach())
+        if cached >= reach:
+            return 0.0
+        return float(np.ceil(reach / CHUNK_YEARS) * CHUNK_YEARS) - max(cached, 0.0)
+
     def extend(self, reach: float, progress: bool | None) -> None:
-        """Integrate until the samples cover ``reach`` years from J2000 in this direction."""
+        """Read the cache, then integrate, until the samples cover ``reach`` years from J2000."""
+        self._load(reach)
         if self.reach >= reach:
             return
         from tqdm import tqdm
 
-        if self.t.size:  # resume from the last synchronised state
-            sim, extras = make_simulation(self.sign * self.step, self.gr, self.last_state, float(self.t[-1]))
-            start, first = self.reach, 1
-        else:
-            sim, extras = make_simulation(self.sign * self.step, self.gr)
-            start, first = 0.0, 0
-        target = np.ceil(reach / CHUNK_YEARS) * CHUNK_YEARS
-        count = round((target - start) / self.sample)
-        times = self.sign * (start + self.sample * np.arange(first, count + 1))
-        show = (sys.stderr.isatty() if progress is None else progress) and (target - start) > 20000.0
+        # Whole chunks, counted as integers: the samples' times are those reached, a hair off.
+        first_chunk = round(max(self.reach, 0.0) / CHUNK_YEARS) if self.t.size else 0
+        last_chunk = int(np.ceil(reach / CHUNK_YEARS))
+        per_piece = round(PIECE_YEARS / CHUNK_YEARS)
+        per_chunk = round(CHUNK_YEARS / self.sample)
+        new: list[tuple] = []  # chunks (t, normal, ecc, state) not yet in self
+        unsaved = 0  # of which the last ones not yet written in a piece
+        years = (last_chunk - first_chunk) * CHUNK_YEARS
+        show = (sys.stderr.isatty() if progress is None else progress) and years > 20000.0
+        bar = tqdm(total=years / CHUNK_YEARS, disable=not show, unit="kyr", desc="nbody", file=sys.stderr)
+        try:
+            state, t_state = (self.last_state, float(self.t[-1])) if self.t.size else (None, 0.0)
+            for c in range(first_chunk, last_chunk):
+                first = c * per_chunk + 1
+                times = self.sign * self.sample * np.arange(first, first + per_chunk)
+                if state is None:  # the very first chunk also holds J2000 itself
+                    times = np.concatenate([[0.0], times])
+                chunk = self._chunk(times, state, t_state)
+                new.append(chunk)
+                unsaved += 1
+                state, t_state = chunk[3], float(chunk[0][-1])
+                bar.update(1)
+                if (c + 1) % per_piece == 0 or c + 1 == last_chunk:
+                    self._save(new[len(new) - unsaved :])
+                    unsaved = 0
+        except KeyboardInterrupt:
+            if unsaved:
+                self._save(new[len(new) - unsaved :])
+            self._append(new)
+            if self.folder is None or self.folder in _UNWRITABLE:
+                raise
+            kept = f"kept {_years(max(self.reach, 0.0))} of the N-body orbit, {self.direction} from J2000,"
+            raise Interrupted(f"{kept} in {self.folder}") from None
+        finally:
+            bar.close()
+        self._append(new)
+
+    def _chunk(self, times: Array, state: Array | None, t_state: float) -> tuple[Array, Array, Array, Array]:
+        """Integrate one chunk from ``state`` at ``t_state`` (``None``: J2000); its samples and end state."""
+        sim, extras = make_simulation(self.sign * self.step, self.gr, state, t_state)
         states = np.empty((times.size, 9, 6))
         reached = np.empty(times.size)
         buf = np.empty((9, 6))
-        for k, t in enumerate(tqdm(times, disable=not show, unit="sample", desc="nbody", file=sys.stderr)):
-            if k or first:
+        for k, t in enumerate(times):
+            if t != 0.0:
                 # Aim half a step short: the run stops on the step that lands on t (a whole number of
                 # steps per sample), never one step later because the summed steps fell short by round-off.
                 sim.integrate(float(t) - 0.5 * sim.dt, exact_finish_time=0)
@@ -231,25 +426,40 @@ class _Segment:
             states[k], reached[k] = buf, sim.t
         del extras
         normal, ecc = _vectors(states)
-        self.t = np.concatenate([self.t, reached])
-        self.normal = np.concatenate([self.normal, normal])
-        self.ecc = np.concatenate([self.ecc, ecc])
-        self.last_state = states[-1].copy()
-        self._save()
+        return reached, normal, ecc, states[-1].copy()
 
-    def _save(self) -> None:
-        if self.path is None:
+    def _append(self, chunks: list[tuple]) -> None:
+        if not chunks:
             return
-        stream = io.BytesIO()
-        np.savez(stream, t=self.t, normal=self.normal, ecc=self.ecc, last_state=self.last_state)
-        try:
-            self.path.parent.mkdir(parents=True, exist_ok=True)
-            atomic_write_bytes(self.path, stream.getvalue())
-        except OSError as exc:  # a read-only cache costs a recomputation next time, not a failure now
-            import warnings
+        j = self.index
+        self.t = np.concatenate([self.t, *(c[0] for c in chunks)])
+        self.normal = np.concatenate([self.normal, *(c[1][:, j] for c in chunks)])
+        self.ecc = np.concatenate([self.ecc, *(c[2][:, j] for c in chunks)])
+        self.last_state = chunks[-1][3]
 
-            msg = f"could not write the N-body cache {self.path}: {exc}"
-            warnings.warn(msg, RuntimeWarning, stacklevel=4)
+    def _save(self, chunks: list[tuple]) -> None:
+        """Write the samples of ``chunks`` (consecutive, every planet) as one piece."""
+        if self.folder is None or not chunks or str(self.folder) in _UNWRITABLE:
+            return
+        t = np.concatenate([c[0] for c in chunks])
+        first = round(abs(float(t[0])) / self.sample)
+        name = f"nbody-{self.key}-{self.direction}-{first}-{first + t.size - 1}.npz"
+        stream = io.BytesIO()
+        np.savez(
+            stream,
+            t=t,
+            normal=np.concatenate([c[1] for c in chunks]),
+            ecc=np.concatenate([c[2] for c in chunks]),
+            last_state=chunks[-1][3],
+        )
+        try:
+            self.folder.mkdir(parents=True, exist_ok=True)
+            atomic_write_bytes(self.folder / name, stream.getvalue())
+        except OSError as exc:  # a read-only cache costs a recomputation next time, not a failure now
+            _UNWRITABLE.add(str(self.folder))
+            reason = exc.strerror or type(exc).__name__
+            msg = f"could not write the N-body cache in {self.folder} ({reason}): recomputed next time"
+            warnings.warn(msg, RuntimeWarning, stacklevel=2)
 
 
 class NBodyOrbit:
@@ -328,15 +538,9 @@ class NBodyOrbit:
         self.progress = progress
         self.cache = cache
         self.key = self._key()
-        folder = cache_directory()
+        folder = cache_directory() if cache else None
         self._segments = {
-            sign: _Segment(
-                folder / f"nbody-{self.key}-{'forward' if sign > 0 else 'backward'}.npz" if cache else None,
-                sign,
-                self.step_years,
-                self.sample_years,
-                self.gr,
-            )
+            sign: _Segment(folder, self.key, sign, self.step_years, self.sample_years, self.gr, self._index)
             for sign in (1, -1)
         }
         self._spline_reach = (-1.0, -1.0)
@@ -370,14 +574,26 @@ class NBodyOrbit:
         need_forward = float(max(times.max(), 0.0)) + margin if times.size else margin
         need_backward = float(max(-times.min(), 0.0)) + margin if times.size else margin
         forward, backward = self._segments[1], self._segments[-1]
+        if forward.reach < need_forward or backward.reach < need_backward:
+            # Refused before anything is read or integrated: the samples held (read from the cache
+            # or integrated, to whole chunks, and a piece's worth read beyond), and the time.
+            years = forward.years_to(need_forward) + backward.years_to(need_backward)
+            seconds = years / 1e6 * SECONDS_PER_MYR
+            reach = sum(
+                max(segment.reach, np.ceil(need / CHUNK_YEARS) * CHUNK_YEARS) + PIECE_YEARS
+                for segment, need in ((forward, need_forward), (backward, need_backward))
+            )
+            nbytes = reach / self.sample_years * SAMPLE_BYTES
+            check_size(f"an N-body orbit of {_years(reach)}", nbytes=nbytes, seconds=seconds)
+            where = cache_directory() if self.cache else None
+            announce(seconds, f"integrating {_years(years)} of the Solar System (N-body)", where)
         forward.extend(need_forward, self.progress)
         backward.extend(need_backward, self.progress)
         reach = (forward.reach, backward.reach)
         if reach != self._spline_reach:
             t = np.concatenate([backward.t[::-1], forward.t[1:]])
-            j = self._index
-            normal = np.concatenate([backward.normal[::-1, j], forward.normal[1:, j]])
-            ecc = np.concatenate([backward.ecc[::-1, j], forward.ecc[1:, j]])
+            normal = np.concatenate([backward.normal[::-1], forward.normal[1:]])
+            ecc = np.concatenate([backward.ecc[::-1], forward.ecc[1:]])
             self._splines = (CubicSpline(t, normal, axis=0), CubicSpline(t, ecc, axis=0))
             self._spline_reach = reach
 

@@ -1,198 +1,368 @@
-r"""A Laplace–Lagrange secular theory of the eight planets: instant for any span.
+r"""The long secular orbit model of the eight planets: a billion years of averaged orbits.
 
-With ``z_j = e_j exp(iϖ_j)`` and ``ζ_j = sin i_j exp(iΩ_j)`` (J2000 ecliptic), the
-first-order secular equations truncated at second degree (Murray & Dermott 1999,
-§7.7–7.8, eqs. 7.28–7.31 and 7.128–7.131) are linear:
+**Model.** The averaged (secular) Hamiltonian of the Sun and the eight planets in Poincaré's
+canonical heliocentric variables (:mod:`andoyer.planetary.orbits.disturbing`): every pair's
+mutual interaction averaged over the mean longitudes and expanded to degree 4 in the
+eccentricities and inclinations (the nonlinear secular terms, which give the inner planets'
+secular resonances and their chaos); the second-order terms in the masses of every pair, all
+harmonics ``|k| ≤ 16`` of their mutual perturbation, the Jupiter–Saturn 5:2 near-resonance
+(the great inequality) among them, to degree 6; the Sun's relativistic perihelion precession
+(0.43″/yr for Mercury) in closed form. The Earth–Moon barycentre is one body; the Moon, the
+Sun's oblateness, asteroids and tides are left out, as in
+:class:`~andoyer.planetary.orbits.nbody.NBodyOrbit`, which the model is measured against.
 
-.. math:: \dot z = i A z, \qquad \dot\zeta = i B \zeta,
+**Initial conditions** (the mean elements at J2000, in the invariable plane): measured from the
+N-body solution over ±5 kyr (:mod:`andoyer.planetary.orbits.mean_elements`). The Hamiltonian
+and these elements ship in ``data/secular_model.json`` (``scripts/make_secular_model.py``).
 
-.. math::
-   A_{jj} = \frac{n_j}{4}\sum_{k\ne j}\mu_{jk}\,\alpha_{jk}\bar\alpha_{jk}\,b_{3/2}^{(1)}(\alpha_{jk}),\quad
-   A_{jk} = -\frac{n_j}{4}\mu_{jk}\,\alpha_{jk}\bar\alpha_{jk}\,b_{3/2}^{(2)}(\alpha_{jk}),
+**Integration.** Lawson's method with the 8th-order Dormand–Prince tableau, the quadratic
+(Laplace–Lagrange) part exact (:mod:`andoyer.planetary.orbits.secular_flow`), a fixed step of
+1/10 of the shortest period of the linear flow (5.0 kyr), compiled; terms too small to matter
+(:data:`PRUNE`) are left out of the flow. Halving the step moves the orbits over ±2 Myr by
+0.014″ at most. The orbit is integrated from J2000 as far as it is asked for, forwards and
+backwards, and kept at every step (the chosen planet's ``x, y`` and their rates: 64 bytes per
+step, 13 MB per Gyr); between steps a cubic Hermite interpolant (up to 1″ for the Earth's
+normal, 4″ for Mars').
 
-.. math::
-   B_{jj} = -A'_{jj}, \quad
-   B_{jk} = +\frac{n_j}{4}\mu_{jk}\,\alpha_{jk}\bar\alpha_{jk}\,b_{3/2}^{(1)}(\alpha_{jk}),
-
-with ``μ_jk = m_k/(M_☉ + m_j)``, ``α_jk = min(a_j, a_k)/max(a_j, a_k)``, ``ᾱ_jk = α_jk`` for
-an outer perturber (``a_k > a_j``) and ``1`` for an inner one, and ``A'_jj`` the diagonal
-sum written with ``b_{3/2}^{(1)}``. Their eigenvalues are the fundamental frequencies
-``g_1…g_8`` and ``s_1…s_8`` (``s_5 = 0``: the invariable plane), labelled by rank, which
-matches Laskar's labels for the Solar System (``g_8 < g_7 < g_5 < g_1 < g_2 < g_3 < g_4 < g_6``,
-``s_6 < s_3 < s_4 < s_2 < s_1 < s_7 < s_8 < s_5``). The solution
-``z(t) = V diag(exp(i g t)) V⁻¹ z(0)`` is fitted to the J2000 elements of
-:mod:`andoyer.planetary.orbits.planets` (Standish's JPL Table 1).
-
-Frequencies (``frequencies=``):
-
-* ``"linear"`` (default): the eigenvalues above (the classical theory; Brouwer & van Woerkom 1950
-  without their Jupiter–Saturn great-inequality correction; the BvW values the tests use are
-  unverified, see ``docs/orbits.md``). Computed here:
-  ``g = 5.46, 7.35, 17.33, 18.01, 3.73, 22.51, 2.71, 0.634`` and
-  ``s = −5.20, −6.57, −18.75, −17.64, 0, −25.99, −2.91, −0.679`` ″/yr; La2004's
-  (Laskar et al. 2004, A&A 428, 261, Table 3; some digits unverified, see :data:`LA2004_G`) are
-  ``g = 5.59, 7.452, 17.368, 17.916, 4.257452, 28.2450, 3.087951, 0.673021`` and
-  ``s = −5.59, −7.05, −18.850, −17.755, 0, −26.347855, −2.9925259, −0.691736``: the
-  linear theory misses ``g_5`` by 0.53″/yr and ``g_6`` by 5.7″/yr (the 5:2 near-resonance
-  of Jupiter and Saturn), which turns the Earth's 405-kyr eccentricity cycle
-  (``g_2 − g_5``) into 359 kyr; elsewhere it is within 0.48″/yr (``s_2``).
-* ``"la2004"``: the same eigenvectors with La2004's frequencies in place of the
-  eigenvalues (paired by rank), amplitudes refitted to J2000: an empirical patch that
-  keeps the linear theory's mode shapes and gets the periods right (the 405-kyr cycle);
-  it does not make the mode shapes right, and the Earth's normal moves *further* from
-  VCW 2011 with it (0.84° against 0.61° at ±200 kyr), so ``"linear"`` is the default.
-
-Distances (measured; more in ``docs/orbits.md``): the Earth's normal (``"linear"``) is
-0.038° from :class:`~andoyer.planetary.orbits.vondrak.VondrakEcliptic` over ±20 kyr and 0.61° over
-±200 kyr; from :class:`~andoyer.planetary.orbits.nbody.NBodyOrbit` 0.041°, 0.66° and 2.4° over ±20 kyr,
-±200 kyr and ±1 Myr, its eccentricity vector 6×10⁻⁴, 0.012 and 0.046; Mars' normal 0.13°,
-1.9° and 4.5°, its eccentricity vector 0.003, 0.038 and 0.13. The theory leaves out the
-second-order (great-inequality) and higher-degree secular terms: a fast, qualitative source.
+**Validity** (``docs/orbits.md`` has the measurements): the fundamental frequencies ``g_1…g_8``,
+``s_1…s_8`` are within 0.03″/yr of the N-body solution's but ``g_6`` (−0.16″/yr), ``s_6``
+(+0.06″/yr); the Lyapunov time of the inner planets is 4–9 Myr. Beyond a few tens of Myr a
+single solution is one possible history, not a prediction; over 10⁸–10⁹ years the model serves
+statistics. ``span`` is ±1 Gyr. A planet beyond ``e = 0.35`` or ``i = 20°`` (Mercury, in some
+histories of a few hundred Myr) gives a :class:`RuntimeWarning`: the expansion loses accuracy
+there; beyond ``e = 0.6`` or ``i = 40°`` the run stops with a :class:`ValueError`.
 """
 
 from __future__ import annotations
 
+import json
+import sys
+from dataclasses import dataclass
 from functools import cache
+from importlib import resources
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer.planetary.orbits.elements import eccentricity_from_elements
-from andoyer.planetary.orbits.laplace import laplace_coefficient
 from andoyer.planetary.orbits.planets import PLANETS, check_planet, planet_data
 from andoyer.planetary.orbits.protocol import check_times
 
-__all__ = ["LA2004_G", "LA2004_S", "SecularOrbit", "secular_matrices"]
-
-ARCSEC = np.pi / (180.0 * 3600.0)
-
-#: La2004 fundamental frequencies g1…g8 (″/yr), Laskar et al. (2004), A&A 428, 261, Table 3.
-#: Confirmed (review, 2026): the table number (A&A's table list for the paper), g2 and g5 (as
-#: Laskar et al. 2011, A&A 532, A89, Table 6 reprints them) and g3, g4. Unverified (typed in
-#: from memory, no reachable source prints them): g1, g6, g7, g8; an N-body frequency analysis
-#: (scripts/check_outer_frequencies.py) corroborates g5, g7, g8 within 0.05″/yr and brackets g6
-#: (26.05–29.35). See docs/orbits.md.
-LA2004_G = np.array([5.59, 7.452, 17.368, 17.916, 4.257452, 28.2450, 3.087951, 0.673021])
-#: La2004 fundamental frequencies s1…s8 (″/yr), same table (s5 = 0: the invariable plane).
-#: Confirmed: s3, s4. Unverified: s1, s2, s6, s7, s8 (s7, s8 corroborated within 0.005″/yr,
-#: s6 bracketed by −26.93 and −26.32, by the same N-body check).
-LA2004_S = np.array([-5.59, -7.05, -18.850, -17.755, 0.0, -26.347855, -2.9925259, -0.691736])
-
-# Rank of each label's frequency among the eight (the Solar System's order, see above).
-_G_ORDER = np.argsort(LA2004_G)
-_S_ORDER = np.argsort(LA2004_S)
+__all__ = ["MAX_SPAN", "SecularModel", "SecularOrbit", "secular_model"]
 
 Array = NDArray[np.float64]
+CArray = NDArray[np.complex128]
+
+#: The largest ``|t|`` (years) the model answers for.
+MAX_SPAN = 1.0e9
+#: Where the degree-4 expansion starts to lose accuracy (a warning): eccentricity, inclination (rad).
+#: At e = 0.35 the remainder of Mercury's interaction with Venus is about 2 % of its quadratic part
+#: (``scripts/secular_truncation.py``: 0.3 % at J2000's 0.21, growing like e⁴).
+E_WARN, I_WARN = 0.35, np.radians(20.0)
+#: Where the model stops (a ValueError): the remainder would be of the order of the terms kept.
+E_MAX, I_MAX = 0.6, np.radians(40.0)
+#: Steps per extension of a run (the unit of progress and of interruption).
+CHUNK_STEPS = 1 << 15
+#: The default step, as a fraction of the shortest period of the linear flow (5.0 kyr).
+STEP_FRACTION = 1.0 / 10.0
+#: Derivative monomials smaller than this fraction of their component's linear rate are left out
+#: of the flow (at 1.5 times the largest amplitude the linear theory allows each variable).
+PRUNE = 1e-5
 
 
-def secular_matrices() -> tuple[Array, Array]:
-    """The Laplace–Lagrange matrices ``A`` and ``B`` (rad/yr) of the eight planets.
+@dataclass(frozen=True)
+class SecularModel:
+    """The shipped secular model: its Hamiltonian arranged for the flow, and the J2000 state.
 
-    Returns
-    -------
-    A, B : numpy.ndarray, shape (8, 8)
-
-    Examples
-    --------
-    >>> A, B = secular_matrices()
-    >>> A.shape, bool(abs(np.linalg.eigvals(B)).min() < 1e-15)
-    ((8, 8), True)
+    Attributes
+    ----------
+    terms : FlowTerms
+        :class:`~andoyer.planetary.orbits.secular_flow.FlowTerms` (relativity included).
+    sun : float
+        The Sun's GM (au³/yr²).
+    gm, Lambda, a, n : numpy.ndarray, shape (8,)
+        The planets' GM, ``Λ_j``, mean semi-major axes (au), mean motions (rad/yr).
+    w0 : numpy.ndarray of complex, shape (16,)
+        ``(x_1…x_8, y_1…y_8)`` at J2000, invariable frame.
+    rotation : numpy.ndarray, shape (3, 3)
+        J2000 ecliptic → invariable frame.
+    settings : dict
+        How the model was made (degree, second-order pairs, …).
     """
-    data = planet_data()
-    a, m, sun = data.a, data.gm, data.sun_gm
-    n = np.sqrt((sun + m) / a**3)
-    N = len(a)
-    A = np.zeros((N, N))
-    B = np.zeros((N, N))
-    for j in range(N):
-        for k in range(N):
-            if k == j:
-                continue
-            inner = a[j] < a[k]  # j inside: k is an external perturber
-            alpha = a[j] / a[k] if inner else a[k] / a[j]
-            factor = n[j] / 4.0 * m[k] / (sun + m[j]) * alpha * (alpha if inner else 1.0)
-            b1 = float(laplace_coefficient(1.5, 1, alpha))
-            b2 = float(laplace_coefficient(1.5, 2, alpha))
-            A[j, j] += factor * b1
-            A[j, k] = -factor * b2
-            B[j, j] -= factor * b1
-            B[j, k] = factor * b1
-    return A, B
+
+    terms: object
+    sun: float
+    gm: Array
+    Lambda: Array
+    a: Array
+    n: Array
+    w0: CArray
+    rotation: Array
+    settings: dict
 
 
 @cache
-def _modes(frequencies: str) -> tuple[Array, Array, NDArray[np.complex128], NDArray[np.complex128]]:
-    """Labelled frequencies ``g, s`` (rad/yr) and the modes' J2000 vectors ``V diag(c)``, ``W diag(c)``."""
-    data = planet_data()
-    A, B = secular_matrices()
-    out = []
-    for matrix, published, order, z0 in (
-        (A, LA2004_G, _G_ORDER, data.e * np.exp(1j * data.varpi)),
-        (B, LA2004_S, _S_ORDER, np.sin(data.inclination) * np.exp(1j * data.node)),
-    ):
-        values, vectors = np.linalg.eig(matrix)
-        rank = np.argsort(values.real)
-        labelled = np.empty(8, dtype=int)
-        labelled[order] = rank  # label i gets the eigenpair of the same rank as published[i]
-        freq = values.real[labelled]
-        vec = vectors[:, labelled]
-        if frequencies == "la2004":
-            freq = published * ARCSEC
-        out.append((freq, vec, np.linalg.solve(vec, z0)))
-    (g, V, cg), (s, W, cs) = out
-    return g, s, V @ np.diag(cg), W @ np.diag(cs)
+def secular_model(path: str | None = None) -> SecularModel:
+    """Read ``data/secular_model.json`` (or a variant made by the script) once and arrange it for the flow.
+
+    Parameters
+    ----------
+    path : str, optional
+        A model file written by ``scripts/make_secular_model.py --out``; default: the shipped one.
+
+    Returns
+    -------
+    SecularModel
+
+    Examples
+    --------
+    >>> model = secular_model()
+    >>> model.w0.shape, model.settings["degree"]
+    ((16,), 4)
+    """
+    from andoyer.planetary.orbits.disturbing import relativity_constant
+    from andoyer.planetary.orbits.nbody import C_AU_PER_YEAR
+    from andoyer.planetary.orbits.secular_flow import FlowTerms
+
+    if path is None:
+        text = (
+            resources.files("andoyer.planetary.orbits").joinpath("data/secular_model.json").read_text("utf-8")
+        )
+    else:
+        with open(path, encoding="utf-8") as f:
+            text = f.read()
+    raw = json.loads(text)
+    if raw["planets_j2000_sha256"] != planet_data().digest:
+        msg = (
+            "expected data/secular_model.json made from the shipped planets_j2000.json "
+            "(run scripts/make_secular_model.py), got one made from other data"
+        )
+        raise ValueError(msg)
+    count = len(raw["planets"])
+    exponents = np.zeros((len(raw["terms"]), 4 * count), dtype=np.int64)
+    coefficients = np.empty(len(raw["terms"]), dtype=complex)
+    for row, (factors, re, im) in enumerate(raw["terms"]):
+        for var, power in factors:
+            exponents[row, var] = power
+        coefficients[row] = complex(re, im)
+    Lambda, a = np.array(raw["Lambda"]), np.array(raw["a"])
+    gr = relativity_constant(raw["sun_gm"], np.array(raw["gm"]), a, C_AU_PER_YEAR)
+    w0 = np.array([complex(*z) for z in raw["x0"] + raw["y0"]])
+    # The linear flow alone (an infinite threshold keeps only the quadratic terms), and the largest
+    # |w_b| it reaches from w0: Σ_m |V_bm| |(V⁻¹ w0)_m|.
+    linear = FlowTerms.from_polynomial(exponents, coefficients, count, gr, Lambda, np.ones(2 * count), np.inf)
+    _, vectors = np.linalg.eig(linear.linear)
+    amplitude = 1.5 * np.abs(vectors) @ np.abs(np.linalg.solve(vectors, w0))
+    terms = FlowTerms.from_polynomial(exponents, coefficients, count, gr, Lambda, amplitude, PRUNE)
+    return SecularModel(
+        terms, float(raw["sun_gm"]), np.array(raw["gm"]), Lambda, a, np.array(raw["n"]), w0,
+        np.array(raw["rotation"]), raw["settings"],
+    )  # fmt: skip
+
+
+def vectors_from_poincare(
+    x: CArray, y: CArray, Lambda: float | Array, rotation: Array
+) -> tuple[Array, Array]:
+    r"""The unit normal and eccentricity vector (J2000 ecliptic) from Poincaré ``x, y`` (invariable frame).
+
+    ``√(1−e²) = 1 − |x|²/(2Λ)``, ``ϖ = arg x``; ``1 − cos i = |y|²/(2Λ√(1−e²))``, ``Ω = arg y``.
+
+    Parameters
+    ----------
+    x, y : numpy.ndarray of complex, shape (...)
+    Lambda : float or numpy.ndarray, shape (...)
+    rotation : numpy.ndarray, shape (3, 3)
+        J2000 ecliptic → invariable frame.
+
+    Returns
+    -------
+    normal, eccentricity_vector : numpy.ndarray, shape (..., 3)
+
+    Examples
+    --------
+    >>> n, e = vectors_from_poincare(np.array(0.1 + 0j), np.array(0j), 1.0, np.eye(3))
+    >>> n.tolist(), e.round(6).tolist()
+    ([0.0, 0.0, 1.0], [0.099875, 0.0, 0.0])
+    """
+    root = 1.0 - (x.real**2 + x.imag**2) / (2.0 * Lambda)
+    e = np.sqrt(np.clip(1.0 - root * root, 0.0, None))
+    cos_i = 1.0 - (y.real**2 + y.imag**2) / (2.0 * Lambda * root)
+    sin_i = np.sqrt(np.clip(1.0 - cos_i * cos_i, 0.0, None))
+    node, varpi = np.angle(y), np.angle(x)
+    normal = np.stack([sin_i * np.sin(node), -sin_i * np.cos(node), cos_i], axis=-1)
+    ecc = eccentricity_from_elements(e, np.arctan2(sin_i, cos_i), node, varpi)
+    return normal @ rotation, ecc @ rotation
+
+
+class _Run:
+    """The integration in one direction from J2000 (``sign = ±1``): every step's ``w`` and ``ẇ`` kept."""
+
+    def __init__(self, model: SecularModel, keep: NDArray[np.int64], sign: int, step: float) -> None:
+        from andoyer.planetary.orbits.secular_flow import lawson_matrices
+
+        self.model, self.keep, self.sign, self.step = model, keep, sign, step
+        self.tableau = lawson_matrices(model.terms.linear, sign * step)
+        self.state = model.w0.copy()
+        self.w = np.zeros((0, keep.size), dtype=complex)
+        self.dw = np.zeros((0, keep.size), dtype=complex)
+        self.extreme = np.zeros(2 * model.terms.count)
+        self.warned = np.zeros(model.terms.count, dtype=bool)
+
+    @property
+    def reach(self) -> float:
+        """How far from J2000 (years, ≥ 0) the samples go."""
+        return (len(self.w) - 1) * self.step if len(self.w) else -1.0
+
+    def extend(self, reach: float, progress: bool | None) -> None:
+        """Integrate until the samples cover ``reach`` years (and one step beyond)."""
+        from tqdm import tqdm
+
+        from andoyer.planetary.orbits.secular_flow import integrate
+
+        total = int(np.ceil(reach / self.step)) + 1
+        if len(self.w) > total:
+            return
+        done = max(len(self.w) - 1, 0)
+        terms = self.model.terms
+        a_matrix, b_weights, forward, backward = self.tableau
+        show = (sys.stderr.isatty() if progress is None else progress) and (total - done) * self.step > 2e8
+        with tqdm(total=total - done, disable=not show, unit="step", desc="secular", file=sys.stderr) as bar:
+            while done < total:
+                n = min(CHUNK_STEPS, total - done)
+                state = self.state.copy()
+                out_w = np.empty((n + 1, self.keep.size), dtype=complex)
+                out_dw = np.empty_like(out_w)
+                extreme = np.zeros_like(self.extreme)
+                integrate(
+                    state, n, self.sign * self.step, a_matrix, b_weights, forward, backward,
+                    *terms.arrays(), terms.linear, self.keep, out_w, out_dw, extreme,
+                )  # fmt: skip
+                self._check_domain(extreme, done + n)
+                w = np.concatenate([self.w[:-1], out_w]) if len(self.w) else out_w
+                dw = np.concatenate([self.dw[:-1], out_dw]) if len(self.dw) else out_dw
+                # One assignment per chunk: an interruption (Ctrl-C) between chunks leaves the run
+                # consistent, and a later request goes on from there.
+                self.w, self.dw, self.state, self.extreme = w, dw, state, np.maximum(self.extreme, extreme)
+                done += n
+                bar.update(n)
+
+    def _check_domain(self, extreme: Array, steps: int) -> None:
+        P = self.model.terms.count
+        L = self.model.Lambda
+        # √(1−e²) = 1 − |x|²/(2Λ); 1 − cos i = |y|²/(2Λ√(1−e²)) (bounded with the smallest √(1−e²)).
+        root = 1.0 - extreme[:P] / (2.0 * L)
+        e = np.sqrt(np.clip(1.0 - root * root, 0.0, 1.0))
+        i = np.arccos(np.clip(1.0 - extreme[P:] / (2.0 * L * np.clip(root, 1e-3, None)), -1.0, 1.0))
+        when = f"within {steps * self.step:.3g} years of J2000"
+        bad = np.nonzero((e > E_MAX) | (i > I_MAX))[0]
+        if bad.size:
+            j = int(bad[0])
+            msg = (
+                f"expected the planets' eccentricities below {E_MAX} and inclinations below "
+                f"{np.degrees(I_MAX):g} degrees, where the secular model's expansion holds, got "
+                f"{PLANETS[j]} at e = {e[j]:.3f}, i = {np.degrees(i[j]):.1f} degrees {when}"
+            )
+            raise ValueError(msg)
+        far = np.nonzero(((e > E_WARN) | (i > I_WARN)) & ~self.warned)[0]
+        if far.size:
+            import warnings
+
+            j = int(far[0])
+            self.warned[far] = True
+            msg = (
+                f"{PLANETS[j]} reached e = {e[j]:.3f}, i = {np.degrees(i[j]):.1f} degrees {when}: beyond "
+                f"e = {E_WARN}, i = {np.degrees(I_WARN):g} degrees the secular model's degree-4 expansion "
+                "loses accuracy (its remainder grows like e⁴; docs/orbits.md)"
+            )
+            warnings.warn(msg, RuntimeWarning, stacklevel=5)
 
 
 class SecularOrbit:
-    """A planet's orbit from the Laplace–Lagrange secular theory of the eight planets.
+    """A planet's orbit from the long secular model of the eight planets (mean elements).
 
     Parameters
     ----------
     body : str
-        One of :data:`~andoyer.planetary.orbits.planets.PLANETS` (``"earth"`` = Earth–Moon barycentre).
-    frequencies : {"linear", "la2004"}
-        The eigenfrequencies of the linear theory, or La2004's in their place (see the
-        module's notes).
-
-    Attributes
-    ----------
-    g, s : numpy.ndarray, shape (8,)
-        The fundamental frequencies used, ″/yr, labelled ``g1…g8``, ``s1…s8``.
+        One of :data:`~andoyer.planetary.orbits.planets.PLANETS` (``"earth"`` = Earth–Moon
+        barycentre).
+    step : float, optional
+        Integration step, years (default: :data:`STEP_FRACTION` of the shortest linear period,
+        5.0 kyr).
+    max_span : float
+        The largest ``|t|`` that may be asked for (at most :data:`MAX_SPAN`).
+    progress : bool or None
+        Progress bar on runs longer than 200 Myr; ``None``: when standard error is a terminal.
 
     Examples
     --------
-    >>> orbit = SecularOrbit("earth", frequencies="linear")
-    >>> [round(float(x), 2) for x in orbit.g[:4]]
-    [5.46, 7.35, 17.33, 18.01]
-    >>> float(np.linalg.norm(orbit.eccentricity_vector(0.0))).__round__(8)
-    0.01671123
+    >>> orbit = SecularOrbit("earth")
+    >>> orbit.span
+    (-1000000000.0, 1000000000.0)
+    >>> round(float(np.linalg.norm(orbit.eccentricity_vector(0.0))), 4)
+    0.0167
     """
 
     name = "secular"
-    span = (-np.inf, np.inf)
     has_eccentricity = True
+    span = (-MAX_SPAN, MAX_SPAN)
 
-    def __init__(self, body: str = "earth", frequencies: str = "linear") -> None:
+    def __init__(
+        self,
+        body: str = "earth",
+        step: float | None = None,
+        max_span: float = MAX_SPAN,
+        progress: bool | None = None,
+    ) -> None:
+        from andoyer.planetary.orbits.secular_flow import default_step
+
         self.body = PLANETS[check_planet(body)]
         self._index = PLANETS.index(self.body)
-        if frequencies not in ("linear", "la2004"):
-            msg = f"expected frequencies 'linear' or 'la2004', got {frequencies!r}"
+        if not (np.isfinite(max_span) and 0 < max_span <= MAX_SPAN):
+            msg = f"expected 0 < max_span <= {MAX_SPAN:g} years, got {max_span!r}"
             raise ValueError(msg)
-        self.frequencies = frequencies
-        g, s, self._ecc_modes, self._inc_modes = _modes(frequencies)
-        self._g, self._s = g, s
-        self.g = g / ARCSEC
-        self.s = s / ARCSEC
+        self.model = secular_model()
+        if step is None:
+            step = default_step(self.model.terms.linear, STEP_FRACTION)
+        if not (np.isfinite(step) and 1.0 <= step <= 20000.0):
+            msg = f"expected an integration step between 1 and 20000 years, got {step!r}"
+            raise ValueError(msg)
+        self.step = float(step)
+        self.span = (-float(max_span), float(max_span))
+        self.progress = progress
+        P = self.model.terms.count
+        keep = np.array([self._index, P + self._index], dtype=np.int64)
+        self._runs = {sign: _Run(self.model, keep, sign, self.step) for sign in (1, -1)}
 
-    def _complex(self, t: ArrayLike) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
+    def _poincare(self, t: ArrayLike) -> tuple[CArray, CArray]:
+        from andoyer.planetary.orbits.secular_flow import hermite
+
         times = check_times(t, self.span, self.name)
-        # z_j(t) = Σ_i V_ji c_i exp(i g_i t), and the same for ζ with W, s.
-        z = np.exp(1j * times[..., None] * self._g) @ self._ecc_modes[self._index]
-        zeta = np.exp(1j * times[..., None] * self._s) @ self._inc_modes[self._index]
-        return z, zeta
+        flat = times.ravel()
+        out = np.empty((flat.size, 2), dtype=complex)
+        for sign, run in self._runs.items():
+            side = flat >= 0 if sign > 0 else flat < 0
+            if not np.any(side):
+                continue
+            run.extend(float(np.abs(flat[side]).max()), self.progress)
+            out[side] = hermite(flat[side], 0.0, sign * self.step, run.w, run.dw)
+        return out[:, 0].reshape(times.shape), out[:, 1].reshape(times.shape)
+
+    def poincare(self, t: ArrayLike) -> tuple[CArray, CArray]:
+        """The planet's mean Poincaré variables ``x, y`` (invariable frame) at ``t``.
+
+        Parameters
+        ----------
+        t : array_like, shape (...)
+            Julian years TT from J2000.
+
+        Returns
+        -------
+        x, y : numpy.ndarray of complex, shape (...)
+        """
+        return self._poincare(t)
 
     def normal(self, t: ArrayLike) -> Array:
-        """Unit orbit normal ``(sin i sin Ω, −sin i cos Ω, cos i)``, J2000 ecliptic frame.
+        """Unit normal of the mean orbit, J2000 ecliptic frame.
 
         Parameters
         ----------
@@ -203,12 +373,11 @@ class SecularOrbit:
         -------
         numpy.ndarray, shape (..., 3)
         """
-        _, zeta = self._complex(t)
-        p, q = zeta.imag, zeta.real
-        return np.stack([p, -q, np.sqrt(1.0 - p * p - q * q)], axis=-1)
+        x, y = self._poincare(t)
+        return vectors_from_poincare(x, y, self.model.Lambda[self._index], self.model.rotation)[0]
 
     def eccentricity_vector(self, t: ArrayLike) -> Array:
-        """``e`` times the unit vector to perihelion, J2000 ecliptic frame.
+        """Mean eccentricity vector (``e`` times the unit vector to perihelion), J2000 ecliptic.
 
         Parameters
         ----------
@@ -219,8 +388,8 @@ class SecularOrbit:
         -------
         numpy.ndarray, shape (..., 3)
         """
-        z, zeta = self._complex(t)
-        return eccentricity_from_elements(np.abs(z), np.arcsin(np.abs(zeta)), np.angle(zeta), np.angle(z))
+        x, y = self._poincare(t)
+        return vectors_from_poincare(x, y, self.model.Lambda[self._index], self.model.rotation)[1]
 
     def __repr__(self) -> str:
-        return f"SecularOrbit({self.body!r}, frequencies={self.frequencies!r})"
+        return f"SecularOrbit({self.body!r}, step={self.step:g})"

@@ -24,7 +24,7 @@ Examples
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -32,16 +32,20 @@ from numpy.typing import ArrayLike
 from andoyer._validation import as_finite
 from andoyer.planetary.orbits.protocol import OrbitHistory, check_times
 from andoyer.planetary.spin_axis.history import (
+    BLOCK_ROWS,
     DEFAULT_STEP,
     EPSILON_0,
+    HISTORY_ROW_BYTES,
     SpinAxisHistory,
     build_model,
+    check_run,
     equinox,
     evolve_axes,
     general_precession,
-    history,
+    history_blocks,
     mean_pole_j2000,
     output_times,
+    run_cost,
 )
 from andoyer.planetary.spin_axis.insolation import daily_insolation
 from andoyer.planetary.spin_axis.model import (
@@ -58,6 +62,7 @@ __all__ = [
     "SpinAxisHistory",
     "SpinAxisModel",
     "build_model",
+    "check_run",
     "daily_insolation",
     "default_axis",
     "equinox",
@@ -65,6 +70,8 @@ __all__ = [
     "general_precession",
     "mean_pole_j2000",
     "output_times",
+    "run_cost",
+    "spin_axis_blocks",
     "spin_axis_history",
 ]
 
@@ -164,8 +171,10 @@ def spin_axis_history(
     Raises
     ------
     ValueError
-        For a parameter out of its range (:mod:`andoyer.planetary.parameters`), or times
-        outside the orbit's span.
+        For a parameter out of its range (:mod:`andoyer.planetary.parameters`), times
+        outside the orbit's span, and a run that cannot fit in memory or time
+        (:func:`run_cost`, :func:`andoyer._limits.check_size`: the memory is that of the
+        output, 88 bytes per time, and of one block of the integration, whatever the span).
 
     Examples
     --------
@@ -174,6 +183,36 @@ def spin_axis_history(
     >>> round(float(h.precession[1] / ARCSEC), 2)  # p_A after a century; IAU 2006: 5029.90
     5029.9
     """
+    blocks = spin_axis_blocks(
+        orbit,
+        body,
+        times,
+        precession_rate=precession_rate,
+        dynamical_ellipticity=dynamical_ellipticity,
+        tidal_dissipation=tidal_dissipation,
+        ellipticity_drift=ellipticity_drift,
+        axis=axis,
+        step=step,
+        order=order,
+        coupling=coupling,
+        row_bytes=HISTORY_ROW_BYTES,
+        what="a spin-axis history",
+    )
+    return SpinAxisHistory.concatenate(list(blocks))
+
+
+def _prepare(
+    orbit: OrbitHistory,
+    body: str,
+    times: ArrayLike,
+    precession_rate: float | None,
+    dynamical_ellipticity: float | None,
+    tidal_dissipation: float,
+    ellipticity_drift: float,
+    axis: ArrayLike | None,
+    coupling: Callable[[SpinAxisModel, tuple[float, float]], SpinAxisModel] | None = None,
+) -> tuple[OrbitHistory, SpinAxisModel, np.ndarray, np.ndarray]:
+    """The checked orbit, model, times and J2000 axis of :func:`spin_axis_history`."""
     if not isinstance(orbit, OrbitHistory):
         msg = f"expected an orbit history (andoyer.planetary.orbits), got {type(orbit).__name__}"
         raise ValueError(msg)
@@ -197,4 +236,71 @@ def spin_axis_history(
     model.check_span(min(t[0], 0.0), max(t[-1], 0.0))
     if coupling is not None:
         model = coupling(model, (float(t[0]), float(t[-1])))
-    return history(orbit, model, t, s0, step, order)
+    return orbit, model, t, s0
+
+
+def spin_axis_blocks(
+    orbit: OrbitHistory,
+    body: str,
+    times: ArrayLike,
+    *,
+    precession_rate: float | None = None,
+    dynamical_ellipticity: float | None = None,
+    tidal_dissipation: float = 0.0,
+    ellipticity_drift: float = 0.0,
+    axis: ArrayLike | None = None,
+    step: float = DEFAULT_STEP,
+    order: int = 8,
+    coupling: Callable[[SpinAxisModel, tuple[float, float]], SpinAxisModel] | None = None,
+    rows: int = BLOCK_ROWS,
+    row_bytes: float = 0.0,
+    row_seconds: float = 0.0,
+    fixed_bytes: float = 0.0,
+    what: str = "a spin-axis run",
+) -> Iterator[SpinAxisHistory]:
+    """:func:`spin_axis_history` a block of ``rows`` output times at a time, for streamed output.
+
+    The arguments and the cost are checked when it is called (:func:`check_run`: the
+    integration's memory, 96 bytes per output time and a block's, and ``row_bytes`` per
+    output time and ``fixed_bytes`` that the caller keeps; its time, with ``row_seconds``
+    per output time of the caller's); the integration runs when the first block is asked for.
+    Every block carries the ``largest_turn`` of the whole history.
+
+    Parameters
+    ----------
+    orbit, body, times, precession_rate, dynamical_ellipticity : see :func:`spin_axis_history`
+    tidal_dissipation, ellipticity_drift, axis, step, order, coupling : see :func:`spin_axis_history`
+    rows : int
+        Output times per block.
+    row_bytes, row_seconds, fixed_bytes : float
+        What the caller adds to the cost.
+    what : str
+        The run, for the messages.
+
+    Returns
+    -------
+    iterator of SpinAxisHistory
+
+    Examples
+    --------
+    >>> from andoyer.planetary.orbits import VondrakEcliptic
+    >>> blocks = spin_axis_blocks(VondrakEcliptic(), "earth", [-1000.0, 0.0, 1000.0], rows=2)
+    >>> [b.t.tolist() for b in blocks]
+    [[-1000.0, 0.0], [1000.0]]
+    """
+    if not (isinstance(rows, int | np.integer) and rows >= 1):
+        msg = f"expected a positive whole number of rows per block, got {rows!r}"
+        raise ValueError(msg)
+    orbit, model, t, s0 = _prepare(
+        orbit,
+        body,
+        times,
+        precession_rate,
+        dynamical_ellipticity,
+        tidal_dissipation,
+        ellipticity_drift,
+        axis,
+        coupling,
+    )
+    _, step = check_run(orbit, t, what, 1, step, order, row_bytes, row_seconds, fixed_bytes, model)
+    return history_blocks(orbit, model, t, s0, step, order, int(rows))
