@@ -160,10 +160,11 @@ def test_table_span_error(tmp_path):
 @pytest.mark.parametrize(
     ("text", "rotation", "match"),
     [
-        ("0 1 0 0 0 0 0\n1 1 0 0 0 0\n", np.eye(3), "expected 7 columns t a l k h q p on line 2"),
-        ("0 1 0 0 0 0 x\n", np.eye(3), "expected numbers on line 1"),
-        ("0 1 0 0 0 0 nan\n", np.eye(3), "expected finite numbers on line 1"),
-        ("0 1 0 0 0 0 0\n", 2 * np.eye(3), "expected an orthogonal 3x3 rotation"),
+        ("0 1 0 0 0 0 0\n1 1 0 0 0 0\n", np.eye(3), r"expected 7 columns \(t a l k h q p\) on line 2 .*got 6"),
+        ("0 1 0 0 0 0 0\n" * 3 + "3 1 0 0 0 0 x\n", np.eye(3), "expected numbers .* on line 4"),
+        ("".join(f"{t} 1 0 0 0 0 0\n" for t in range(3)) + "3 1 0 0 0 0 nan\n", np.eye(3),
+         "expected finite numbers, got nan in column p on line 4"),
+        ("0 1 0 0 0 0 0\n", 2 * np.eye(3), "expected a proper orthogonal 3x3 rotation"),
     ],
 )
 def test_table_alkhqp_errors(tmp_path, text, rotation, match):

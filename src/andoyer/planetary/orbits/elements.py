@@ -182,7 +182,9 @@ def state_to_vectors(mu: ArrayLike, r: ArrayLike, v: ArrayLike) -> tuple[Array, 
     return h / np.linalg.norm(h, axis=-1, keepdims=True), ecc
 
 
-def elements_from_vectors(normal: ArrayLike, eccentricity_vector: ArrayLike) -> tuple[Array, Array, Array, Array]:
+def elements_from_vectors(
+    normal: ArrayLike, eccentricity_vector: ArrayLike
+) -> tuple[Array, Array, Array, Array]:
     r"""Eccentricity, inclination, node and longitude of perihelion of a normal and an eccentricity vector.
 
     The inverse of :func:`normal_from_elements` and :func:`eccentricity_from_elements`

@@ -22,7 +22,7 @@ barycentre of the JPL ephemeris (0.016702362 and 102.91793° from DE421's states
 seven columns ``t`` (kyr from J2000), ``a``, ``l`` (mean longitude, radians),
 ``k = e cos ϖ``, ``h = e sin ϖ``, ``q = sin(i/2) cos Ω``, ``p = sin(i/2) sin Ω``, "taken in the
 invariant reference frame". The README does not give that frame's orientation (the plane's
-node on the ecliptic and where its ``x`` axis lies), so :func:`read_alkhqp` fixes it from the
+node on the ecliptic and where its ``x`` axis lies), so :func:`read_la2010` fixes it from the
 file itself: the row at ``t = 0`` is the Earth's orbit at J2000, which in the J2000 ecliptic is
 the osculating orbit of the Earth–Moon barycentre (DE421's states, to which La2010 was fitted
 through INPOP08 — its ``e`` at J2000 matches DE421's to the digits La2004 prints). The rotation
@@ -64,8 +64,8 @@ from andoyer.planetary.orbits.solutions import SolutionFile, check_column, incre
 
 __all__ = [
     "INVARIABLE_PLANE",
-    "read_alkhqp",
     "read_la2004",
+    "read_la2010",
     "read_la2010_ecc",
     "rotation_from_j2000_row",
 ]
@@ -74,7 +74,10 @@ Array = NDArray[np.float64]
 
 #: The invariable plane on the J2000 ecliptic (inclination, ascending node; radians):
 #: 1°34′43.3″ and 107°34′56″, Souami & Souchay (2012), A&A 543, A133, from DE405.
-INVARIABLE_PLANE = ((1.0 + 34.0 / 60.0 + 43.3 / 3600.0) * DEGREE, (107.0 + 34.0 / 60.0 + 56.0 / 3600.0) * DEGREE)
+INVARIABLE_PLANE = (
+    (1.0 + 34.0 / 60.0 + 43.3 / 3600.0) * DEGREE,
+    (107.0 + 34.0 / 60.0 + 56.0 / 3600.0) * DEGREE,
+)
 #: How far (radians) the plane found from a La2010 file may lie from :data:`INVARIABLE_PLANE` quietly.
 PLANE_TOLERANCE = 0.05 * DEGREE
 KYR = 1000.0
@@ -83,7 +86,7 @@ ALKHQP_COLUMNS = ("t", "a", "l", "k", "h", "q", "p")
 
 
 def read_la2004(path: str | os.PathLike[str], planet: str | None = None) -> SolutionFile:
-    r"""Read a La2004 ``INSOL`` file: ``t`` (kyr), ``e``, obliquity and ``ϖ`` of date (see the module's notes).
+    r"""Read a La2004 ``INSOL`` file: ``t`` (kyr), ``e``, obliquity and ``ϖ`` of date (module notes).
 
     Parameters
     ----------
@@ -207,7 +210,7 @@ def _plane_of(rotation: Array) -> tuple[float, float]:
     return float(i), float(node)
 
 
-def read_alkhqp(
+def read_la2010(
     path: str | os.PathLike[str], rotation: ArrayLike | None = None, planet: str = "earth"
 ) -> SolutionFile:
     r"""Read a La2010 ``t a l k h q p`` file, turning its frame into the J2000 ecliptic.
@@ -239,7 +242,7 @@ def read_alkhqp(
     >>> import tempfile, pathlib
     >>> path = pathlib.Path(tempfile.mkdtemp()) / "orbit.dat"
     >>> _ = path.write_text("".join(f"{t} 1.0 0.0 0.0167 0.0 0.0 0.0\n" for t in (-3, -2, -1, 0)))
-    >>> sol = read_alkhqp(path, rotation=np.eye(3))
+    >>> sol = read_la2010(path, rotation=np.eye(3))
     >>> sol.span, sol.orbit().eccentricity_vector(-1500.0).round(4).tolist()
     ((-3000.0, 0.0), [0.0167, 0.0, 0.0])
     """
@@ -257,7 +260,10 @@ def read_alkhqp(
     sin_half = np.hypot(q, p)
     bad = np.flatnonzero(sin_half > 1.0)
     if bad.size:
-        msg = f"expected sin(i/2) = sqrt(q^2 + p^2) <= 1, got {sin_half[bad[0]]:.6g} on line {table.line(bad[0])} of {str(path)!r}"
+        msg = (
+            f"expected sin(i/2) = sqrt(q^2 + p^2) <= 1, got {sin_half[bad[0]]:.6g} on line "
+            f"{table.line(bad[0])} of {str(path)!r}"
+        )
         raise ValueError(msg)
     inc, node = 2.0 * np.arcsin(sin_half), np.arctan2(p, q)
     normal = normal_from_elements(inc, node)

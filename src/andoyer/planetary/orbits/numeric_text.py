@@ -31,7 +31,7 @@ from numpy.typing import NDArray
 
 from andoyer._limits import check_size
 
-__all__ = ["Table", "read_table"]
+__all__ = ["Table", "first_row", "read_table"]
 
 Array = NDArray[np.float64]
 COMMENTS = ("#", "%")
@@ -99,6 +99,47 @@ def _scan(text: str, path: str, names: Sequence[str], skip: int) -> Iterator[tup
         yield number, values
 
 
+#: Bytes read from the start of a file to recognise its format.
+_SNIFF_BYTES = 1 << 16
+
+
+def first_row(path: str | os.PathLike[str], header_lines: int = 3) -> tuple[int, str]:
+    r"""The line number and text of a file's first data row (comments and a short header skipped).
+
+    Reads only the file's first 64 KiB: enough to recognise a format from its columns.
+
+    Parameters
+    ----------
+    path : str or path-like
+    header_lines : int
+        At most this many leading lines that are not numbers are passed over.
+
+    Returns
+    -------
+    tuple of (int, str)
+        1-based line number and the line (``(0, "")`` for a file without one).
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "t.dat"
+    >>> _ = path.write_text("% age e i\n0 0.1 1\n1 0.2 1\n")
+    >>> first_row(path)
+    (2, '0 0.1 1')
+    """
+    name = str(path)
+    with open(path, "rb") as stream:
+        data = stream.read(_SNIFF_BYTES)
+    if len(data) == _SNIFF_BYTES:
+        data = data[: data.rfind(b"\n") + 1] or data  # whole lines only (a cut UTF-8 character)
+    text = _decode(data, name)
+    skip = header_length(text, header_lines)
+    for number, line in enumerate(io.StringIO(text), start=1):
+        if number > skip and not _is_comment(line):
+            return number, line.strip()
+    return 0, ""
+
+
 def _line_of(text: str, skip: int, row: int) -> int:
     """The line number of data row ``row`` (0-based; comments and the header skipped)."""
     seen = -1
@@ -136,7 +177,7 @@ def read_table(
     header_lines: int = 0,
     min_rows: int = 4,
 ) -> Table:
-    """The rows of a whitespace-separated numeric file, checked (see the module's notes).
+    r"""The rows of a whitespace-separated numeric file, checked (see the module's notes).
 
     Parameters
     ----------
@@ -159,11 +200,11 @@ def read_table(
     --------
     >>> import tempfile, pathlib
     >>> path = pathlib.Path(tempfile.mkdtemp()) / "t.asc"
-    >>> _ = path.write_text("% t e\\n0. 0.1D+00\\n-1. 0.2D+00\\n-2. 0.3D+00\\n-3. 0.4D+00\\n")
+    >>> _ = path.write_text("% t e\n0. 0.1D+00\n-1. 0.2D+00\n-2. 0.3D+00\n-3. 0.4D+00\n")
     >>> table = read_table(path, ("t", "e"))
     >>> table.values[:, 1].tolist(), table.line(0)
     ([0.1, 0.2, 0.3, 0.4], 2)
-    >>> _ = path.write_text("0. 0.1\\n-1. 0.2\\n-1. 0.3\\n-3. 0.4\\n")
+    >>> _ = path.write_text("0. 0.1\n-1. 0.2\n-1. 0.3\n-3. 0.4\n")
     >>> read_table(path, ("t", "e"))  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
@@ -199,7 +240,7 @@ def read_table(
     if not finite.all():
         row, column = np.argwhere(~finite)[0]
         msg = (
-            f"expected finite numbers, got {values[row, column]!r} in column {names[column]} on line "
+            f"expected finite numbers, got {float(values[row, column])!r} in column {names[column]} on line "
             f"{table.line(row)} of {name!r}"
         )
         raise ValueError(msg)

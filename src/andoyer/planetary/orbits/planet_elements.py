@@ -96,8 +96,8 @@ class ElementsFromOrbit:
     >>> from andoyer.planetary.orbits import SecularOrbit
     >>> mars = ElementsFromOrbit(SecularOrbit("mars"), semi_major_axis=1.5237)
     >>> values = mars.elements(0.0)
-    >>> round(float(values["e"]), 5), round(float(np.degrees(values["perihelion"])), 3)
-    (0.09339, 336.056)
+    >>> round(float(values["e"]), 3), round(float(np.degrees(values["perihelion"])), 1)
+    (0.093, 336.1)
     """
 
     def __init__(self, orbit: OrbitHistory, semi_major_axis: float | Callable[[Array], Array] | None = None):
@@ -244,9 +244,7 @@ class OrbitElements:
             "source": self.source,
             "t": self.t.tolist(),
             "planets": list(self.planets),
-            "elements": {
-                p: {k: show(k, self.values[p].get(k)) for k in ELEMENTS} for p in self.planets
-            },
+            "elements": {p: {k: show(k, self.values[p].get(k)) for k in ELEMENTS} for p in self.planets},
         }
 
     def columns(self) -> dict[str, Array]:
@@ -272,7 +270,10 @@ class OrbitElements:
             k: (("time", "planet"), v, {"units": UNITS[k], "frame": "J2000 ecliptic and equinox"})
             for k, v in self.columns().items()
         }
-        coords = {"time": ("time", self.t, {"units": "Julian years TT from J2000"}), "planet": list(self.planets)}
+        coords = {
+            "time": ("time", self.t, {"units": "Julian years TT from J2000"}),
+            "planet": list(self.planets),
+        }
         return xr.Dataset(data, coords=coords, attrs={"source": self.source})
 
 

@@ -14,10 +14,11 @@ two column sets (extra columns are ignored):
 **alkhqp** (whitespace-separated, no header, 7 columns, the layout of La2010's
 ``La2010X_alkhqp3L.dat`` files): ``t`` (kyr), ``a``, ``λ``, ``k = e cos ϖ``,
 ``h = e sin ϖ``, ``q = sin(i/2) cos Ω``, ``p = sin(i/2) sin Ω``. La2010 refers these to the
-*invariable plane* of the Solar System, not to the J2000 ecliptic: the reader takes a
-``rotation`` (3×3, file frame → J2000 ecliptic), with no default, so that a frame is never
-assumed silently. (La2004's ``INSOLN``/``INSOLP`` files tabulate e, the obliquity and ϖ of
-date: spin quantities, not an orbit plane; they are not an orbit source.)
+*invariable plane* of the Solar System, not to the J2000 ecliptic: the reader
+(:func:`~andoyer.planetary.orbits.imcce.read_la2010`, the one reader of the format) takes a
+``rotation`` (3×3, file frame → J2000 ecliptic) or fixes it from the file's J2000 row, and says
+which. (La2004's ``INSOLN``/``INSOLP`` files tabulate e, the obliquity and ϖ of date: spin
+quantities, not an orbit plane; they are not an orbit source.)
 
 Interpolation: the vectors (elements are turned into vectors first, which avoids angle
 wrap-around) are interpolated by a not-a-knot cubic spline in ``t``; the normal is
@@ -275,16 +276,20 @@ def read_orbit_csv(path: str | os.PathLike[str]) -> TableOrbit:
     return TableOrbit(t, normal, eccentricity_from_elements(e, inc, node, varpi), name=Path(path).name)
 
 
-def read_alkhqp(path: str | os.PathLike[str], rotation: ArrayLike) -> TableOrbit:
-    r"""Read a La2010-style ``t a λ k h q p`` file, turning its frame into the J2000 ecliptic.
+def read_alkhqp(path: str | os.PathLike[str], rotation: ArrayLike | None = None) -> TableOrbit:
+    r"""Read a La2010-style ``t a λ k h q p`` file as an orbit history, in the J2000 ecliptic.
+
+    The orbit of :func:`~andoyer.planetary.orbits.imcce.read_la2010` (where the format, its
+    frame and the checks of a damaged file are described).
 
     Parameters
     ----------
     path : str or path-like
         Whitespace-separated, 7 columns, ``t`` in kyr from J2000.
-    rotation : array_like, shape (3, 3)
+    rotation : array_like, shape (3, 3), optional
         Orthogonal matrix taking vectors from the file's frame to the J2000 ecliptic
-        (the identity if the file is referred to the J2000 ecliptic already).
+        (the identity if the file is referred to the J2000 ecliptic already); default: fixed by
+        the file's row at ``t = 0`` (La2010's invariable frame onto the J2000 ecliptic).
 
     Returns
     -------
@@ -299,34 +304,9 @@ def read_alkhqp(path: str | os.PathLike[str], rotation: ArrayLike) -> TableOrbit
     >>> orbit.span, orbit.eccentricity_vector(-1500.0).round(4).tolist()
     ((-3000.0, 0.0), [0.0167, 0.0, 0.0])
     """
-    R = as_vectors(rotation, "rotation")
-    if R.shape != (3, 3) or not np.allclose(R @ R.T, np.eye(3), atol=1e-9):
-        msg = f"expected an orthogonal 3x3 rotation matrix, got {R.tolist()}"
-        raise ValueError(msg)
-    rows = [(k + 1, line.split()) for k, line in enumerate(_text_lines(path)) if line.strip()]
-    values = np.empty((len(rows), 7))
-    for r, (line, fields) in enumerate(rows):
-        if len(fields) != 7:
-            msg = f"expected 7 columns t a l k h q p on line {line} of {str(path)!r}, got {len(fields)}"
-            raise ValueError(msg)
-        try:
-            values[r] = [float(x.replace("D", "E")) for x in fields]  # Fortran exponents
-        except ValueError:
-            msg = f"expected numbers on line {line} of {str(path)!r}, got {' '.join(fields)!r}"
-            raise ValueError(msg) from None
-        if not np.isfinite(values[r]).all():
-            msg = f"expected finite numbers on line {line} of {str(path)!r}, got {' '.join(fields)!r}"
-            raise ValueError(msg)
-    k, h, q, p = values[:, 3], values[:, 4], values[:, 5], values[:, 6]
-    sin_half = np.hypot(p, q)
-    if np.any(sin_half > 1.0) or np.any(np.hypot(k, h) >= 1.0):
-        line = rows[int(np.argmax(np.maximum(sin_half, np.hypot(k, h))))][0]
-        msg = f"expected e < 1 and sin(i/2) <= 1 on line {line} of {str(path)!r}"
-        raise ValueError(msg)
-    inc, node = 2.0 * np.arcsin(sin_half), np.arctan2(p, q)
-    normal = normal_from_elements(inc, node) @ R.T
-    ecc = eccentricity_from_elements(np.hypot(k, h), inc, node, np.arctan2(h, k)) @ R.T
-    return TableOrbit(values[:, 0] * 1000.0, normal, ecc, name=Path(path).name)
+    from andoyer.planetary.orbits.imcce import read_la2010
+
+    return read_la2010(path, rotation=rotation).orbit()
 
 
 def write_orbit_csv(path: str | os.PathLike[str], orbit: OrbitHistory, t: ArrayLike) -> None:

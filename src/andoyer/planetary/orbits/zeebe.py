@@ -46,7 +46,7 @@ from andoyer.planetary.orbits.elements import eccentricity_from_elements, normal
 from andoyer.planetary.orbits.numeric_text import read_table
 from andoyer.planetary.orbits.solutions import SolutionFile, check_column, increasing
 
-__all__ = ["HCI_NODE", "HCI_INCLINATION", "hci_to_ecliptic", "read_zb18a", "read_zb23", "read_zb_ecc"]
+__all__ = ["HCI_INCLINATION", "HCI_NODE", "hci_to_ecliptic", "read_zb18a", "read_zb23", "read_zb_ecc"]
 
 Array = NDArray[np.float64]
 
@@ -196,7 +196,10 @@ def read_zb_ecc(path: str | os.PathLike[str]) -> SolutionFile:
     check_column(table, values[:, 1], "eccentricity", "e")
     if np.any(values[:, 0] < 0):
         k = int(np.flatnonzero(values[:, 0] < 0)[0])
-        msg = f"expected ages (kyr, positive into the past), got {values[k, 0]:g} on line {table.line(k)} of {str(path)!r}"
+        msg = (
+            f"expected ages (kyr, positive into the past), got {values[k, 0]:g} on line {table.line(k)} "
+            f"of {str(path)!r}"
+        )
         raise ValueError(msg)
     order = increasing(-values[:, 0])
     return SolutionFile(
@@ -250,8 +253,8 @@ def format_from_name(name: str) -> str | None:
 
     Examples
     --------
-    >>> format_from_name("ems-plan3.dat"), format_from_name("ZB20a.dat"), format_from_name("ZB23.R01.eiop.dat")
-    ('zb18a', 'zb-ecc', 'zb23')
+    >>> [format_from_name(n) for n in ("ems-plan3.dat", "ZB20a.dat", "ZB23.R01.eiop.dat")]
+    ['zb18a', 'zb-ecc', 'zb23']
     """
     lower = name.lower()
     if lower.startswith("zb23") or lower.endswith(".eiop.dat"):
