@@ -68,9 +68,9 @@ def solution_format(path: str | os.PathLike[str]) -> str:
     by_name = imcce.format_from_name(name) or zeebe.format_from_name(name)
     if by_name is not None:
         return by_name
-    line, text = first_row(path)
-    if "," in text:
+    if "," in first_row(path, header_lines=0)[1]:  # a CSV table's header row
         return "csv"
+    line, text = first_row(path)
     columns = len(text.split())
     if columns not in _BY_COLUMNS:
         where = f"{columns} columns on line {line}" if line else "no rows of numbers"
