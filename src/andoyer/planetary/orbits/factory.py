@@ -71,9 +71,16 @@ def solution_format(path: str | os.PathLike[str]) -> str:
     if "," in first_row(path, header_lines=0)[1]:  # a CSV table's header row
         return "csv"
     line, text = first_row(path)
-    columns = len(text.split())
+    fields = text.replace("D", "E").replace("d", "e").split()  # Fortran exponents (La2004)
+    try:
+        [float(x) for x in fields]
+    except ValueError:
+        fields = []
+    columns = len(fields)
     if columns not in _BY_COLUMNS:
-        where = f"{columns} columns on line {line}" if line else "no rows of numbers"
+        where = f"{columns} columns on line {line}" if columns else f"a line that is not numbers (line {line})"
+        if not line:
+            where = "no rows (an empty file)"
         msg = (
             f"expected an orbit or solution file of a known format ({', '.join(SOLUTION_FORMATS)}; "
             f"name it with --orbit-format), got {where} of {str(path)!r}"
