@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 
 from andoyer.cli.numbers import finite_number
 from andoyer.cli.output import CliError, add_output_argument, atomic_output, format_rows
@@ -64,7 +65,11 @@ def register(commands: argparse._SubParsersAction) -> None:
         help="first and last output time, Julian years from J2000 (default: the file's, or -1e5 0)",
     )
     parser.add_argument(
-        "--step", type=finite_number, metavar="DT", default=DEFAULT_STEP, help="output step, years (default 1000)"
+        "--step",
+        type=finite_number,
+        metavar="DT",
+        default=DEFAULT_STEP,
+        help="output step, years (default 1000)",
     )
     parser.add_argument(
         "--orbit-format",
@@ -88,7 +93,7 @@ def _rows(record) -> list[list[object]]:  # type: ignore[no-untyped-def]
     for i, t in enumerate(record.t):
         for j, planet in enumerate(record.planets):
             values = [float(columns[k][i, j]) for k in keys]
-            rows.append([float(t), planet, *("" if v != v else v for v in values)])
+            rows.append([float(t), planet, *("" if math.isnan(v) else v for v in values)])
     return rows
 
 
@@ -144,8 +149,10 @@ def run(args: argparse.Namespace) -> int:
         with atomic_output(args.output, binary=True) as stream:
             stream.write(bytes(data))
         return 0
-    text = json.dumps(record.as_dict()) + "\n" if args.format == "json" else format_rows(
-        _HEADER, _rows(record), args.format
+    text = (
+        json.dumps(record.as_dict()) + "\n"
+        if args.format == "json"
+        else format_rows(_HEADER, _rows(record), args.format)
     )
     with atomic_output(args.output) as stream:
         stream.write(text)

@@ -185,7 +185,9 @@ PARAMETERS: dict[str, Parameter] = {
         "the precession rate alpha cos(eps0) sets alpha: it needs cos(eps0) > 0",
     ),
     "eccentricity": Parameter("eccentricity", "e", 0.0, 1.0, True, False, "", "a bound orbit"),
-    "semi_major_axis": Parameter("semi-major axis", "a", 0.0, math.inf, False, False, "au", "a bound orbit's size"),
+    "semi_major_axis": Parameter(
+        "semi-major axis", "a", 0.0, math.inf, False, False, "au", "a bound orbit's size"
+    ),
     "inclination": Parameter(
         "inclination", "i", 0.0, math.pi, True, True, "rad", "the angle between two unit normals"
     ),

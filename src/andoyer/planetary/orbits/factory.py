@@ -78,7 +78,7 @@ def solution_format(path: str | os.PathLike[str]) -> str:
         fields = []
     columns = len(fields)
     if columns not in _BY_COLUMNS:
-        where = f"{columns} columns on line {line}" if columns else f"a line that is not numbers (line {line})"
+        where = f"{columns} columns on line {line}" if columns else f"a line not of numbers (line {line})"
         if not line:
             where = "no rows (an empty file)"
         msg = (
