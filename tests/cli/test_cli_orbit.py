@@ -211,3 +211,25 @@ def test_orbit_named_source_refuses_format(capsys):
     code, _, err = run(["orbit", "secular", "--orbit-format", "la2010"], capsys)
     assert code == 2
     assert "expected --orbit-format only with a SOURCE file" in err
+
+
+def test_orbit_obliquity_reads_named_format(tmp_path, capsys):
+    # ``andoyer obliquity --orbit PATH --orbit-format``: a plainly named ZB18a file, the Earth's
+    # orbit in the J2000 ecliptic written in HCI (i = 7.155 deg, node 180 deg); the obliquity then
+    # follows the fixed ecliptic, as with the orbit written as a CSV table of that same orbit.
+    path = tmp_path / "run.out"
+    path.write_text("".join(f"{-36525.0 * k} 1.0 0.0167 7.155 282.9 180.0 102.9 0.0\n" for k in range(11)))
+    table = tmp_path / "same.csv"
+    table.write_text(
+        "t_years,e,inclination_deg,node_deg,varpi_deg\n"
+        + "".join(f"{-100.0 * k},0.0167,0.0,0.0,102.9\n" for k in range(10, -1, -1))
+    )
+    args = ["obliquity", "earth", "--span", "-900", "0", "--step", "300", "--format", "json"]
+    code, out, err = run([*args, "--orbit", path, "--orbit-format", "zb18a"], capsys)
+    assert code == 0, err
+    code, same, err = run([*args, "--orbit", table], capsys)
+    assert code == 0, err
+    np.testing.assert_allclose(json.loads(out)["obliquity"], json.loads(same)["obliquity"], atol=1e-9)
+    code, _, err = run([*args, "--orbit", "secular", "--orbit-format", "zb18a"], capsys)
+    assert code == 2
+    assert "expected orbit_format only with a file" in err
