@@ -233,3 +233,112 @@ def test_orbit_obliquity_reads_named_format(tmp_path, capsys):
     code, _, err = run([*args, "--orbit", "secular", "--orbit-format", "zb18a"], capsys)
     assert code == 2
     assert "expected orbit_format only with a file" in err
+
+
+def test_orbit_nbody_members(tmp_path, capsys, monkeypatch):
+    monkeypatch.setenv("ANDOYER_CACHE_DIR", str(tmp_path / "cache"))
+    argv = [
+        "orbit",
+        "nbody",
+        "--members",
+        "3",
+        "--seed",
+        "2",
+        "--planets",
+        "mercury",
+        "earth",
+        "--span",
+        "-1000",
+        "0",
+        "--step",
+        "500",
+        "--scheduler",
+        "synchronous",
+    ]
+    code, out, err = run([*argv, "--format", "json"], capsys)
+    assert code == 0, err
+    data = json.loads(out)
+    assert (data["members"], data["seed"], data["delta"], data["perturb"]) == (3, 2, 1e-10, "mercury")
+    e = np.array(data["elements"]["mercury"]["e"])
+    assert e.shape == (3, 3)
+    # Member 0 is the nominal N-body orbit; the others differ from it by the displacement only.
+    from andoyer.planetary.orbits import NBodyOrbit
+
+    nominal = np.linalg.norm(
+        NBodyOrbit("mercury", progress=False).eccentricity_vector(np.array(data["t"])), axis=-1
+    )
+    np.testing.assert_array_equal(e[0], nominal)
+    assert 0 < np.abs(e[1:] - e[0]).max() < 1e-7
+    # The Earth's heliocentric state is not moved: its orbit at J2000 is the same in every member.
+    assert len({row[-1] for row in data["elements"]["earth"]["e"]}) == 1
+    code, out, err = run([*argv, "--format", "csv"], capsys)
+    rows = list(csv.reader(io.StringIO(out)))
+    assert rows[0][:3] == ["t_yr", "member", "planet"]
+    assert len(rows) == 1 + 3 * 3 * 2
+    out_nc = tmp_path / "ens.nc"
+    code, _, err = run([*argv, "--format", "netcdf", "--output", out_nc], capsys)
+    assert code == 0, err
+    import xarray as xr
+
+    with xr.open_dataset(out_nc) as ds:
+        assert ds.e.dims == ("member", "time", "planet")
+        np.testing.assert_array_equal(ds.e.values[:, :, 0], e)
+
+
+@pytest.mark.parametrize(
+    ("argv", "match"),
+    [
+        (["orbit", "secular", "--members", "2"], "expected --members only with SOURCE nbody"),
+        (["orbit", "nbody", "--members", "0", "--span", "-1000", "0"], "expected --members N >= 1"),
+        (
+            ["orbit", "nbody", "--members", "2", "--seed", "-1", "--span", "-1000", "0"],
+            "expected --seed S >= 0",
+        ),
+        (
+            ["orbit", "nbody", "--members", "2", "--workers", "0", "--span", "-1000", "0"],
+            "expected --workers W",
+        ),
+        (
+            [
+                "orbit",
+                "nbody",
+                "--members",
+                "2",
+                "--delta",
+                "1",
+                "--span",
+                "-1000",
+                "0",
+                "--scheduler",
+                "synchronous",
+            ],
+            "expected a displacement 0 < delta",
+        ),
+        (
+            [
+                "orbit",
+                "nbody",
+                "--members",
+                "2",
+                "--perturb",
+                "pluto",
+                "--span",
+                "-1000",
+                "0",
+                "--scheduler",
+                "synchronous",
+            ],
+            "expected",
+        ),
+        (["orbit", "nbody", "--members", "2", "--span", "-1000", "0", "--delta", "nan"], "finite number"),
+    ],
+)
+def test_orbit_nbody_members_bad_input(tmp_path, capsys, monkeypatch, argv, match):
+    monkeypatch.setenv("ANDOYER_CACHE_DIR", str(tmp_path / "cache"))
+    out = tmp_path / "out.json"
+    code, _, err = run([*argv, "--output", out], capsys)
+    assert code == 2, err
+    assert len(err.splitlines()) == 1, err
+    assert re.search(match, err), err
+    assert not out.exists()
+    assert not (tmp_path / "cache").exists()
