@@ -41,13 +41,14 @@ from andoyer.planetary.orbits.factory import (
     source_span,
 )
 from andoyer.planetary.orbits.frequencies import fundamental_frequencies, spectral_lines
+from andoyer.planetary.orbits.imcce import read_alkhqp
 from andoyer.planetary.orbits.laplace_lagrange import LaplaceLagrangeOrbit
 from andoyer.planetary.orbits.lyapunov import lyapunov_exponent
 from andoyer.planetary.orbits.nbody import NBodyOrbit
 from andoyer.planetary.orbits.planets import PLANETS
 from andoyer.planetary.orbits.protocol import OrbitHistory, check_times
 from andoyer.planetary.orbits.secular import SecularOrbit
-from andoyer.planetary.orbits.table import TableOrbit, read_alkhqp, read_orbit_csv, write_orbit_csv
+from andoyer.planetary.orbits.table import TableOrbit, read_orbit_csv, write_orbit_csv
 from andoyer.planetary.orbits.vondrak import VondrakEcliptic
 
 __all__ = [

@@ -45,6 +45,7 @@ import os
 import re
 import warnings
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -62,8 +63,12 @@ from andoyer.planetary.orbits.numeric_text import read_table
 from andoyer.planetary.orbits.planets import PLANETS, planet_data
 from andoyer.planetary.orbits.solutions import SolutionFile, check_column, increasing
 
+if TYPE_CHECKING:
+    from andoyer.planetary.orbits.table import TableOrbit
+
 __all__ = [
     "INVARIABLE_PLANE",
+    "read_alkhqp",
     "read_la2004",
     "read_la2010",
     "read_la2010_ecc",
@@ -306,6 +311,36 @@ def read_la2010(
         eccentricity_vector=(ecc @ R.T)[order],
         frame=frame,
     )
+
+
+def read_alkhqp(path: str | os.PathLike[str], rotation: ArrayLike | None = None) -> TableOrbit:
+    r"""Read a La2010-style ``t a λ k h q p`` file as an orbit history, in the J2000 ecliptic.
+
+    The orbit of :func:`read_la2010` (the module's notes describe the format and its frame).
+
+    Parameters
+    ----------
+    path : str or path-like
+        Whitespace-separated, 7 columns, ``t`` in kyr from J2000.
+    rotation : array_like, shape (3, 3), optional
+        Orthogonal matrix taking vectors from the file's frame to the J2000 ecliptic
+        (the identity if the file is referred to the J2000 ecliptic already); default: fixed by
+        the file's row at ``t = 0`` (La2010's invariable frame onto the J2000 ecliptic).
+
+    Returns
+    -------
+    TableOrbit
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "orbit.dat"
+    >>> _ = path.write_text("".join(f"{t} 1.0 0.0 0.0167 0.0 0.0 0.0\n" for t in (-3, -2, -1, 0)))
+    >>> orbit = read_alkhqp(path, rotation=np.eye(3))
+    >>> orbit.span, orbit.eccentricity_vector(-1500.0).round(4).tolist()
+    ((-3000.0, 0.0), [0.0167, 0.0, 0.0])
+    """
+    return read_la2010(path, rotation=rotation).orbit()
 
 
 _LA2004_NAME = re.compile(r"^INSOL[NP]\..*\.ASC$", re.IGNORECASE)

@@ -15,7 +15,8 @@ two column sets (extra columns are ignored):
 ``La2010X_alkhqp3L.dat`` files): ``t`` (kyr), ``a``, ``λ``, ``k = e cos ϖ``,
 ``h = e sin ϖ``, ``q = sin(i/2) cos Ω``, ``p = sin(i/2) sin Ω``. La2010 refers these to the
 *invariable plane* of the Solar System, not to the J2000 ecliptic: the reader
-(:func:`~andoyer.planetary.orbits.imcce.read_la2010`, the one reader of the format) takes a
+(:func:`~andoyer.planetary.orbits.imcce.read_la2010`, the one reader of the format, and
+:func:`~andoyer.planetary.orbits.imcce.read_alkhqp` for its orbit) takes a
 ``rotation`` (3×3, file frame → J2000 ecliptic) or fixes it from the file's J2000 row, and says
 which. (La2004's ``INSOLN``/``INSOLP`` files tabulate e, the obliquity and ϖ of date: spin
 quantities, not an orbit plane; they are not an orbit source.)
@@ -40,7 +41,7 @@ from andoyer.planetary.orbits.elements import eccentricity_from_elements, normal
 from andoyer.planetary.orbits.protocol import OrbitHistory, check_times
 from andoyer.planetary.parameters import PARAMETERS
 
-__all__ = ["TableOrbit", "read_alkhqp", "read_orbit_csv", "write_orbit_csv"]
+__all__ = ["TableOrbit", "read_orbit_csv", "write_orbit_csv"]
 
 Array = NDArray[np.float64]
 VECTOR_COLUMNS = ("nx", "ny", "nz")
@@ -274,39 +275,6 @@ def read_orbit_csv(path: str | os.PathLike[str]) -> TableOrbit:
     e, inc, node, varpi = values[:, 1], *np.radians(values[:, 2:5].T)
     normal = normal_from_elements(inc, node)
     return TableOrbit(t, normal, eccentricity_from_elements(e, inc, node, varpi), name=Path(path).name)
-
-
-def read_alkhqp(path: str | os.PathLike[str], rotation: ArrayLike | None = None) -> TableOrbit:
-    r"""Read a La2010-style ``t a λ k h q p`` file as an orbit history, in the J2000 ecliptic.
-
-    The orbit of :func:`~andoyer.planetary.orbits.imcce.read_la2010` (where the format, its
-    frame and the checks of a damaged file are described).
-
-    Parameters
-    ----------
-    path : str or path-like
-        Whitespace-separated, 7 columns, ``t`` in kyr from J2000.
-    rotation : array_like, shape (3, 3), optional
-        Orthogonal matrix taking vectors from the file's frame to the J2000 ecliptic
-        (the identity if the file is referred to the J2000 ecliptic already); default: fixed by
-        the file's row at ``t = 0`` (La2010's invariable frame onto the J2000 ecliptic).
-
-    Returns
-    -------
-    TableOrbit
-
-    Examples
-    --------
-    >>> import tempfile, pathlib
-    >>> path = pathlib.Path(tempfile.mkdtemp()) / "orbit.dat"
-    >>> _ = path.write_text("".join(f"{t} 1.0 0.0 0.0167 0.0 0.0 0.0\n" for t in (-3, -2, -1, 0)))
-    >>> orbit = read_alkhqp(path, rotation=np.eye(3))
-    >>> orbit.span, orbit.eccentricity_vector(-1500.0).round(4).tolist()
-    ((-3000.0, 0.0), [0.0167, 0.0, 0.0])
-    """
-    from andoyer.planetary.orbits.imcce import read_la2010
-
-    return read_la2010(path, rotation=rotation).orbit()
 
 
 def write_orbit_csv(path: str | os.PathLike[str], orbit: OrbitHistory, t: ArrayLike) -> None:
