@@ -275,11 +275,15 @@ def planet_orbits(
             a = planet_data().a
         else:
             a = None
+        if name == "secular":  # one integration for all the planets asked for
+            from andoyer.planetary.orbits.secular import SecularOrbit
+
+            orbits = SecularOrbit.system(chosen, **options)
+        else:
+            orbits = {p: orbit_history(name, p, **options) for p in chosen}
         members = {
-            p: ElementsFromOrbit(
-                orbit_history(name, p, **options), None if a is None else float(a[PLANETS.index(p)])
-            )
-            for p in chosen
+            p: ElementsFromOrbit(orbit, None if a is None else float(a[PLANETS.index(p)]))
+            for p, orbit in orbits.items()
         }
         return PlanetOrbits(members, name)
     file = _existing_file(name)
