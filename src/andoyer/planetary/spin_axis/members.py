@@ -59,6 +59,7 @@ __all__ = [
     "member_cost",
     "member_models",
     "member_obliquities",
+    "member_times",
     "perturbed_states",
 ]
 
@@ -234,6 +235,26 @@ def _steps(end: float, interval: float, spin_step: float) -> tuple[Array, float,
     h = interval / per
     substeps = max(1, int(np.ceil(h / spin_step - 1e-9)))
     return t, h, per, substeps
+
+
+def member_times(end: float, interval: float) -> Array:
+    """The output times of :func:`member_obliquities`: ``0, ±Δt, ±2Δt, …`` up to ``end``.
+
+    Parameters
+    ----------
+    end, interval : float
+        Years; ``0 < |end| ≤ 10⁹``, ``0 < interval ≤ |end|``.
+
+    Returns
+    -------
+    numpy.ndarray, shape (N,)
+
+    Examples
+    --------
+    >>> member_times(-2.5e5, 1e5).tolist()
+    [0.0, -100000.0, -200000.0]
+    """
+    return _steps(float(end), float(interval), 1000.0)[0]
 
 
 def member_cost(members: int, end: float, interval: float, spin_step: float = 1000.0) -> tuple[float, float]:
