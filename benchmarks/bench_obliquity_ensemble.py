@@ -32,12 +32,12 @@ def main() -> None:
     from andoyer.planetary.orbits import SecularOrbit
     from andoyer.planetary.orbits import secular_flow as flow
     from andoyer.planetary.orbits.secular import secular_model
-    from andoyer.planetary.spin_axis import member_obliquities, spin_axis_history
+    from andoyer.planetary.spin_axis import default_axis, member_obliquities, spin_axis_history
 
     zero = np.zeros((1, 16), complex)
-    member_obliquities("mars", -2e5, 1e5, zero)  # compile outside the clock
+    member_obliquities("mars", -2e5, 1e5, zero, default_axis("mars"))  # compile outside the clock
     start = time.process_time()
-    run = member_obliquities("mars", -args.years, args.interval, zero)
+    run = member_obliquities("mars", -args.years, args.interval, zero, default_axis("mars"))
     member = time.process_time() - start
     steps = round(args.years / run.orbit_step)
 

@@ -122,6 +122,7 @@ from andoyer.planetary.tides import (
 from andoyer.theories import SAMRotation, beta_polynomial_value, sam_tables, sam_theory
 
 P = functools.partial
+AXIS = np.array([0.0, 0.4, 0.9])
 NAN, INF, HUGE = float("nan"), float("inf"), 1e300
 BODY = RigidBody(1.0, 2.0, 3.0)
 EROS = bodies.get("eros")
@@ -591,33 +592,45 @@ CASES = [
     (member_times, member_times, (-1e5, 2e5), ValueError, "expected an output step"),
     (member_times, member_times, (-1e9, 1e-3), ValueError, "at most 10 million"),
     (member_cost, member_cost, (10, -1e5, 1e4, -5.0), ValueError, "spin-axis step"),
-    (member_obliquities, member_obliquities, ("pluto", -1e5, 1e4, np.zeros((1, 16))), ValueError, "body"),
-    (member_obliquities, member_obliquities, ("mars", -1e5, 1e4, np.zeros((1, 15))), ValueError, "shape"),
     (
         member_obliquities,
         member_obliquities,
-        ("mars", -1e5, 1e4, np.full((1, 16), NAN)),
+        ("pluto", -1e5, 1e4, np.zeros((1, 16)), AXIS),
+        ValueError,
+        "body",
+    ),
+    (
+        member_obliquities,
+        member_obliquities,
+        ("mars", -1e5, 1e4, np.zeros((1, 15)), AXIS),
+        ValueError,
+        "shape",
+    ),
+    (
+        member_obliquities,
+        member_obliquities,
+        ("mars", -1e5, 1e4, np.full((1, 16), NAN), AXIS),
         ValueError,
         "finite",
     ),
     (
         member_obliquities,
         P(member_obliquities, precession_rate=NAN),
-        ("mars", -1e5, 1e4, np.zeros((1, 16))),
+        ("mars", -1e5, 1e4, np.zeros((1, 16)), AXIS),
         ValueError,
         "expected",
     ),
     (
         member_obliquities,
         P(member_obliquities, precession_rate=7.6, dynamical_ellipticity=0.005),
-        ("mars", -1e5, 1e4, np.zeros((1, 16))),
+        ("mars", -1e5, 1e4, np.zeros((1, 16)), AXIS),
         ValueError,
         "got both",
     ),
     (
         member_obliquities,
-        P(member_obliquities, axis=[0.0, 0.0, 0.0]),
-        ("mars", -1e5, 1e4, np.zeros((1, 16))),
+        member_obliquities,
+        ("mars", -1e5, 1e4, np.zeros((1, 16)), [0.0, 0.0, 0.0]),
         ValueError,
         "non-zero axis",
     ),

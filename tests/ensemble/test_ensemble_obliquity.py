@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from andoyer.ensemble import MemberSampler, chunk_rng, obliquity_ensemble
-from andoyer.planetary.spin_axis import member_obliquities
+from andoyer.planetary.spin_axis import default_axis, member_obliquities
 
 
 def _small(**kwargs):
@@ -21,7 +21,9 @@ def test_obliquity_ensemble_members_are_member_obliquities():
     p = ds.orbit_perturbation.values
     for m in range(3):
         delta = (p[m, :16] + 1j * p[m, 16:])[None]
-        run = member_obliquities("mars", -3e5, 1e5, delta, precession_rate=float(ds.precession_rate[m]))
+        run = member_obliquities(
+            "mars", -3e5, 1e5, delta, default_axis("mars"), precession_rate=float(ds.precession_rate[m])
+        )
         # the axis goes through the sampler's State: the same to round-off
         assert np.allclose(np.degrees(run.obliquity[0]), ds.obliquity.values[m], rtol=0, atol=1e-10)
     assert np.all((ds.precession_rate.values >= 7.59) & (ds.precession_rate.values <= 7.61))

@@ -175,8 +175,8 @@ class MemberPropagator:
             rate = None if precession_rate is None else float(np.ravel(precession_rate)[i])
             h = None if dynamical_ellipticity is None else float(np.ravel(dynamical_ellipticity)[i])
             run = member_obliquities(
-                self.body, end, interval, delta[i : i + 1], precession_rate=rate, dynamical_ellipticity=h,
-                axis=axes[i], spin_step=self.spin_step,
+                self.body, end, interval, delta[i : i + 1], axes[i], precession_rate=rate,
+                dynamical_ellipticity=h, spin_step=self.spin_step,
             )  # fmt: skip
             if run.t.size != t.size or not np.allclose(run.t, t, rtol=0.0, atol=1e-9 * abs(end)):
                 msg = f"expected output times 0, DT, 2 DT, ... to {end:g}, got others"

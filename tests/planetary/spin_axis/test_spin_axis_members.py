@@ -6,14 +6,20 @@ import numpy as np
 import pytest
 
 from andoyer.planetary.orbits import SecularOrbit
-from andoyer.planetary.spin_axis import member_obliquities, member_times, perturbed_states, spin_axis_history
+from andoyer.planetary.spin_axis import (
+    default_axis,
+    member_obliquities,
+    member_times,
+    perturbed_states,
+    spin_axis_history,
+)
 from andoyer.planetary.spin_axis.members import member_models
 
 
 def test_member_unperturbed_matches_spin_axis_history_on_secular_orbit():
     """The compiled pass against SecularOrbit + spin_axis_history (numpy interpolation, rotate_stages)."""
     end, dt = -2e6, 2e4
-    run = member_obliquities("mars", end, dt, np.zeros((1, 16), complex))
+    run = member_obliquities("mars", end, dt, np.zeros((1, 16), complex), default_axis("mars"))
     assert run.orbit_step == pytest.approx(5000.0)
     assert run.spin_step == pytest.approx(1000.0)
     orbit = SecularOrbit("mars", step=run.orbit_step)
@@ -27,8 +33,8 @@ def test_member_seeds_reproduce_and_differ():
     c = perturbed_states(2, 1e-6, np.random.default_rng(6))
     assert np.array_equal(a, b)
     assert not np.array_equal(a, c)
-    ra = member_obliquities("mars", -2e5, 5e4, a)
-    rb = member_obliquities("mars", -2e5, 5e4, b)
+    ra = member_obliquities("mars", -2e5, 5e4, a, default_axis("mars"))
+    rb = member_obliquities("mars", -2e5, 5e4, b, default_axis("mars"))
     assert np.array_equal(ra.obliquity, rb.obliquity)
     assert ra.obliquity.shape == (2, 5)
     assert np.all(np.isfinite(ra.obliquity))

@@ -36,7 +36,8 @@ says when.
 
 Examples
 --------
->>> run = member_obliquities("mars", -2e5, 1e5, np.zeros((1, 16), complex))
+>>> from andoyer.planetary.spin_axis import default_axis
+>>> run = member_obliquities("mars", -2e5, 1e5, np.zeros((1, 16), complex), default_axis("mars"))
 >>> run.t.tolist(), np.round(np.degrees(run.obliquity), 2).tolist()
 ([0.0, -100000.0, -200000.0], [[25.19, 26.55, 22.13]])
 """
@@ -347,10 +348,10 @@ def member_obliquities(
     end: float,
     interval: float,
     perturbation: ArrayLike,
+    axis: ArrayLike,
     *,
     precession_rate: ArrayLike | None = None,
     dynamical_ellipticity: ArrayLike | None = None,
-    axis: ArrayLike | None = None,
     spin_step: float = 1000.0,
     on_block: object = None,
 ) -> MemberRun:
@@ -369,8 +370,9 @@ def member_obliquities(
         Each member's displacement of the J2000 secular state (:func:`perturbed_states`).
     precession_rate, dynamical_ellipticity : array_like, shape (M,) or scalar, optional
         See :func:`member_models`.
-    axis : array_like, shape (3,), optional
-        Spin axis at J2000 (default :func:`~andoyer.planetary.spin_axis.default_axis` of the planet).
+    axis : array_like, shape (3,)
+        Spin axis at J2000, J2000 ecliptic (e.g. :func:`~andoyer.planetary.spin_axis.default_axis`
+        of the planet).
     spin_step : float
         Largest spin-axis step, years (default 1000, the library's).
     on_block : callable, optional
@@ -388,7 +390,6 @@ def member_obliquities(
     from andoyer.planetary.orbits.planets import PLANETS
     from andoyer.planetary.orbits.secular import E_MAX, I_MAX, secular_model, vectors_from_poincare
     from andoyer.planetary.orbits.secular_flow import integrate, lawson_matrices
-    from andoyer.planetary.spin_axis import default_axis
 
     key = _body(body)
     planet = "earth" if key == "moonless-earth" else key
@@ -397,7 +398,7 @@ def member_obliquities(
     if delta.ndim != 2 or delta.shape[1] != 16 or not np.all(np.isfinite(delta)):
         msg = f"expected finite perturbations of shape (M, 16), got shape {delta.shape}"
         raise ValueError(msg)
-    s0 = default_axis(planet) if axis is None else np.asarray(axis, dtype=float)
+    s0 = np.asarray(axis, dtype=float)
     if s0.shape != (3,) or not np.all(np.isfinite(s0)) or not np.linalg.norm(s0) > 0:
         msg = f"expected a finite non-zero axis of shape (3,), got {axis!r}"
         raise ValueError(msg)
