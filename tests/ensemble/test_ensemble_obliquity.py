@@ -93,3 +93,42 @@ def test_obliquity_ensemble_mars_100_myr_spreads():
     assert ds["std"].values[-100:].mean() > 1.0  # the last 10 Myr: apart
     assert eps.min() > 0.0
     assert eps.max() < 70.0
+
+
+def test_obliquity_ensemble_cli_json_keys_match_the_api(tmp_path):
+    import json
+
+    from andoyer.cli import main
+
+    out = tmp_path / "mars.json"
+    argv = "obliquity mars --ensemble 3 --span -3e5 0 --step 1e5 --seed 2 --thresholds 25 60"
+    code = main([*argv.split(), "--scheduler", "synchronous", "--format", "json", "--output", str(out)])
+    assert code == 0
+    got = json.loads(out.read_text())
+    assert sorted(got) == [
+        "density",
+        "exceedance",
+        "first_passage",
+        "max",
+        "mean",
+        "members",
+        "min",
+        "std",
+        "t",
+    ]
+    ds = obliquity_ensemble(
+        "mars",
+        3,
+        -3e5,
+        1e5,
+        seed=2,
+        thresholds=np.radians([25.0, 60.0]),
+        scheduler="synchronous",
+        progress=False,
+    )
+    assert got["members"] == 3
+    assert got["t"] == ds.time.values.tolist()
+    assert np.allclose(got["mean"], ds["mean"].values, rtol=1e-15)
+    assert got["exceedance"] == {"25": float(ds.exceedance[0]), "60": float(ds.exceedance[1])}
+    widths = np.diff(got["density"]["bins"])
+    assert float(np.sum(np.array(got["density"]["pdf"]) * widths)) == pytest.approx(1.0, abs=1e-12)
