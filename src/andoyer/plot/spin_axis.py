@@ -55,14 +55,8 @@ def obliquity_history(
         if cp is not None:
             bottom.plot(h.t / 1000.0, cp, lw=1.0, label=name)
     if not any(h.climatic_precession is not None for h in items):
-        bottom.text(
-            0.5,
-            0.5,
-            "orbit source without eccentricity",
-            ha="center",
-            va="center",
-            transform=bottom.transAxes,
-        )
+        bottom.text(0.5, 0.5, "orbit source without eccentricity", ha="center", va="center",
+                    transform=bottom.transAxes)
         bottom.set_yticks([])
     top.set_ylabel("obliquity (deg)")
     bottom.set_ylabel("climatic precession e sin ϖ")

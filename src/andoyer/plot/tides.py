@@ -65,9 +65,8 @@ def tidal_history_plot(
             ages = np.array([-c.age / 1e9 for c in points])
             values = np.array([c.value for c in points])
             errors = np.array([np.nan if c.uncertainty is None else c.uncertainty for c in points])
-            ax.errorbar(
-                ages, values, yerr=np.nan_to_num(errors), fmt="o", ms=4, color="k", label="constraints"
-            )
+            ax.errorbar(ages, values, yerr=np.nan_to_num(errors), fmt="o", ms=4, color="k",
+                        label="constraints")
         ax.set_ylabel(label)
         if key == "precession_constant":
             ax.set_yscale("log")  # it grows twentyfold as the Moon approaches

@@ -16,15 +16,8 @@ class PrecessingOrbit:
     span = (-1e9, 1e9)
     has_eccentricity = True
 
-    def __init__(
-        self,
-        inclination=0.03,
-        node0=0.4,
-        node_rate=-2 * np.pi / 70000.0,
-        e=0.05,
-        omega0=1.1,
-        apsidal_rate=2 * np.pi / 25000.0,
-    ):
+    def __init__(self, inclination=0.03, node0=0.4, node_rate=-2 * np.pi / 70000.0, e=0.05, omega0=1.1,
+                 apsidal_rate=2 * np.pi / 25000.0):
         self.i, self.node0, self.g = inclination, node0, node_rate
         self.e, self.omega0, self.k = e, omega0, apsidal_rate
 

@@ -16,46 +16,16 @@ from andoyer.cli import main
 
 def _run(*argv):
     env = {**os.environ, "MPLBACKEND": "Agg"}
-    return subprocess.run(
-        [sys.executable, "-m", "andoyer", *argv],
-        capture_output=True,
-        text=True,
-        env=env,
-        timeout=120,
-        check=False,
-    )
+    return subprocess.run([sys.executable, "-m", "andoyer", *argv], capture_output=True, text=True, env=env,
+                          timeout=120, check=False)
 
 
 def test_obliquity_json_keys_and_iau_values(capsys):
-    assert (
-        main(
-            [
-                "obliquity",
-                "earth",
-                "--span",
-                "-1000",
-                "1000",
-                "--step",
-                "500",
-                "--format",
-                "json",
-                "--precession-rate",
-                "50.3848",
-            ]
-        )
-        == 0
-    )
+    assert main(["obliquity", "earth", "--span", "-1000", "1000", "--step", "500", "--format", "json",
+                 "--precession-rate", "50.3848"]) == 0
     out = json.loads(capsys.readouterr().out)
-    assert set(out) == {
-        "t",
-        "obliquity",
-        "precession",
-        "axis",
-        "orbit_normal",
-        "eccentricity",
-        "climatic_precession",
-        "precession_rate",
-    }
+    assert set(out) == {"t", "obliquity", "precession", "axis", "orbit_normal", "eccentricity",
+                        "climatic_precession", "precession_rate"}
     assert out["t"] == [-1000.0, -500.0, 0.0, 500.0, 1000.0]
     assert np.shape(out["axis"]) == (5, 3)
     assert np.shape(out["orbit_normal"]) == (5, 3)
@@ -70,14 +40,8 @@ def test_obliquity_json_keys_and_iau_values(capsys):
     # the orbit normal is the Vondrák ecliptic pole (erfa.ltpecl) in the J2000 ecliptic frame
     pole = erfa.ltpecl(2000.0 + np.array(out["t"]))
     e0 = np.radians(84381.406 / 3600)
-    pole_ecl = np.stack(
-        [
-            pole[:, 0],
-            np.cos(e0) * pole[:, 1] + np.sin(e0) * pole[:, 2],
-            -np.sin(e0) * pole[:, 1] + np.cos(e0) * pole[:, 2],
-        ],
-        -1,
-    )
+    pole_ecl = np.stack([pole[:, 0], np.cos(e0) * pole[:, 1] + np.sin(e0) * pole[:, 2],
+                         -np.sin(e0) * pole[:, 1] + np.cos(e0) * pole[:, 2]], -1)
     assert np.abs(np.array(out["orbit_normal"]) - pole_ecl).max() <= 1e-12
 
 
@@ -91,26 +55,8 @@ def test_obliquity_tables_have_one_row_per_time(fmt, capsys):
 
 def test_obliquity_writes_output_and_plot(tmp_path):
     out, png = tmp_path / "e.json", tmp_path / "e.png"
-    assert (
-        main(
-            [
-                "obliquity",
-                "earth",
-                "--span",
-                "-20000",
-                "0",
-                "--step",
-                "1000",
-                "--format",
-                "json",
-                "--output",
-                str(out),
-                "--plot",
-                str(png),
-            ]
-        )
-        == 0
-    )
+    assert main(["obliquity", "earth", "--span", "-20000", "0", "--step", "1000", "--format", "json",
+                 "--output", str(out), "--plot", str(png)]) == 0
     assert len(json.loads(out.read_text())["t"]) == 21
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 

@@ -13,48 +13,27 @@ TIMES = [-20000.0, -10000.0, 0.0, 5000.0]
 
 
 def test_spin_ensemble_grid_matches_single_histories_and_resumes(tmp_path):
-    sampler = SpinParameterSampler(
-        "earth", precession_rate=(49.0, 51.0), tidal_dissipation=(0.0, 1.0), grid=(3, 2)
-    )
+    sampler = SpinParameterSampler("earth", precession_rate=(49.0, 51.0), tidal_dissipation=(0.0, 1.0),
+                                   grid=(3, 2))
     propagator = SpinAxisPropagator(VondrakEcliptic(), "earth")
     store = tmp_path / "spin.zarr"
-    ds = run_ensemble(
-        sampler,
-        6,
-        TIMES,
-        propagator=propagator,
-        out=store,
-        chunk=6,
-        output="euler",
-        scheduler="synchronous",
-        progress=False,
-    )
+    ds = run_ensemble(sampler, 6, TIMES, propagator=propagator, out=store, chunk=6, output="euler",
+                      scheduler="synchronous", progress=False)
     rates = ds.precession_rate.values
     tides = ds.tidal_dissipation.values
     assert rates.tolist() == [49.0, 49.0, 50.0, 50.0, 51.0, 51.0]
     assert tides.tolist() == [0.0, 1.0] * 3
     for k in (0, 3, 5):
-        h = spin_axis_history(
-            VondrakEcliptic(), "earth", TIMES, precession_rate=rates[k], tidal_dissipation=tides[k]
-        )
+        h = spin_axis_history(VondrakEcliptic(), "earth", TIMES, precession_rate=rates[k],
+                              tidal_dissipation=tides[k])
         assert np.abs(ds.theta.values[k] - h.obliquity).max() <= 1e-12
         phi = np.mod(ds.phi.values[k] - (np.pi - h.precession) + np.pi, 2 * np.pi) - np.pi
         assert np.abs(phi).max() <= 1e-11
     # a faster precession moves the equinox farther in 20 kyr; tides change the past obliquity
     assert ds.theta.values[0, 0] != ds.theta.values[1, 0]
     rerun = []
-    again = run_ensemble(
-        sampler,
-        6,
-        TIMES,
-        propagator=propagator,
-        out=store,
-        chunk=6,
-        output="euler",
-        scheduler="synchronous",
-        progress=False,
-        on_chunk=rerun.append,
-    )
+    again = run_ensemble(sampler, 6, TIMES, propagator=propagator, out=store, chunk=6, output="euler",
+                         scheduler="synchronous", progress=False, on_chunk=rerun.append)
     assert rerun == []
     assert np.array_equal(again.theta.values, ds.theta.values)
 

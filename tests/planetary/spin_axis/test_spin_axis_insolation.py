@@ -18,9 +18,8 @@ def _quadrature(phi, lam, eps, e, varpi, s0=1361.0):
     def cos_zenith(hour):
         return max(0.0, np.sin(phi) * np.sin(delta) + np.cos(phi) * np.cos(delta) * np.cos(hour))
 
-    value, _ = quad(
-        cos_zenith, -np.pi, np.pi, limit=200, epsabs=1e-14, epsrel=1e-13, points=[-np.pi / 2, np.pi / 2]
-    )
+    value, _ = quad(cos_zenith, -np.pi, np.pi, limit=200, epsabs=1e-14, epsrel=1e-13,
+                    points=[-np.pi / 2, np.pi / 2])
     return s0 / distance**2 * value / (2 * np.pi)
 
 
@@ -55,9 +54,7 @@ def test_history_insolation_uses_its_obliquity_and_perihelion():
     orbit = PrecessingOrbit()
     h = spin_axis_history(orbit, "mars", [-50000.0, 0.0, 30000.0], precession_rate=7.597)
     got = h.insolation(np.radians(65.0), np.pi / 2)
-    expected = [
-        _quadrature(np.radians(65.0), np.pi / 2, eps, e, w)
-        for eps, e, w in zip(h.obliquity, h.eccentricity, h.perihelion, strict=True)
-    ]
+    expected = [_quadrature(np.radians(65.0), np.pi / 2, eps, e, w) for eps, e, w in
+                zip(h.obliquity, h.eccentricity, h.perihelion, strict=True)]
     assert np.allclose(got, expected, rtol=1e-10)
     assert np.allclose(h.eccentricity, orbit.e, rtol=1e-14)

@@ -100,19 +100,8 @@ def test_mars_obliquity_last_20kyr_nbody(mars_history):
         assert np.degrees(mars_history.obliquity[j]) == pytest.approx(value, abs=0.005)
 
 
-@pytest.mark.parametrize(
-    ("kyr", "tolerance"),
-    [
-        (-50, 0.03),
-        (-100, 0.03),
-        (-150, 0.03),
-        (-200, 0.03),
-        (-250, 0.03),
-        (-500, 0.5),
-        (-750, 0.5),
-        (-1000, 0.5),
-    ],
-)
+@pytest.mark.parametrize(("kyr", "tolerance"), [(-50, 0.03), (-100, 0.03), (-150, 0.03), (-200, 0.03),
+                                                (-250, 0.03), (-500, 0.5), (-750, 0.5), (-1000, 0.5)])
 def test_mars_obliquity_la2004_nbody(mars_history, kyr, tolerance):
     # Issue 14: a few hundredths of a degree over 250 kyr, about a degree over 1 Myr. Measured
     # 0.0045-0.0063° to -250 kyr, then 0.050°, 0.11°, 0.37° at -500, -750, -1000 kyr.
