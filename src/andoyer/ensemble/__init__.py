@@ -30,6 +30,7 @@ Examples
 
 from andoyer.ensemble.layout import OUTPUTS, EnsembleSpec
 from andoyer.ensemble.nbody import DEFAULT_DELTA, nbody_member, perturbed_state, run_nbody_ensemble
+from andoyer.ensemble.obliquity import MemberPropagator, MemberSampler, obliquity_ensemble
 from andoyer.ensemble.propagators import FreePropagator, Propagator
 from andoyer.ensemble.runner import local_client, run_ensemble
 from andoyer.ensemble.sampling import (
@@ -52,6 +53,8 @@ __all__ = [
     "EnsembleSpec",
     "FreePropagator",
     "InertiaSampler",
+    "MemberPropagator",
+    "MemberSampler",
     "MomentumSampler",
     "Propagator",
     "Sampler",
@@ -61,6 +64,7 @@ __all__ = [
     "completed_chunks",
     "local_client",
     "nbody_member",
+    "obliquity_ensemble",
     "perturbed_state",
     "run_ensemble",
     "run_nbody_ensemble",
