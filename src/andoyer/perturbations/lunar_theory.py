@@ -46,9 +46,10 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer._validation import as_finite
+from andoyer.catalogue.units import ARCSEC, AU, DEGREE, JULIAN_YEAR
 from andoyer.perturbations.gravity import PointMass
 from andoyer.perturbations.orbits import TabulatedOrbit, solve_kepler
-from andoyer.perturbations.solar_system import AU, GM_MOON, GM_SUN, JULIAN_YEAR
+from andoyer.perturbations.solar_system import GM_MOON, GM_SUN
 
 __all__ = [
     "GENERAL_PRECESSION",
@@ -64,8 +65,8 @@ __all__ = [
 
 Array = NDArray[np.float64]
 
-_ARCSEC = np.pi / 648000.0
-_DEGREE = np.pi / 180.0
+_ARCSEC = ARCSEC
+_DEGREE = DEGREE
 
 #: IERS Conventions 2010, eq. 5.43: ``(l, l′, F, D, Ω)`` in arcseconds, powers 0..4 of Julian centuries TT.
 _DELAUNAY = np.array(
