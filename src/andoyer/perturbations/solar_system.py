@@ -35,11 +35,11 @@ from __future__ import annotations
 import numpy as np
 
 from andoyer import catalogue
-from andoyer.catalogue.units import DAY, JULIAN_YEAR
+from andoyer.catalogue.units import AU, DAY, JULIAN_YEAR
 from andoyer.perturbations.gravity import PointMass
 from andoyer.perturbations.orbits import KeplerOrbit
 
-__all__ = ["DAY", "JULIAN_YEAR", "OBLIQUITY", "mean_perturbers"]
+__all__ = ["AU", "DAY", "GM_MOON", "GM_SUN", "JULIAN_YEAR", "OBLIQUITY", "mean_perturbers"]
 
 _SUN, _EARTH, _MOON, _MARS = (catalogue.get(name) for name in ("sun", "earth", "moon", "mars"))
 
