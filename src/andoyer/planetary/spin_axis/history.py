@@ -179,6 +179,7 @@ def general_precession(s: ArrayLike, n: ArrayLike, s0: ArrayLike, n0: ArrayLike)
     The IAU 2006 frame of date one century after J2000 (pyerfa): ``p_A`` = 5028.796″ + 1.105″.
 
     >>> import erfa
+    >>> from andoyer.catalogue.units import ARCSEC
     >>> rb, rp, rbp = erfa.bp06(2451545.0, 36525.0)
     >>> c, s = np.cos(EPSILON_0), np.sin(EPSILON_0)
     >>> ecl = np.array([[1, 0, 0], [0, c, s], [0, -s, c]])  # J2000 equator -> ecliptic
