@@ -89,6 +89,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from andoyer._files import atomic_write_bytes
 from andoyer._limits import Interrupted, announce, check_size
+from andoyer.catalogue.units import AU, DAY, JULIAN_YEAR, SPEED_OF_LIGHT
 from andoyer.planetary.orbits.elements import state_to_vectors
 from andoyer.planetary.orbits.planets import PLANETS, check_planet, planet_data
 from andoyer.planetary.orbits.protocol import check_times
@@ -97,8 +98,8 @@ __all__ = ["NBodyOrbit", "cache_directory", "make_simulation"]
 
 Array = NDArray[np.float64]
 
-#: Speed of light, au per Julian year (299 792.458 km/s, au = 149 597 870.700 km).
-C_AU_PER_YEAR = 299792.458 * 365.25 * 86400.0 / 149597870.700
+#: Speed of light, au per Julian year (:data:`andoyer.catalogue.units.SPEED_OF_LIGHT`, ``AU``).
+C_AU_PER_YEAR = SPEED_OF_LIGHT * JULIAN_YEAR / AU
 #: Integrations are extended in chunks of this many years (whole sampling intervals), each
 #: started from the state saved at the end of the one before.
 CHUNK_YEARS = 1000.0
@@ -546,7 +547,7 @@ class NBodyOrbit:
         self.gr = bool(gr)
         self.sample_years = float(sample_years)
         # A whole number of steps per sample, so that every sample falls on a step.
-        steps_per_sample = max(1, round(sample_years * 365.25 / step_days))
+        steps_per_sample = max(1, round(sample_years * (JULIAN_YEAR / DAY) / step_days))
         self.step_years = self.sample_years / steps_per_sample
         self.span = (-float(max_span), float(max_span))
         self.progress = progress
