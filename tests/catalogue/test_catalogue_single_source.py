@@ -30,6 +30,10 @@ ALLOWED = {
     "planetary/precession.py": "helper planets' territory (issue 23 items 2, 4, 5)",
     "cli/precession_cmd.py": "helper planets' territory (issue 23 items 2, 4, 5)",
     "cli/obliquity_cmd.py": "helper planets' territory (issue 23 items 2, 4, 5)",
+    "planetary/orbits/zeebe.py": (
+        "the ZB files' frame as snvecR defines it (OMT = 75.5940°, INCT = 7.155° for the Sun's "
+        "equator): the format's own convention, which must match snvecR's, not the catalogue's pole"
+    ),
     "_limits.py": (
         "layer 0 (format_duration's day and year): importing andoyer.catalogue.units puts the "
         "catalogue, which imports andoyer.body, below free/ and state/"
