@@ -67,6 +67,7 @@ VALID: dict[str, Valid] = {
         (
             "precession earth --format json --output {out}",
             "precession mars --dynamical-ellipticity 0.0054 --format json --output {out}",
+            "precession earth --moments lara2013 --format json --output {out}",
         ),
         "--output",
     ),

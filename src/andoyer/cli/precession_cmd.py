@@ -12,10 +12,12 @@ EXAMPLES = """examples:
   andoyer precession earth
   andoyer precession mars --integrate 2 --format json
   andoyer precession earth --integrate 1 --step 8.227 --output earth.json --format json
-  andoyer precession earth --dynamical-ellipticity 0.0032737949
+  andoyer precession earth --moments lara2013
 Rates are arcseconds per Julian year of regression of the angular momentum's node on the
 planet's ecliptic: from the averaged (secular) model, and with --integrate YEARS from a full
 splitting integration of the Sun's (and Moon's) gravity-gradient torque (see andoyer.planetary.precession).
+Moments: the catalogue's by default (the Earth's IAU MHB2000 H = 0.00327379492: 50.40 arcsec/yr at
+first order); --moments lara2013 takes Lara's (2013) Table 1 (H = 0.0032789: 50.48 arcsec/yr).
 JSON keys: body, perturbers, obliquity_deg, secular_arcsec_per_year, integrated_arcsec_per_year
 (null without --integrate), integration_years, step_days.
 """
@@ -23,7 +25,7 @@ JSON keys: body, perturbers, obliquity_deg, secular_arcsec_per_year, integrated_
 
 def register(commands: argparse._SubParsersAction) -> None:
     """Add the sub-command to the parser."""
-    from andoyer.planetary.precession import PLANETS
+    from andoyer.planetary.precession import MOMENT_SETS, PLANETS
 
     parser = commands.add_parser(
         "precession",
@@ -46,6 +48,12 @@ def register(commands: argparse._SubParsersAction) -> None:
         type=physical("dynamical_ellipticity"),
         metavar="H",
         help="H = (C - (A+B)/2)/C instead of the named body's (0 < H < 1/2)",
+    )
+    parser.add_argument(
+        "--moments",
+        choices=MOMENT_SETS,
+        default="catalogue",
+        help="the moment set: the catalogue's (default) or Lara's (2013) Table 1",
     )
     parser.add_argument("--format", choices=("text", "json"), default="text", help="default text")
     add_output_argument(parser)
@@ -90,6 +98,7 @@ def run(args: argparse.Namespace) -> int:
         step=step,
         order=args.order,
         dynamical_ellipticity=args.dynamical_ellipticity,
+        moments=args.moments,
     )
     fields = rates.as_dict()
     text = json.dumps(fields, indent=2) + "\n" if args.format == "json" else render_text(fields)

@@ -49,8 +49,9 @@ the constant ``α ∝ H/ω ∝ ω``, and the Moon's torque ``∝ a_M^{−3} ∝ 
 drift of ``H`` (fraction per year). ``T_d = 0`` (the default) is no tidal change.
 
 Sources of the constants: :mod:`andoyer.perturbations.solar_system` (the Sun's and the
-Moon's mean orbits), :mod:`andoyer.bodies` (rotation periods); the Earth's ``H`` =
-0.0032737949 (IERS Conventions 2010, Table 1.1).
+Moon's mean orbits); :mod:`andoyer.catalogue` (rotation periods, the default precession rates
+and the Earth's ``H`` = 0.00327379492 of MHB2000, Bourda & Capitaine 2004 Table 2; IERS
+Conventions 2010 Table 1.1 round it to 0.0032737949).
 """
 
 from __future__ import annotations
@@ -60,8 +61,9 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from andoyer import bodies
-from andoyer.perturbations.solar_system import JULIAN_YEAR, mean_perturbers
+from andoyer import catalogue
+from andoyer.catalogue.units import ARCSEC, JULIAN_YEAR
+from andoyer.perturbations.solar_system import mean_perturbers
 from andoyer.planetary.parameters import PARAMETERS, check
 
 __all__ = [
@@ -74,14 +76,16 @@ __all__ = [
 
 Array = NDArray[np.float64]
 
-#: One arcsecond in radians.
-ARCSEC = np.pi / 648000.0
-#: Default ``ψ̇`` at J2000, ″/yr: the Earth's IAU 2006 ``dψ_A/dt`` (5038.481507″/cy, Capitaine
-#: et al. 2003, eq. 37); Mars 7.597″/yr (radio tracking of landers and orbiters gives
-#: 7.59–7.61″/yr: Konopliv et al. 2016, Icarus 274, 253; Le Maistre et al. 2023, Nature 619, 733).
-DEFAULT_PRECESSION_RATE = {"earth": 50.38481507, "mars": 7.597}
-#: The Earth's dynamical ellipticity ``H = (C − A)/C`` (IERS Conventions 2010, Table 1.1).
-EARTH_DYNAMICAL_ELLIPTICITY = 0.0032737949
+#: Default ``ψ̇`` at J2000, ″/yr, the catalogue's ``precession_rate``: the Earth's IAU 2006
+#: ``dψ_A/dt`` (5038.481507″/cy, Capitaine et al. 2003, eq. 37); Mars 7.597″/yr (radio tracking of
+#: landers and orbiters gives 7.59–7.61″/yr: Konopliv et al. 2016, Icarus 274, 253; Le Maistre et
+#: al. 2023, Nature 619, 733).
+DEFAULT_PRECESSION_RATE = {
+    key: catalogue.get(key).require("precession_rate", "the spin axis").to("arcsec/yr")
+    for key in ("earth", "mars")
+}
+#: The Earth's dynamical ellipticity ``H = (C − (A+B)/2)/C``, the catalogue's (MHB2000).
+EARTH_DYNAMICAL_ELLIPTICITY = catalogue.get("earth").require("dynamical_ellipticity", "the spin axis").value
 #: ``ṅ_M/n_M`` of the Moon at ``T_d = 1``, per second (Quinn et al. 1991, eq. 3; Zeebe & Lourens 2022).
 MOON_MEAN_MOTION_RATE = -4.6e-18
 #: ``ω̇/ω = 51 (n_M/ω) ṅ_M/n_M`` (Lambeck 1980, as in Zeebe & Lourens 2022).
@@ -93,7 +97,11 @@ def _solar_terms(body: str) -> tuple[float, float, float, float, float]:
     perturbers = mean_perturbers(body)
     sun = perturbers[0]
     n2 = sun.gm / sun.orbit.semi_major_axis**3
-    omega = 2 * np.pi / bodies.info(body).rotation_period
+    entry = catalogue.get(body)
+    if entry.rotation_period is not None:
+        omega = 2 * np.pi / entry.rotation_period.si()
+    else:
+        omega = abs(entry.require("rotation_rate", "the spin axis").si())
     beta = 0.0
     ratio = 0.0
     for moon in perturbers[1:]:
