@@ -68,6 +68,8 @@ VALID: dict[str, Valid] = {
             "precession earth --format json --output {out}",
             "precession mars --dynamical-ellipticity 0.0054 --format json --output {out}",
             "precession earth --moments lara2013 --format json --output {out}",
+            "precession saturn --format json --output {out}",
+            "precession venus --dynamical-ellipticity 0.00002 --output {out}",
         ),
         "--output",
     ),
