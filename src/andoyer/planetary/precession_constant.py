@@ -154,6 +154,10 @@ class PrecessionConstant:
     satellites : tuple of SatelliteShare
     resonance : float or None
         The spin-orbit ratio of a resonant body.
+    mean_motion_squared : float
+        ``μ_p/a³`` of the primary's torque (s⁻²).
+    spin_rate : float
+        ``|ω|`` (rad/s).
     """
 
     body: str
@@ -165,6 +169,13 @@ class PrecessionConstant:
     laplace_radius: float | None
     satellites: tuple[SatelliteShare, ...] = ()
     resonance: float | None = None
+    mean_motion_squared: float = 0.0
+    spin_rate: float = 0.0
+
+    @property
+    def outer_torque(self) -> float:
+        """``Σ β_k`` of the satellites outside the Laplace radius."""
+        return sum(s.torque for s in self.satellites)
 
     @property
     def precession_rate(self) -> float | None:
@@ -313,7 +324,17 @@ def _resonant(body: Body, computation: str) -> PrecessionConstant:
     g = float(eccentricity_function(e, p))
     alpha = scale * (j2 * x + c22 * g)
     return PrecessionConstant(
-        body.name, alpha, scale * j2 * x, obliquity(body), e, (j2 + c22 * g / x) / lam, None, (), p
+        body.name,
+        alpha,
+        scale * j2 * x,
+        obliquity(body),
+        e,
+        (j2 + c22 * g / x) / lam,
+        None,
+        (),
+        p,
+        mu / a**3,
+        p * n,
     )
 
 
@@ -429,5 +450,15 @@ def precession_constant(
     figure = H if not (q or l) else (j2 + q) / (lam + l)  # type: ignore[operator]
     alpha = base * figure * (x + beta)
     return PrecessionConstant(
-        entry.name, alpha, base * H * x, eps, e, figure, None if r_l is None else r_l / 1e3, tuple(shares)
+        entry.name,
+        alpha,
+        base * H * x,
+        eps,
+        e,
+        figure,
+        None if r_l is None else r_l / 1e3,
+        tuple(shares),
+        None,
+        mu_sun / a**3,
+        omega,
     )

@@ -186,8 +186,10 @@ def test_climatic_precession_at_j2000_convention():
 
 
 def test_model_rejects_bad_parameters_with_expected_messages():
-    with pytest.raises(ValueError, match="expected a body in earth, mars, got 'venus'"):
-        SpinAxisModel.from_precession_rate("venus", 1.0, 0.4)
+    with pytest.raises(ValueError, match="expected a body in earth, mars or the catalogue, got 'vulcan'"):
+        SpinAxisModel.from_precession_rate("vulcan", 1.0, 0.4)
+    with pytest.raises(ValueError, match="expected a body out of spin-orbit resonance for the spin axis"):
+        SpinAxisModel.from_precession_rate("mercury", 1.0, 0.4)
     with pytest.raises(ValueError, match="expected a precession rate P > 0 arcsec/yr"):
         SpinAxisModel.from_precession_rate("earth", -1.0, 0.4)
     with pytest.raises(ValueError, match="expected tidal dissipation 0 for a planet without a moon"):

@@ -56,12 +56,13 @@ Conventions 2010 Table 1.1 round it to 0.0032737949).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer import catalogue
+from andoyer.catalogue import Body
 from andoyer.catalogue.units import ARCSEC, JULIAN_YEAR
 from andoyer.perturbations.solar_system import mean_perturbers
 from andoyer.planetary.parameters import PARAMETERS, check
@@ -92,8 +93,25 @@ MOON_MEAN_MOTION_RATE = -4.6e-18
 _LAMBECK = 51.0
 
 
-def _solar_terms(body: str) -> tuple[float, float, float, float, float]:
-    """``(n_⊙² [rad²/s²], e(J2000), β, ω [rad/s], n_M/ω)`` of the named planet."""
+def _solar_terms(body: str | Body) -> tuple[float, float, float, float, float]:
+    """``(n_⊙² [rad²/s²], e(J2000), β, ω [rad/s], n_M/ω)`` of a planet.
+
+    The Earth and Mars: their mean perturbers (:mod:`andoyer.perturbations.solar_system`); any
+    other body (a catalogued planet or a body of the user's own): the catalogue's orbit and
+    rotation and its satellites outside the Laplace radius
+    (:func:`andoyer.planetary.precession_constant.precession_constant`).
+    """
+    if isinstance(body, Body) or body not in DEFAULT_PRECESSION_RATE:
+        from andoyer.planetary.precession_constant import precession_constant
+
+        c = precession_constant(body)
+        if c.resonance is not None:
+            msg = (
+                f"expected a body out of spin-orbit resonance for the spin axis (its obliquity is a Cassini "
+                f"state: andoyer cassini), got {c.body} in a {c.resonance:g}:1 resonance"
+            )
+            raise ValueError(msg)
+        return c.mean_motion_squared, c.eccentricity, c.outer_torque, c.spin_rate, 0.0
     perturbers = mean_perturbers(body)
     sun = perturbers[0]
     n2 = sun.gm / sun.orbit.semi_major_axis**3
@@ -137,7 +155,10 @@ class SpinAxisModel:
     tide_spin, tide_moon : float
         ``W T_d`` and ``2 N T_d``, per year.
     ellipticity_drift : float
-        ``Ḣ/H``, per year.
+        ``Ḣ/H``, per year: for a planet with satellites, the drift of its effective ellipticity
+        ``(J2 + q)/(λ + l)``, that is of ``α`` (satellite migration, ``α(t) = α₀ (1 + t/τ)``).
+    entry : Body, optional
+        A body of the user's own (its orbit and rotation); ``None`` for a catalogued body.
 
     Examples
     --------
@@ -155,6 +176,7 @@ class SpinAxisModel:
     tide_spin: float = 0.0
     tide_moon: float = 0.0
     ellipticity_drift: float = 0.0
+    entry: Body | None = field(default=None, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         numbers = {
@@ -174,7 +196,7 @@ class SpinAxisModel:
         check("eccentricity", self.eccentricity)
 
     @staticmethod
-    def _tides(body: str, tidal_dissipation: float) -> tuple[float, float]:
+    def _tides(body: str | Body, tidal_dissipation: float) -> tuple[float, float]:
         tidal_dissipation = check("tidal_dissipation", tidal_dissipation)
         _, _, beta, _, ratio = _solar_terms(body)
         if tidal_dissipation != 0 and beta == 0:
@@ -215,13 +237,13 @@ class SpinAxisModel:
         >>> round(model.precession_rate(np.radians(84381.406 / 3600)), 2)  # ″/yr; IAU 2006: 50.38
         50.4
         """
-        key = _body(body)
+        key, entry = _body(body)
         ellipticity = check("dynamical_ellipticity", ellipticity)
         drift = check("ellipticity_drift", ellipticity_drift)
-        n2, e0, beta, omega, _ = _solar_terms(key)
+        n2, e0, beta, omega, _ = _solar_terms(entry or key)
         alpha = 1.5 * n2 * ellipticity / omega * JULIAN_YEAR
-        spin, moon = cls._tides(key, tidal_dissipation)
-        return cls(key, float(alpha), float(beta), float(e0), spin, moon, drift)
+        spin, moon = cls._tides(entry or key, tidal_dissipation)
+        return cls(key, float(alpha), float(beta), float(e0), spin, moon, drift, entry)
 
     @classmethod
     def from_precession_rate(
@@ -257,11 +279,11 @@ class SpinAxisModel:
         >>> round(model.dynamical_ellipticity(), 5)
         0.00537
         """
-        key = _body(body)
+        key, entry = _body(body)
         rate = check("precession_rate", rate)
         obliquity = check("obliquity", obliquity)
         drift = check("ellipticity_drift", ellipticity_drift)
-        n2, e0, beta, omega, _ = _solar_terms(key)
+        n2, e0, beta, omega, _ = _solar_terms(entry or key)
         e = e0 if eccentricity is None else check("eccentricity", eccentricity)
         alpha = rate * ARCSEC / (np.cos(obliquity) * (((1 - e) * (1 + e)) ** -1.5 + beta))
         # The rate and the ellipticity are one parameter (α_⊙ = (3/2) n_⊙² H / ω): H's bound
@@ -275,8 +297,47 @@ class SpinAxisModel:
                 f"ellipticity H = (C - (A+B)/2)/C by 1/2), got {rate!r} (H = {H:.4g})"
             )
             raise ValueError(msg)
-        spin, moon = cls._tides(key, tidal_dissipation)
-        return cls(key, float(alpha), float(beta), e, spin, moon, drift)
+        spin, moon = cls._tides(entry or key, tidal_dissipation)
+        return cls(key, float(alpha), float(beta), e, spin, moon, drift, entry)
+
+    @classmethod
+    def from_precession_constant(
+        cls, body: str | Body, ellipticity_drift: float = 0.0, eccentricity: float | None = None
+    ) -> SpinAxisModel:
+        """The model of any planet from its catalogued figure and satellites.
+
+        ``α_⊙ = (3/2)(μ_⊙/a³ω)(J2 + q)/(λ + l)`` and ``β = Σ β_k``
+        (:func:`andoyer.planetary.precession_constant.precession_constant`: the satellites inside
+        the Laplace radius in the figure, those outside as perturbers).
+
+        Parameters
+        ----------
+        body : str or Body
+            A catalogued planet or a body of the user's own.
+        ellipticity_drift : float
+            ``1/τ`` per Julian year: ``α(t) = α₀ (1 + t/τ)`` (satellite migration).
+        eccentricity : float, optional
+            The orbit's ``e`` at J2000 (default: the catalogue's).
+
+        Returns
+        -------
+        SpinAxisModel
+
+        Examples
+        --------
+        >>> model = SpinAxisModel.from_precession_constant("saturn")
+        >>> round(model.precession_rate(np.radians(26.73)), 3)  # ″/yr, Titan's ring included
+        0.73
+        """
+        from andoyer.planetary.precession_constant import precession_constant
+
+        key, entry = _body(body)
+        drift = check("ellipticity_drift", ellipticity_drift)
+        c = precession_constant(entry or key)
+        n2, e0, beta, omega, _ = _solar_terms(entry or key)
+        e = e0 if eccentricity is None else check("eccentricity", eccentricity)
+        alpha = 1.5 * n2 * c.figure / omega * JULIAN_YEAR
+        return cls(key, float(alpha), float(beta), float(e), 0.0, 0.0, drift, entry)
 
     def check_span(self, t0: float, t1: float) -> None:
         """Refuse a span over which the model's linear drifts leave their ranges.
@@ -365,13 +426,18 @@ class SpinAxisModel:
         -------
         float
         """
-        n2, _, _, omega, _ = _solar_terms(self.body)
+        n2, _, _, omega, _ = _solar_terms(self.entry or self.body)
         return float(self.alpha_sun / JULIAN_YEAR * omega / (1.5 * n2))
 
 
-def _body(body: str) -> str:
+def _body(body: str | Body) -> tuple[str, Body | None]:
+    """The body's key and, for a body of the user's own, the body itself (unknown names refused)."""
+    if isinstance(body, Body):
+        if body.key in catalogue.names() and catalogue.get(body.key) is body:
+            return body.key, None
+        return body.name, body
     key = str(body).strip().lower()
-    if key not in DEFAULT_PRECESSION_RATE:
-        msg = f"expected a body in {', '.join(DEFAULT_PRECESSION_RATE)}, got {body!r}"
+    if key not in DEFAULT_PRECESSION_RATE and key not in catalogue.names():
+        msg = f"expected a body in {', '.join(DEFAULT_PRECESSION_RATE)} or the catalogue, got {body!r}"
         raise ValueError(msg)
-    return key
+    return key, None
