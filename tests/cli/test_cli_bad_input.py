@@ -114,6 +114,7 @@ VALID: dict[str, Valid] = {
                 "--tidal-dissipation 0.5 --output {out}"
             ),
             "obliquity earth --span -1000 1000 --step 100 --precession-rate 500 --output {out}",
+            "obliquity saturn --span -100000 100000 --step 10000 --drift-timescale 4e9 --output {out}",
         ),
         "--output",
     ),

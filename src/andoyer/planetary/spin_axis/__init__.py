@@ -54,6 +54,7 @@ from andoyer.planetary.spin_axis.model import (
     EARTH_DYNAMICAL_ELLIPTICITY,
     SpinAxisModel,
 )
+from andoyer.planetary.spin_axis.resonances import resonance_distances
 
 __all__ = [
     "DEFAULT_PRECESSION_RATE",
@@ -70,6 +71,7 @@ __all__ = [
     "general_precession",
     "mean_pole_j2000",
     "output_times",
+    "resonance_distances",
     "run_cost",
     "spin_axis_blocks",
     "spin_axis_history",

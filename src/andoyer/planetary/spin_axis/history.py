@@ -859,7 +859,8 @@ def build_model(
         return model if e0 is None else replace(model, eccentricity=e0)
     rate = precession_rate
     key = str(body).strip().lower() if isinstance(body, str) else body
-    if rate is None and key not in DEFAULT_PRECESSION_RATE:  # any other planet: its catalogued figure
+    named = isinstance(key, str) and key in DEFAULT_PRECESSION_RATE
+    if rate is None and not named:  # any other planet or a body file: its figure and satellites
         SpinAxisModel._tides(body, tidal_dissipation)  # refuses tides without a moon
         return SpinAxisModel.from_precession_constant(body, ellipticity_drift, e0)
     if rate is None:
