@@ -159,6 +159,9 @@ class SpinAxisModel:
         ``(J2 + q)/(λ + l)``, that is of ``α`` (satellite migration, ``α(t) = α₀ (1 + t/τ)``).
     entry : Body, optional
         A body of the user's own (its orbit and rotation); ``None`` for a catalogued body.
+    satellite_rings : bool
+        Whether satellites inside the Laplace radius are in the figure (the effective
+        ellipticity is then bounded only below, :meth:`check_span`).
 
     Examples
     --------
@@ -177,6 +180,7 @@ class SpinAxisModel:
     tide_moon: float = 0.0
     ellipticity_drift: float = 0.0
     entry: Body | None = field(default=None, compare=False, repr=False)
+    satellite_rings: bool = field(default=False, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         numbers = {
@@ -337,15 +341,17 @@ class SpinAxisModel:
         n2, e0, beta, omega, _ = _solar_terms(entry or key)
         e = e0 if eccentricity is None else check("eccentricity", eccentricity)
         alpha = 1.5 * n2 * c.figure / omega * JULIAN_YEAR
-        return cls(key, float(alpha), float(beta), float(e), 0.0, 0.0, drift, entry)
+        rings = any(s.regime == "ring" for s in c.satellites)
+        return cls(key, float(alpha), float(beta), float(e), 0.0, 0.0, drift, entry, rings)
 
     def check_span(self, t0: float, t1: float) -> None:
         """Refuse a span over which the model's linear drifts leave their ranges.
 
         ``H (1 + ellipticity_drift · t)`` must stay within the dynamical ellipticity's range
-        (``0 < H < 1/2``) and the tidal factors ``1 + tide_spin · t``, ``1 + tide_moon · t``
-        positive, from J2000 (where the axis starts) to either end; all are linear in ``t``, so
-        the ends decide.
+        (``0 < H < 1/2``; only positive for a planet whose satellites' rings make its effective
+        ``(J2 + q)/(λ + l)``, which ``A + B ≥ C`` does not bound) and the tidal factors
+        ``1 + tide_spin · t``, ``1 + tide_moon · t`` positive, from J2000 (where the axis starts)
+        to either end; all are linear in ``t``, so the ends decide.
 
         Parameters
         ----------
@@ -364,7 +370,14 @@ class SpinAxisModel:
         H = self.dynamical_ellipticity()
         for t in (float(t0), float(t1)):
             Ht = H * (1 + self.ellipticity_drift * t)
-            if not PARAMETERS["dynamical_ellipticity"].contains(Ht):
+            if self.satellite_rings and not Ht > 0:
+                msg = (
+                    f"expected a drift that keeps the precession constant positive over the span, got "
+                    f"1 + t/TAU = {1 + self.ellipticity_drift * t:.4g} at t = {t:g} years (drift "
+                    f"{self.ellipticity_drift!r} per year)"
+                )
+                raise ValueError(msg)
+            if not self.satellite_rings and not PARAMETERS["dynamical_ellipticity"].contains(Ht):
                 bounds = PARAMETERS["dynamical_ellipticity"].describe()
                 msg = (
                     f"expected an ellipticity drift that keeps {bounds} over the span, got H = {Ht:.4g} "
