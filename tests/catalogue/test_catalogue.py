@@ -37,6 +37,12 @@ REQUIRED = [
     "callisto",
     "titan",
     "enceladus",
+    # Uranus' major satellites: their rings make most of Uranus' precession constant (issue 23 item 2)
+    "miranda",
+    "ariel",
+    "umbriel",
+    "titania",
+    "oberon",
     "triton",
     "eros",
 ]
@@ -88,8 +94,8 @@ def test_catalogue_body_attributes_are_the_schema_fields():
 
 
 def test_catalogue_require_names_body_key_and_computation():
-    with pytest.raises(ValueError, match="expected Triton to have gm for the Cassini states, got none"):
-        catalogue.get("triton").require("gm", "the Cassini states")
+    with pytest.raises(ValueError, match="expected Triton to have j2 for the Cassini states, got none"):
+        catalogue.get("triton").require("j2", "the Cassini states")
     assert catalogue.get("titan").require("j2", "x").value == 31.808e-6
 
 
@@ -172,6 +178,12 @@ def test_catalogue_periods_checked_are_those_with_a_second_source():
         "ganymede",
         "callisto",
         "triton",
+        # Uranus' satellites: GM and mean orbit only (no rotation catalogued)
+        "miranda",
+        "ariel",
+        "umbriel",
+        "titania",
+        "oberon",
     }
 
 

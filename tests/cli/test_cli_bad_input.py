@@ -67,6 +67,9 @@ VALID: dict[str, Valid] = {
         (
             "precession earth --format json --output {out}",
             "precession mars --dynamical-ellipticity 0.0054 --format json --output {out}",
+            "precession earth --moments lara2013 --format json --output {out}",
+            "precession saturn --format json --output {out}",
+            "precession venus --dynamical-ellipticity 0.00002 --output {out}",
         ),
         "--output",
     ),
@@ -111,6 +114,7 @@ VALID: dict[str, Valid] = {
                 "--tidal-dissipation 0.5 --output {out}"
             ),
             "obliquity earth --span -1000 1000 --step 100 --precession-rate 500 --output {out}",
+            "obliquity saturn --span -100000 100000 --step 10000 --drift-timescale 4e9 --output {out}",
             (
                 "obliquity mars --ensemble 2 --span -20000 0 --step 10000 --seed 1 --perturbation 1e-7 "
                 "--thresholds 30 --scheduler synchronous --format json --output {out}"

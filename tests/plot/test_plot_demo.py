@@ -19,7 +19,8 @@ def earth_precession():
 def test_demo_precession_plot_slope_is_the_secular_rate(earth_precession):
     # The averaged (secular) model is an independent computation of the mean rate; the plot fits
     # one state's node over two lunar nodal periods with its nutation terms. Measured agreement
-    # 1.5e-5 (50.4781 against 50.4788″/yr); a straight line alone gave 52.2″/yr over 18.6 years.
+    # 1.7e-5 (50.3994 against 50.4002″/yr, the IAU H; 50.4781 against 50.4788 with Lara's); a
+    # straight line alone gave 52.2″/yr over 18.6 years (Lara's H).
     figure, rates = earth_precession
     data = figure.andoyer_data
     assert data.axis == "momentum"

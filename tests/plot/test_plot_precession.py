@@ -138,7 +138,7 @@ def test_precession_rejects_bad_axes():
 def test_precession_trend_fitted_with_the_nutation_frequencies(rate, amplitude, periods):
     # A node h(t) = h₀ + ḣ t + a sin(ν t + φ) + b cos(2ν t) known in closed form: the fit with the
     # frequencies ν, 2ν returns ḣ exactly; a straight line over a span that is not a whole number
-    # of periods is off by a fraction of a/span (the demo's 52.2″/yr instead of 50.48″/yr).
+    # of periods is off by a fraction of a/span (the demo's 52.2″/yr instead of 50.48″/yr, Lara's moments).
     nu = 2 * np.pi / 18.6
     t = np.linspace(0.0, periods * 18.6, 400)
     h = 0.3 + rate * t + amplitude * np.sin(nu * t + 0.4) + 0.3 * amplitude * np.cos(2 * nu * t)

@@ -1,7 +1,8 @@
 r"""One cited catalogue of bodies, the unit constants, and bodies of the user's own.
 
 The catalogue (``data/bodies.json``, read with the standard library) holds the Sun, the planets,
-Pluto, the Moon, the Galilean satellites, Titan, Enceladus, Triton and Eros: ``GM``, radius,
+Pluto, the Moon, the Galilean satellites, Titan, Enceladus, Uranus' five major satellites, Triton
+and Eros: ``GM``, radius,
 ``J2``, ``C22``, ``C/MR²``, moment ratios, spin (the IAU WGCCRE 2015 pole and prime meridian,
 Archinal et al. 2018), the measured precession rate, and the orbit (Standish's J2000 mean
 elements for the planets; JPL's mean elements on the local Laplace plane for the satellites).
@@ -86,7 +87,7 @@ def names() -> tuple[str, ...]:
     Examples
     --------
     >>> len(names()), names()[-1]
-    (19, 'eros')
+    (24, 'eros')
     """
     return tuple(_catalogue())
 

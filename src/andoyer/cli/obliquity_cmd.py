@@ -1,4 +1,4 @@
-"""``andoyer obliquity``: the spin axis of the Earth or Mars along a moving orbit (planetary.spin_axis)."""
+"""``andoyer obliquity``: the spin axis of a planet along a moving orbit (planetary.spin_axis)."""
 
 from __future__ import annotations
 
@@ -8,12 +8,19 @@ import numpy as np
 
 from andoyer.cli import obliquity_ensemble
 from andoyer.cli.numbers import finite_number, physical
+from andoyer.cli.obliquity_body import add_body_arguments, resolve_body, resonance_fields
 from andoyer.cli.output import CliError, add_output_argument, atomic_output
 
 EXAMPLES = """examples:
   andoyer obliquity earth --span -200000 200000 --step 500 --format json
   andoyer obliquity earth --precession-rate 50.3848 --span -1000 1000 --step 100 --format table
   andoyer obliquity mars --orbit nbody --span -1000000 0 --step 1000 --plot mars.png
+  andoyer obliquity saturn --span 0 1e8 --step 1e4 --drift-timescale 4e9 --format csv
+BODY: earth, mars, venus, jupiter, saturn, uranus, neptune (default orbit: vondrak, nbody,
+then secular), or --body-file PATH (a body named after a planet takes that planet's orbit; any
+other needs --orbit PATH). The other planets' precession constant is their catalogued figure
+with their satellites (andoyer precession BODY); --drift-timescale TAU drifts it,
+alpha(t) = alpha0 (1 + t/TAU) (satellite migration: docs/spin-axis.md).
 T0, T1 and DT are Julian years from J2000 (negative = past); output at T0, T0+DT, ..., T1.
 --precession-rate P is the rate of the luni-solar precession psi_A at J2000 in arcsec per Julian
 year (default: Earth 50.38481507, IAU 2006; Mars 7.597); --dynamical-ellipticity H sets
@@ -26,10 +33,10 @@ Vondrak et al. 2011, +-200 kyr, no eccentricity), nbody (+-50 Myr), secular (the
 +-1 Gyr), laplace-lagrange (the linear theory), or a table file PATH.
 JSON keys: t (years), obliquity (deg), precession (deg, p_A accumulated since J2000), axis (N x 3),
 orbit_normal (N x 3, J2000 ecliptic frame), eccentricity and climatic_precession (e sin varpi,
-varpi heliocentric from the moving equinox; null without eccentricity), precession_rate (arcsec/yr).
+varpi heliocentric from the moving equinox; null without eccentricity), precession_rate (arcsec/yr),
+resonances (mode, frequency, distance = precession_rate + s_k, arcsec/yr, nearest first).
 """
 
-DEFAULT_ORBIT = {"earth": "vondrak", "mars": "nbody"}
 DEFAULT_SPAN = (-200000.0, 0.0)
 DEFAULT_STEP = 1000.0
 
@@ -43,9 +50,7 @@ def register(commands: argparse._SubParsersAction) -> None:
         epilog=EXAMPLES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    parser.add_argument(
-        "body", type=str.lower, choices=tuple(DEFAULT_ORBIT), metavar="BODY", help="earth or mars"
-    )
+    add_body_arguments(parser)
     parser.add_argument(
         "--orbit",
         metavar="SOURCE",
@@ -137,6 +142,7 @@ def _fields(h) -> dict:
         "eccentricity": h.eccentricity,
         "climatic_precession": cp,
         "precession_rate": h.precession_rate,
+        "resonances": resonance_fields(h.precession_rate),
     }
 
 
@@ -249,19 +255,21 @@ def run(args: argparse.Namespace) -> int:
     if args.plot is not None and not args.plot.lower().endswith(".png"):
         msg = f"expected --plot PATH ending in .png, got {args.plot!r}"
         raise CliError(msg)
-    source = args.orbit or DEFAULT_ORBIT[args.body]
+    body, planet, default_source, drift = resolve_body(args)
+    source = args.orbit or default_source
     _check_table(source)
-    orbit = orbit_source(source, args.body, args.orbit_format)
-    _check_span(orbit, source, args.body, t0, t1)
+    orbit = orbit_source(source, planet or "earth", args.orbit_format)
+    _check_span(orbit, source, planet or "earth", t0, t1)
     times = output_times(t0, t1, args.step)
     stream_csv = args.format == "csv" and args.plot is None
     blocks = spin_axis_blocks(
         orbit,
-        args.body,
+        body,
         times,
         precession_rate=args.precession_rate,
         dynamical_ellipticity=args.dynamical_ellipticity,
         tidal_dissipation=args.tidal_dissipation,
+        ellipticity_drift=drift,
         **_costs(args, orbit, stream_csv),
         what=f"an obliquity run of {times.size} output times",
     )

@@ -7,6 +7,8 @@ disturbing terms of :mod:`andoyer.perturbations` and the propagators of
 * :mod:`andoyer.planetary.orbits` -- orbit histories (VCW 2011 ecliptic, N-body, secular,
   tables), the protocol :class:`~andoyer.planetary.orbits.OrbitHistory`;
 * :mod:`andoyer.planetary.precession` -- the luni-solar precession rate of a planet;
+* :mod:`andoyer.planetary.precession_constant` -- the precession constant of any body, its
+  satellites' share included;
 * :mod:`andoyer.planetary.spin_axis` -- the spin axis along a moving orbit: obliquity,
   general and climatic precession, insolation;
 * :mod:`andoyer.planetary.nutation` -- the rigid-Earth luni-solar nutation;
@@ -31,7 +33,16 @@ from __future__ import annotations
 import importlib
 from typing import Any
 
-__all__ = ["cassini", "nutation", "orbits", "parameters", "precession", "spin_axis", "tides"]
+__all__ = [
+    "cassini",
+    "nutation",
+    "orbits",
+    "parameters",
+    "precession",
+    "precession_constant",
+    "spin_axis",
+    "tides",
+]
 
 
 def __getattr__(name: str) -> Any:

@@ -13,7 +13,8 @@ pole ``s3``: the Andoyer node ``h`` decreases at the *precession rate*
 (``μ_p`` the perturber's gravitational parameter, ``a_p, e_p, i_p`` its
 orbit, the last factor the average over a regressing node; ``J = 0``),
 reported in arcseconds per Julian year (the observed luni-solar precession
-of the Earth is 50.38″/yr; Mars' 7.58″/yr). Two computations:
+of the Earth is 50.38″/yr; Mars' 7.58″/yr; this model gives 50.40″/yr with the catalogue's
+IAU MHB2000 ``H`` = 0.00327379492, 50.48″/yr with Lara's ``H`` = 0.0032789). Two computations:
 
 * **secular**: the averaged model (``method="secular"`` of
   :func:`andoyer.integrate.propagation.propagate`) over ``secular_years``;
@@ -41,8 +42,10 @@ days for the Earth, 57.20 days for Mars). The precession is a first-order
 effect of the torque, so order 2 suffices (the default). The span is
 honoured exactly: the last step is shortened to end on it. Measured rates
 (″/yr; one year for the Earth, 1.9 years for Mars, both rounded up to whole
-steps when measured; secular model 50.4788 and 7.5909; with the exact span,
-Mars at the default step gives 7.5886, the Earth 50.4789):
+steps when measured), with Lara's (2013) moments (``moments="lara2013"``; the
+catalogue's default IAU ``H`` scales the Earth's rates by 0.998443: secular model
+50.4002, full integration at the default step 50.4003): secular model 50.4788 and
+7.5909; with the exact span, Mars at the default step gives 7.5886, the Earth 50.4789:
 
 =====  ==========================  ======  =======  ========
 body   step (rotations)            days    order 2  order 4
@@ -68,20 +71,22 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from andoyer import bodies
+from andoyer import bodies, catalogue
 from andoyer._limits import STEP_SECONDS, announce, check_size
 from andoyer.body import RigidBody
+from andoyer.catalogue.units import ARCSEC, JULIAN_YEAR
 from andoyer.integrate.output import OUTPUT_BYTES
 from andoyer.integrate.propagation import propagate
 from andoyer.integrate.splitting import splitting_coefficients
 from andoyer.perturbations.gravity import GravityGradient, PointMass
 from andoyer.perturbations.model import Model
-from andoyer.perturbations.solar_system import JULIAN_YEAR, OBLIQUITY, mean_perturbers
+from andoyer.perturbations.solar_system import OBLIQUITY, mean_perturbers
 from andoyer.planetary.parameters import check
 from andoyer.state import State
 
 __all__ = [
     "ARCSEC",
+    "MOMENT_SETS",
     "NODE_PHASES",
     "PLANETS",
     "PrecessionRates",
@@ -89,18 +94,19 @@ __all__ = [
     "default_step",
     "fit_trend",
     "mean_node_rate",
+    "planet_body",
     "precession_problem",
     "precession_rates",
 ]
 
 Array = NDArray[np.float64]
 
-#: One arcsecond in radians.
-ARCSEC = np.pi / 648000.0
 #: Initial nodes ``h₀ = 2πk/NODE_PHASES`` averaged over (cancels terms in ``h`` and ``2h``).
 NODE_PHASES = 4
 #: The planets with mean perturbers and an obliquity.
 PLANETS = tuple(OBLIQUITY)
+#: The named moment sets: the catalogue's (IAU MHB2000 ``H`` for the Earth) and Lara's (2013) Table 1.
+MOMENT_SETS = ("catalogue", bodies.LARA_SET)
 #: CPU seconds of one stage of one state of the full integration: the free flow and the kick of
 #: the Sun's and the Moon's gravity gradient on their mean orbits (measured 160 µs with
 #: ``time.process_time`` over 20 years of the Earth at the default step, 4 states; the free
@@ -141,13 +147,65 @@ def _with_ellipticity(planet: RigidBody, dynamical_ellipticity: float | None) ->
     return RigidBody(mean - 0.5 * (I2 - I1), mean + 0.5 * (I2 - I1), I3, name=planet.name)
 
 
-def precession_problem(body: str, dynamical_ellipticity: float | None = None) -> tuple[Model, State]:
+def _moment_set(moments: str | None) -> str | None:
+    """``None`` for the catalogue's own moments, else the named set (refused unless known)."""
+    if moments is None or moments == "catalogue":
+        return None
+    if moments not in MOMENT_SETS:
+        msg = f"expected a moment set among {', '.join(MOMENT_SETS)}, got {moments!r}"
+        raise ValueError(msg)
+    return moments
+
+
+def planet_body(body: str, moments: str | None = None) -> tuple[RigidBody, float]:
+    """The planet's normalised :class:`~andoyer.RigidBody` (``C = 1``) and sidereal rotation period (s).
+
+    The catalogue's moments and rotation by default (the Earth: the IAU MHB2000 ``H`` =
+    0.00327379492 with Lara's ``B − A``, the IAU rotation rate); ``moments="lara2013"``: Lara's
+    (2013) Table 1 moments and period (:mod:`andoyer.bodies`).
+
+    Parameters
+    ----------
+    body : {"earth", "mars"}
+    moments : {"catalogue", "lara2013"}, optional
+
+    Returns
+    -------
+    planet : RigidBody
+    rotation_period : float
+
+    Examples
+    --------
+    >>> planet, period = planet_body("earth")
+    >>> round(1 - (planet.A + planet.B) / 2, 11), round(period, 3)
+    (0.00327379492, 86164.096)
+    >>> planet, period = planet_body("earth", "lara2013")
+    >>> round(1 - (planet.A + planet.B) / 2, 7), period
+    (0.0032789, 86164.0905)
+    """
+    key = _planet(body)
+    chosen = _moment_set(moments)
+    if chosen is not None:
+        info = bodies.info(key)
+        return info.body, info.rotation_period
+    entry = catalogue.get(key)
+    if entry.rotation_period is not None:
+        period = entry.rotation_period.si()
+    else:
+        period = 2 * np.pi / abs(entry.require("rotation_rate", "the precession rate").si())
+    return entry.rigid_body(), float(period)
+
+
+def precession_problem(
+    body: str, dynamical_ellipticity: float | None = None, moments: str | None = None
+) -> tuple[Model, State]:
     """The torqued planet and its ``NODE_PHASES`` initial states (shape (4,)).
 
     The planet spins about its figure axis ``b3`` (``J = 0``) at its sidereal
     rate, ``G = C ω``, at its obliquity ``I₀ = ε`` to the ecliptic, with nodes
-    ``h₀ = 0, π/2, π, 3π/2``. Moments are Lara's (normalised, ``C = 1``); the
-    perturbers are :func:`~andoyer.perturbations.solar_system.mean_perturbers`.
+    ``h₀ = 0, π/2, π, 3π/2``. Moments (normalised, ``C = 1``) and rotation period are the
+    catalogue's (:func:`planet_body`; Lara's with ``moments="lara2013"``); the perturbers are
+    :func:`~andoyer.perturbations.solar_system.mean_perturbers`.
 
     Parameters
     ----------
@@ -155,6 +213,8 @@ def precession_problem(body: str, dynamical_ellipticity: float | None = None) ->
     dynamical_ellipticity : float, optional
         ``H = (C − (A+B)/2)/C`` to use instead of the named body's (its
         ``B − A`` kept).
+    moments : {"catalogue", "lara2013"}, optional
+        The moment set (default the catalogue's).
 
     Returns
     -------
@@ -168,16 +228,18 @@ def precession_problem(body: str, dynamical_ellipticity: float | None = None) ->
     ((4,), GravityGradient(RigidBody(I1=0.9942917, I2=0.9949813, I3=1.0, name='Mars'), [Sun]))
     """
     key = _planet(body)
-    info = bodies.info(key)
-    planet = _with_ellipticity(info.body, dynamical_ellipticity)
-    G = planet.C * 2 * np.pi / info.rotation_period
+    planet, period = planet_body(key, moments)
+    planet = _with_ellipticity(planet, dynamical_ellipticity)
+    G = planet.C * 2 * np.pi / period
     h0 = 2 * np.pi * np.arange(NODE_PHASES) / NODE_PHASES
     states = State.from_andoyer(0.0, 0.0, h0, G, G, G * np.cos(OBLIQUITY[key]))
     return Model(planet, GravityGradient(mean_perturbers(key))), states
 
 
-def default_step(body: str) -> float:
+def default_step(body: str, moments: str | None = None) -> float:
     """The splitting step (seconds) of :func:`precession_rates`: ``(2k+1)/4`` rotations, ≤ 1/12 orbit.
+
+    The rotation is that of the moment set ``moments`` (:func:`planet_body`).
 
     Examples
     --------
@@ -185,7 +247,7 @@ def default_step(body: str) -> float:
     (2.2439, 57.1971)
     """
     key = _planet(body)
-    rotation = bodies.info(key).rotation_period
+    rotation = planet_body(key, moments)[1]
     shortest = min(2 * np.pi / p.orbit.mean_motion for p in mean_perturbers(key))
     quarters = int(4 * (shortest / 12) / rotation)
     quarters -= 1 - quarters % 2
@@ -391,6 +453,7 @@ def precession_rates(
     order: int = 2,
     secular_years: float = 100.0,
     dynamical_ellipticity: float | None = None,
+    moments: str | None = None,
 ) -> PrecessionRates:
     """Precession rate of ``body``'s angular momentum: secular model, and optionally a full integration.
 
@@ -410,8 +473,11 @@ def precession_rates(
         Span of the secular integration.
     dynamical_ellipticity : float, optional
         ``H = (C − (A+B)/2)/C`` instead of the named body's; the rates are
-        proportional to it (Earth: ``H = 0.0032737949`` of MHB2000 gives 50.40″/yr
-        on the mean orbits).
+        proportional to it.
+    moments : {"catalogue", "lara2013"}, optional
+        The moment set: the catalogue's (default; the Earth's IAU MHB2000 ``H`` =
+        0.00327379492 gives 50.40″/yr on the mean orbits) or Lara's (2013) Table 1
+        (``H = 0.0032789``: 50.48″/yr).
 
     Returns
     -------
@@ -427,14 +493,16 @@ def precession_rates(
     --------
     >>> rates = precession_rates("earth")
     >>> rates.perturbers, round(rates.secular, 2)
-    (('Sun', 'Moon'), 50.48)
+    (('Sun', 'Moon'), 50.4)
+    >>> round(precession_rates("earth", moments="lara2013").secular, 2)
+    50.48
     >>> precession_rates("earth", integrate=1.0, step=1e8)  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
     ValueError: expected a step of at most half the span ... got step=100000000.0 s
     """
     key = _planet(body)
-    model, states = precession_problem(key, dynamical_ellipticity)
+    model, states = precession_problem(key, dynamical_ellipticity, moments)
     perturbers = mean_perturbers(key)
     M0 = states.m_reference
     h0 = np.arctan2(M0[:, 0], -M0[:, 1])
@@ -443,7 +511,7 @@ def precession_rates(
             msg = f"expected a positive number of years for {name}, got {value!r}"
             raise ValueError(msg)
     if integrate is not None:  # every refusal before the secular run
-        step = default_step(key) if step is None else float(step)
+        step = default_step(key, moments) if step is None else float(step)
         count = _integration_steps(integrate, step, order, states.size)
         seconds = (count + 1) * len(splitting_coefficients(order)) * states.size * STAGE_SECONDS
         announce(seconds, f"integrating the full torque on {key.capitalize()} over {integrate:g} years")

@@ -15,8 +15,8 @@ of the plane normal to ``a`` on the reference plane ``s1 s2``).  They are the Eu
 ``Ω₀ + Ω̇ t`` and ``ε₀ + ε̇ t`` are fitted by least squares (:func:`andoyer.planetary.precession.fit_trend`)
 together with sinusoids of the known nutation frequencies, if given: a straight line alone over
 a span that is not a whole number of nutation periods is biased by them (one state of the Earth
-over one 18.6-year lunar nutation: 52.2″/yr instead of 50.48″/yr).  The nutations are what is
-left,
+over one 18.6-year lunar nutation: 52.2″/yr instead of 50.48″/yr, with Lara's moments).
+The nutations are what is left,
 
 .. math:: \Delta\Omega(t) = \Omega(t) - \Omega_0 - \dot\Omega t, \qquad
           \Delta\varepsilon(t) = \varepsilon(t) - \varepsilon_0 - \dot\varepsilon t.

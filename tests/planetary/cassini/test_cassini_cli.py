@@ -163,7 +163,7 @@ SLOPE = "argument --inclination: expected an inclination 0 < i < 90 deg"
 
 REFUSED = {
     "partial": (["mercury", "--moment-of-inertia", "0.34"], "expected every value option or none"),
-    "missing_value": (["triton"], "expected Triton to have gm for the Cassini states"),
+    "missing_value": (["triton"], "expected Triton to have j2 for the Cassini states"),
     "not_inclined": (["enceladus"], "expected Enceladus to have orbital_period"),
     "unknown_body": (["vulcan"], "expected a body among"),
     "nothing": ([], "expected a BODY, a --body-file or every value option, got neither"),
@@ -238,4 +238,4 @@ def test_cli_cassini_refusal_in_a_process_has_no_traceback():
     assert proc.returncode == 2
     assert "Traceback" not in proc.stderr
     (line,) = proc.stderr.strip().splitlines()
-    assert line.startswith("andoyer cassini: error: expected Triton to have gm for the Cassini states")
+    assert line.startswith("andoyer cassini: error: expected Triton to have j2 for the Cassini states")

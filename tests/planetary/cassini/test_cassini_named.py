@@ -70,7 +70,7 @@ def test_node_model_refused_for_a_planet():
 
 @pytest.mark.parametrize(
     ("name", "missing"),
-    [("triton", "expected Triton to have gm"), ("enceladus", "expected Enceladus to have orbital_period")],
+    [("triton", "expected Triton to have j2"), ("enceladus", "expected Enceladus to have orbital_period")],
 )
 def test_bodies_missing_a_value(name, missing):
     with pytest.raises(ValueError, match=missing):

@@ -327,7 +327,7 @@ def test_minimum_span_rule():
 def test_precession_rates_accept_dynamical_ellipticity():
     """The secular rate is linear in C − (A+B)/2: doubling H doubles it; the body's own H changes nothing."""
     default = precession_rates("earth", secular_years=20.0)
-    own = 1 - 0.5 * (0.99672 + 0.9967222)  # bodies.py's Earth (Lara Table 1), C = 1
+    own = 0.00327379492  # the catalogue's Earth (IAU MHB2000 H), the default moments
     same = precession_rates("earth", secular_years=20.0, dynamical_ellipticity=own)
     assert abs(same.secular - default.secular) < 1e-9
     one = precession_rates("earth", secular_years=20.0, dynamical_ellipticity=H)

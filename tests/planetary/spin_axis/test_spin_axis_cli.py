@@ -25,7 +25,7 @@ def test_obliquity_json_keys_and_iau_values(capsys):
                  "--precession-rate", "50.3848"]) == 0
     out = json.loads(capsys.readouterr().out)
     assert set(out) == {"t", "obliquity", "precession", "axis", "orbit_normal", "eccentricity",
-                        "climatic_precession", "precession_rate"}
+                        "climatic_precession", "precession_rate", "resonances"}
     assert out["t"] == [-1000.0, -500.0, 0.0, 500.0, 1000.0]
     assert np.shape(out["axis"]) == (5, 3)
     assert np.shape(out["orbit_normal"]) == (5, 3)
@@ -64,7 +64,7 @@ def test_obliquity_writes_output_and_plot(tmp_path):
 @pytest.mark.parametrize(
     ("argv", "message"),
     [
-        (["venus"], "invalid choice: 'venus'"),
+        (["mercury"], "invalid choice: 'mercury'"),
         (["earth", "--step", "0"], "expected --step DT > 0 years, got 0.0"),
         (["earth", "--step", "-5"], "expected --step DT > 0 years"),
         (["earth", "--span", "10", "-10"], "expected --span T0 T1 with T1 >= T0"),

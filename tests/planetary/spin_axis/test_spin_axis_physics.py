@@ -8,10 +8,10 @@ import pytest
 from scipy.integrate import solve_ivp
 from spin_cases import FixedOrbit, PrecessingOrbit, angle
 
-from andoyer import bodies
 from andoyer.perturbations.averaged_gravity import SecularGravityGradient
 from andoyer.perturbations.solar_system import JULIAN_YEAR, mean_perturbers
 from andoyer.planetary.orbits import VondrakEcliptic
+from andoyer.planetary.precession import planet_body
 from andoyer.planetary.spin_axis import (
     EPSILON_0,
     SpinAxisModel,
@@ -38,7 +38,7 @@ def _ecliptic(v):
 @pytest.mark.parametrize("seed", [0, 1, 2])
 def test_axis_rate_matches_secular_gravity_gradient_earth(seed):
     """ṡ = α (s·n)(s×n) equals SecularGravityGradient's dM/dt / G averaged over the Moon's node."""
-    earth = bodies.get("earth")
+    earth, period = planet_body("earth")  # the catalogue's moments and rotation
     I1, I2, I3 = earth.moments
     H = (I3 - 0.5 * (I1 + I2)) / I3
     model = SpinAxisModel.from_dynamical_ellipticity("earth", H)
@@ -46,7 +46,7 @@ def test_axis_rate_matches_secular_gravity_gradient_earth(seed):
     rng = np.random.default_rng(seed)
     s = rng.normal(size=3)
     s /= np.linalg.norm(s)
-    G = I3 * 2 * np.pi / bodies.info("earth").rotation_period
+    G = I3 * 2 * np.pi / period
     node_period = 6798.38 * 86400.0  # the Moon's nodal period in solar_system.py
     t = node_period * np.arange(64) / 64  # exact average of a trigonometric polynomial of degree 2
     rate = secular.momentum_rate(t, np.broadcast_to(G * s, (64, 3)), np.full(64, G)).mean(axis=0)
@@ -57,13 +57,13 @@ def test_axis_rate_matches_secular_gravity_gradient_earth(seed):
 
 
 def test_axis_rate_matches_secular_gravity_gradient_mars_sun_only():
-    mars = bodies.get("mars")
+    mars, period = planet_body("mars")  # the catalogue's moments and rotation
     I1, I2, I3 = mars.moments
     model = SpinAxisModel.from_dynamical_ellipticity("mars", (I3 - 0.5 * (I1 + I2)) / I3)
     secular = SecularGravityGradient(mars, mean_perturbers("mars"))
     s = np.array([0.3, -0.4, 0.8])
     s /= np.linalg.norm(s)
-    G = I3 * 2 * np.pi / bodies.info("mars").rotation_period
+    G = I3 * 2 * np.pi / period
     expected = secular.momentum_rate(0.0, G * s, G) / G * JULIAN_YEAR
     got = model.rate(0.0) * s[2] * np.cross(s, [0.0, 0.0, 1.0])
     assert model.beta == 0.0
@@ -186,8 +186,10 @@ def test_climatic_precession_at_j2000_convention():
 
 
 def test_model_rejects_bad_parameters_with_expected_messages():
-    with pytest.raises(ValueError, match="expected a body in earth, mars, got 'venus'"):
-        SpinAxisModel.from_precession_rate("venus", 1.0, 0.4)
+    with pytest.raises(ValueError, match="expected a body in earth, mars or the catalogue, got 'vulcan'"):
+        SpinAxisModel.from_precession_rate("vulcan", 1.0, 0.4)
+    with pytest.raises(ValueError, match="expected a body out of spin-orbit resonance for the spin axis"):
+        SpinAxisModel.from_precession_rate("mercury", 1.0, 0.4)
     with pytest.raises(ValueError, match="expected a precession rate P > 0 arcsec/yr"):
         SpinAxisModel.from_precession_rate("earth", -1.0, 0.4)
     with pytest.raises(ValueError, match="expected tidal dissipation 0 for a planet without a moon"):
@@ -210,7 +212,8 @@ def test_tidal_dissipation_follows_zeebe_lourens_convention():
     tidal = SpinAxisModel.from_precession_rate("earth", 50.3848, EPSILON_0, tidal_dissipation=1.0)
     t = -1e6
     N = -4.6e-18 * JULIAN_YEAR
-    W = 51 * (27.321661 / (86164.0905 / 86400)) ** -1 * N
+    day = 360 / 360.9856235  # the sidereal day in days, IAU WGCCRE W = 360.9856235°/d
+    W = 51 * (27.321661 / day) ** -1 * N
     ratio = float(tidal.rate(t) / base.rate(t))
     beta = base.beta
     s = (1 - 0.01671123**2) ** -1.5  # the Earth's e: Standish's J2000 mean elements (the catalogue's)

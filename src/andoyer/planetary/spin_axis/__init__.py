@@ -61,6 +61,7 @@ from andoyer.planetary.spin_axis.model import (
     EARTH_DYNAMICAL_ELLIPTICITY,
     SpinAxisModel,
 )
+from andoyer.planetary.spin_axis.resonances import resonance_distances
 from andoyer.planetary.spin_axis.statistics import ObliquityStatistics, obliquity_statistics
 
 __all__ = [
@@ -85,6 +86,7 @@ __all__ = [
     "obliquity_statistics",
     "output_times",
     "perturbed_states",
+    "resonance_distances",
     "run_cost",
     "spin_axis_blocks",
     "spin_axis_history",
@@ -99,11 +101,13 @@ def default_axis(body: str) -> np.ndarray:
     """The spin axis at J2000 in the J2000 ecliptic frame, shape (3,).
 
     Earth: the IAU 2006 mean pole (:func:`mean_pole_j2000`). Mars: the IAU pole
-    (:data:`MARS_POLE_RA_DEC`) turned from the equator to the ecliptic of J2000 by ``ε₀``.
+    (:data:`MARS_POLE_RA_DEC`) turned from the equator to the ecliptic of J2000 by ``ε₀``. Any
+    other catalogued body or a body of the user's own: its IAU pole the same way, reversed for a
+    retrograde rotator (:func:`andoyer.planetary.precession_constant.spin_axis_ecliptic`).
 
     Parameters
     ----------
-    body : {"earth", "mars"}
+    body : str or Body
 
     Returns
     -------
@@ -118,16 +122,19 @@ def default_axis(body: str) -> np.ndarray:
     >>> round(float(np.degrees(np.arccos(default_axis("mars") @ n))), 2)  # obliquity
     25.19
     """
-    key = str(body).strip().lower()
-    if key == "earth":
+    from andoyer.catalogue import Body
+
+    key = body.key if isinstance(body, Body) else str(body).strip().lower()
+    if key == "earth" and not isinstance(body, Body):
         return mean_pole_j2000()
-    if key == "mars":
-        ra, dec = np.radians(MARS_POLE_RA_DEC)
-        v = np.array([np.cos(dec) * np.cos(ra), np.cos(dec) * np.sin(ra), np.sin(dec)])
-        c, s = np.cos(EPSILON_0), np.sin(EPSILON_0)
-        return np.array([v[0], c * v[1] + s * v[2], -s * v[1] + c * v[2]])
-    msg = f"expected a body in {', '.join(DEFAULT_PRECESSION_RATE)}, got {body!r}"
-    raise ValueError(msg)
+    if key not in DEFAULT_PRECESSION_RATE or isinstance(body, Body):
+        from andoyer.planetary.precession_constant import spin_axis_ecliptic
+
+        return np.array(spin_axis_ecliptic(body))
+    ra, dec = np.radians(MARS_POLE_RA_DEC)  # Mars
+    v = np.array([np.cos(dec) * np.cos(ra), np.cos(dec) * np.sin(ra), np.sin(dec)])
+    c, s = np.cos(EPSILON_0), np.sin(EPSILON_0)
+    return np.array([v[0], c * v[1] + s * v[2], -s * v[1] + c * v[2]])
 
 
 def spin_axis_history(

@@ -832,12 +832,14 @@ def build_model(
     """The model of ``body`` on ``orbit`` from a precession rate (default) or an ellipticity.
 
     The precession rate (″/yr, ``ψ̇`` at J2000; default ``DEFAULT_PRECESSION_RATE[body]``) is
-    matched with the obliquity ``∠(s0, n(0))`` and the orbit's ``e(0)`` where it knows it.
+    matched with the obliquity ``∠(s0, n(0))`` and the orbit's ``e(0)`` where it knows it; a
+    planet other than the Earth and Mars (or a body of the user's own) given neither takes its
+    catalogued figure and satellites (:meth:`SpinAxisModel.from_precession_constant`).
 
     Parameters
     ----------
     orbit : OrbitHistory
-    body : str
+    body : str or Body
     s0 : ndarray, shape (3,)
         Unit axis at J2000.
     precession_rate, dynamical_ellipticity : float, optional
@@ -858,8 +860,13 @@ def build_model(
         )
         return model if e0 is None else replace(model, eccentricity=e0)
     rate = precession_rate
+    key = str(body).strip().lower() if isinstance(body, str) else body
+    named = isinstance(key, str) and key in DEFAULT_PRECESSION_RATE
+    if rate is None and not named:  # any other planet or a body file: its figure and satellites
+        SpinAxisModel._tides(body, tidal_dissipation)  # refuses tides without a moon
+        return SpinAxisModel.from_precession_constant(body, ellipticity_drift, e0)
     if rate is None:
-        rate = DEFAULT_PRECESSION_RATE.get(str(body).strip().lower(), np.nan)
+        rate = DEFAULT_PRECESSION_RATE[key]
     n0 = orbit.normal(0.0)
     eps0 = float(np.arctan2(np.linalg.norm(np.cross(s0, n0)), s0 @ n0))
     return SpinAxisModel.from_precession_rate(body, rate, eps0, e0, tidal_dissipation, ellipticity_drift)

@@ -49,19 +49,22 @@ the constant ``α ∝ H/ω ∝ ω``, and the Moon's torque ``∝ a_M^{−3} ∝ 
 drift of ``H`` (fraction per year). ``T_d = 0`` (the default) is no tidal change.
 
 Sources of the constants: :mod:`andoyer.perturbations.solar_system` (the Sun's and the
-Moon's mean orbits), :mod:`andoyer.bodies` (rotation periods); the Earth's ``H`` =
-0.0032737949 (IERS Conventions 2010, Table 1.1).
+Moon's mean orbits); :mod:`andoyer.catalogue` (rotation periods, the default precession rates
+and the Earth's ``H`` = 0.00327379492 of MHB2000, Bourda & Capitaine 2004 Table 2; IERS
+Conventions 2010 Table 1.1 round it to 0.0032737949).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from andoyer import bodies
-from andoyer.perturbations.solar_system import JULIAN_YEAR, mean_perturbers
+from andoyer import catalogue
+from andoyer.catalogue import Body
+from andoyer.catalogue.units import ARCSEC, JULIAN_YEAR
+from andoyer.perturbations.solar_system import mean_perturbers
 from andoyer.planetary.parameters import PARAMETERS, check
 
 __all__ = [
@@ -74,26 +77,49 @@ __all__ = [
 
 Array = NDArray[np.float64]
 
-#: One arcsecond in radians.
-ARCSEC = np.pi / 648000.0
-#: Default ``ψ̇`` at J2000, ″/yr: the Earth's IAU 2006 ``dψ_A/dt`` (5038.481507″/cy, Capitaine
-#: et al. 2003, eq. 37); Mars 7.597″/yr (radio tracking of landers and orbiters gives
-#: 7.59–7.61″/yr: Konopliv et al. 2016, Icarus 274, 253; Le Maistre et al. 2023, Nature 619, 733).
-DEFAULT_PRECESSION_RATE = {"earth": 50.38481507, "mars": 7.597}
-#: The Earth's dynamical ellipticity ``H = (C − A)/C`` (IERS Conventions 2010, Table 1.1).
-EARTH_DYNAMICAL_ELLIPTICITY = 0.0032737949
+#: Default ``ψ̇`` at J2000, ″/yr, the catalogue's ``precession_rate``: the Earth's IAU 2006
+#: ``dψ_A/dt`` (5038.481507″/cy, Capitaine et al. 2003, eq. 37); Mars 7.597″/yr (radio tracking of
+#: landers and orbiters gives 7.59–7.61″/yr: Konopliv et al. 2016, Icarus 274, 253; Le Maistre et
+#: al. 2023, Nature 619, 733).
+DEFAULT_PRECESSION_RATE = {
+    key: catalogue.get(key).require("precession_rate", "the spin axis").to("arcsec/yr")
+    for key in ("earth", "mars")
+}
+#: The Earth's dynamical ellipticity ``H = (C − (A+B)/2)/C``, the catalogue's (MHB2000).
+EARTH_DYNAMICAL_ELLIPTICITY = catalogue.get("earth").require("dynamical_ellipticity", "the spin axis").value
 #: ``ṅ_M/n_M`` of the Moon at ``T_d = 1``, per second (Quinn et al. 1991, eq. 3; Zeebe & Lourens 2022).
 MOON_MEAN_MOTION_RATE = -4.6e-18
 #: ``ω̇/ω = 51 (n_M/ω) ṅ_M/n_M`` (Lambeck 1980, as in Zeebe & Lourens 2022).
 _LAMBECK = 51.0
 
 
-def _solar_terms(body: str) -> tuple[float, float, float, float, float]:
-    """``(n_⊙² [rad²/s²], e(J2000), β, ω [rad/s], n_M/ω)`` of the named planet."""
+def _solar_terms(body: str | Body) -> tuple[float, float, float, float, float]:
+    """``(n_⊙² [rad²/s²], e(J2000), β, ω [rad/s], n_M/ω)`` of a planet.
+
+    The Earth and Mars: their mean perturbers (:mod:`andoyer.perturbations.solar_system`); any
+    other body (a catalogued planet or a body of the user's own): the catalogue's orbit and
+    rotation and its satellites outside the Laplace radius
+    (:func:`andoyer.planetary.precession_constant.precession_constant`).
+    """
+    if isinstance(body, Body) or body not in DEFAULT_PRECESSION_RATE:
+        from andoyer.planetary.precession_constant import precession_constant
+
+        c = precession_constant(body)
+        if c.resonance is not None:
+            msg = (
+                f"expected a body out of spin-orbit resonance for the spin axis (its obliquity is a Cassini "
+                f"state: andoyer cassini), got {c.body} in a {c.resonance:g}:1 resonance"
+            )
+            raise ValueError(msg)
+        return c.mean_motion_squared, c.eccentricity, c.outer_torque, c.spin_rate, 0.0
     perturbers = mean_perturbers(body)
     sun = perturbers[0]
     n2 = sun.gm / sun.orbit.semi_major_axis**3
-    omega = 2 * np.pi / bodies.info(body).rotation_period
+    entry = catalogue.get(body)
+    if entry.rotation_period is not None:
+        omega = 2 * np.pi / entry.rotation_period.si()
+    else:
+        omega = abs(entry.require("rotation_rate", "the spin axis").si())
     beta = 0.0
     ratio = 0.0
     for moon in perturbers[1:]:
@@ -129,7 +155,13 @@ class SpinAxisModel:
     tide_spin, tide_moon : float
         ``W T_d`` and ``2 N T_d``, per year.
     ellipticity_drift : float
-        ``Ḣ/H``, per year.
+        ``Ḣ/H``, per year: for a planet with satellites, the drift of its effective ellipticity
+        ``(J2 + q)/(λ + l)``, that is of ``α`` (satellite migration, ``α(t) = α₀ (1 + t/τ)``).
+    entry : Body, optional
+        A body of the user's own (its orbit and rotation); ``None`` for a catalogued body.
+    satellite_rings : bool
+        Whether satellites inside the Laplace radius are in the figure (the effective
+        ellipticity is then bounded only below, :meth:`check_span`).
 
     Examples
     --------
@@ -147,6 +179,8 @@ class SpinAxisModel:
     tide_spin: float = 0.0
     tide_moon: float = 0.0
     ellipticity_drift: float = 0.0
+    entry: Body | None = field(default=None, compare=False, repr=False)
+    satellite_rings: bool = field(default=False, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         numbers = {
@@ -166,7 +200,7 @@ class SpinAxisModel:
         check("eccentricity", self.eccentricity)
 
     @staticmethod
-    def _tides(body: str, tidal_dissipation: float) -> tuple[float, float]:
+    def _tides(body: str | Body, tidal_dissipation: float) -> tuple[float, float]:
         tidal_dissipation = check("tidal_dissipation", tidal_dissipation)
         _, _, beta, _, ratio = _solar_terms(body)
         if tidal_dissipation != 0 and beta == 0:
@@ -207,13 +241,13 @@ class SpinAxisModel:
         >>> round(model.precession_rate(np.radians(84381.406 / 3600)), 2)  # ″/yr; IAU 2006: 50.38
         50.4
         """
-        key = _body(body)
+        key, entry = _body(body)
         ellipticity = check("dynamical_ellipticity", ellipticity)
         drift = check("ellipticity_drift", ellipticity_drift)
-        n2, e0, beta, omega, _ = _solar_terms(key)
+        n2, e0, beta, omega, _ = _solar_terms(entry or key)
         alpha = 1.5 * n2 * ellipticity / omega * JULIAN_YEAR
-        spin, moon = cls._tides(key, tidal_dissipation)
-        return cls(key, float(alpha), float(beta), float(e0), spin, moon, drift)
+        spin, moon = cls._tides(entry or key, tidal_dissipation)
+        return cls(key, float(alpha), float(beta), float(e0), spin, moon, drift, entry)
 
     @classmethod
     def from_precession_rate(
@@ -249,11 +283,11 @@ class SpinAxisModel:
         >>> round(model.dynamical_ellipticity(), 5)
         0.00537
         """
-        key = _body(body)
+        key, entry = _body(body)
         rate = check("precession_rate", rate)
         obliquity = check("obliquity", obliquity)
         drift = check("ellipticity_drift", ellipticity_drift)
-        n2, e0, beta, omega, _ = _solar_terms(key)
+        n2, e0, beta, omega, _ = _solar_terms(entry or key)
         e = e0 if eccentricity is None else check("eccentricity", eccentricity)
         alpha = rate * ARCSEC / (np.cos(obliquity) * (((1 - e) * (1 + e)) ** -1.5 + beta))
         # The rate and the ellipticity are one parameter (α_⊙ = (3/2) n_⊙² H / ω): H's bound
@@ -267,16 +301,57 @@ class SpinAxisModel:
                 f"ellipticity H = (C - (A+B)/2)/C by 1/2), got {rate!r} (H = {H:.4g})"
             )
             raise ValueError(msg)
-        spin, moon = cls._tides(key, tidal_dissipation)
-        return cls(key, float(alpha), float(beta), e, spin, moon, drift)
+        spin, moon = cls._tides(entry or key, tidal_dissipation)
+        return cls(key, float(alpha), float(beta), e, spin, moon, drift, entry)
+
+    @classmethod
+    def from_precession_constant(
+        cls, body: str | Body, ellipticity_drift: float = 0.0, eccentricity: float | None = None
+    ) -> SpinAxisModel:
+        """The model of any planet from its catalogued figure and satellites.
+
+        ``α_⊙ = (3/2)(μ_⊙/a³ω)(J2 + q)/(λ + l)`` and ``β = Σ β_k``
+        (:func:`andoyer.planetary.precession_constant.precession_constant`: the satellites inside
+        the Laplace radius in the figure, those outside as perturbers).
+
+        Parameters
+        ----------
+        body : str or Body
+            A catalogued planet or a body of the user's own.
+        ellipticity_drift : float
+            ``1/τ`` per Julian year: ``α(t) = α₀ (1 + t/τ)`` (satellite migration).
+        eccentricity : float, optional
+            The orbit's ``e`` at J2000 (default: the catalogue's).
+
+        Returns
+        -------
+        SpinAxisModel
+
+        Examples
+        --------
+        >>> model = SpinAxisModel.from_precession_constant("saturn")
+        >>> round(model.precession_rate(np.radians(26.73)), 3)  # ″/yr, Titan's ring included
+        0.73
+        """
+        from andoyer.planetary.precession_constant import precession_constant
+
+        key, entry = _body(body)
+        drift = check("ellipticity_drift", ellipticity_drift)
+        c = precession_constant(entry or key)
+        n2, e0, beta, omega, _ = _solar_terms(entry or key)
+        e = e0 if eccentricity is None else check("eccentricity", eccentricity)
+        alpha = 1.5 * n2 * c.figure / omega * JULIAN_YEAR
+        rings = any(s.regime == "ring" for s in c.satellites)
+        return cls(key, float(alpha), float(beta), float(e), 0.0, 0.0, drift, entry, rings)
 
     def check_span(self, t0: float, t1: float) -> None:
         """Refuse a span over which the model's linear drifts leave their ranges.
 
         ``H (1 + ellipticity_drift · t)`` must stay within the dynamical ellipticity's range
-        (``0 < H < 1/2``) and the tidal factors ``1 + tide_spin · t``, ``1 + tide_moon · t``
-        positive, from J2000 (where the axis starts) to either end; all are linear in ``t``, so
-        the ends decide.
+        (``0 < H < 1/2``; only positive for a planet whose satellites' rings make its effective
+        ``(J2 + q)/(λ + l)``, which ``A + B ≥ C`` does not bound) and the tidal factors
+        ``1 + tide_spin · t``, ``1 + tide_moon · t`` positive, from J2000 (where the axis starts)
+        to either end; all are linear in ``t``, so the ends decide.
 
         Parameters
         ----------
@@ -295,7 +370,14 @@ class SpinAxisModel:
         H = self.dynamical_ellipticity()
         for t in (float(t0), float(t1)):
             Ht = H * (1 + self.ellipticity_drift * t)
-            if not PARAMETERS["dynamical_ellipticity"].contains(Ht):
+            if self.satellite_rings and not Ht > 0:
+                msg = (
+                    f"expected a drift that keeps the precession constant positive over the span, got "
+                    f"1 + t/TAU = {1 + self.ellipticity_drift * t:.4g} at t = {t:g} years (drift "
+                    f"{self.ellipticity_drift!r} per year)"
+                )
+                raise ValueError(msg)
+            if not self.satellite_rings and not PARAMETERS["dynamical_ellipticity"].contains(Ht):
                 bounds = PARAMETERS["dynamical_ellipticity"].describe()
                 msg = (
                     f"expected an ellipticity drift that keeps {bounds} over the span, got H = {Ht:.4g} "
@@ -357,13 +439,18 @@ class SpinAxisModel:
         -------
         float
         """
-        n2, _, _, omega, _ = _solar_terms(self.body)
+        n2, _, _, omega, _ = _solar_terms(self.entry or self.body)
         return float(self.alpha_sun / JULIAN_YEAR * omega / (1.5 * n2))
 
 
-def _body(body: str) -> str:
+def _body(body: str | Body) -> tuple[str, Body | None]:
+    """The body's key and, for a body of the user's own, the body itself (unknown names refused)."""
+    if isinstance(body, Body):
+        if body.key in catalogue.names() and catalogue.get(body.key) is body:
+            return body.key, None
+        return body.name, body
     key = str(body).strip().lower()
-    if key not in DEFAULT_PRECESSION_RATE:
-        msg = f"expected a body in {', '.join(DEFAULT_PRECESSION_RATE)}, got {body!r}"
+    if key not in DEFAULT_PRECESSION_RATE and key not in catalogue.names():
+        msg = f"expected a body in {', '.join(DEFAULT_PRECESSION_RATE)} or the catalogue, got {body!r}"
         raise ValueError(msg)
-    return key
+    return key, None
