@@ -111,6 +111,7 @@ VALID: dict[str, Valid] = {
                 "--tidal-dissipation 0.5 --output {out}"
             ),
             "obliquity earth --span -1000 1000 --step 100 --precession-rate 500 --output {out}",
+            "obliquity earth --span -1000 1000 --step 500 --tolerance 0.001 --format json --output {out}",
         ),
         "--output",
     ),
