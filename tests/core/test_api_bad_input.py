@@ -387,6 +387,20 @@ CASES = [
         "expected",
     ),
     (SpinAxisModel, SpinAxisModel, ("earth", NAN, 1.0, 0.01), ValueError, "expected a finite real"),
+    (
+        spin_axis_history,
+        P(spin_axis_history, tolerance=0.0),
+        (VondrakEcliptic(), "earth", [0.0, 100.0]),
+        ValueError,
+        "expected a positive finite tolerance",
+    ),
+    (
+        spin_axis_history,
+        P(spin_axis_history, tolerance=1e-20),
+        (VondrakEcliptic(), "earth", [0.0, 100.0]),
+        ValueError,
+        "round-off",
+    ),
     # -- physical parameters out of range (issue 26 item 4; the table andoyer.planetary.parameters)
     (check, check, ("tidal_dissipation", -5.0), ValueError, "expected a tidal dissipation 0 <= T_d <= 1.2"),
     (check, check, ("colour", 1.0), ValueError, "expected a parameter among"),
