@@ -271,6 +271,8 @@ CASES = [
     (propagate, propagate, (MODEL, STATE, 1e9), ValueError, "expected a DOP853 run of at most"),
     (propagate, P(propagate, method="splitting", step=NAN), (MODEL, STATE, 1.0), ValueError, "expected"),
     (propagate, P(propagate, method="rk4"), (MODEL, STATE, 1.0), ValueError, "expected method"),
+    (propagate, P(propagate, method="splitting", rtol=0.0), (MODEL, STATE, 1.0), ValueError, "finite rtol"),
+    (propagate, P(propagate, method="splitting", rtol=1e-20), (MODEL, STATE, 1.0), ValueError, "round-off"),
     (propagate, P(propagate, t0=INF), (MODEL, STATE, 1.0), ValueError, "expected finite t0"),
     (propagate, propagate, (BODY, STATE, 1.0), ValueError, "expected an andoyer Model"),
     (integrate.integrate_reference, integrate.integrate_reference, (MODEL, STATE, []), ValueError, "time"),
