@@ -60,6 +60,10 @@ VALID: dict[str, Valid] = {
                 "propagate --model heavy-top --weight 0.5 --center-of-mass 0 0 0.3 --moments 1 1 0.5 "
                 f"--values {STATE} --range 0 1 3 --method splitting --step 0.1 --order 2"
             ),
+            (
+                "propagate --model heavy-top --weight 0.5 --center-of-mass 0 0 0.3 --moments 1 1 0.5 "
+                f"--values {STATE} --range 0 1 3 --method splitting --rtol 1e-6"
+            ),
         ),
         "--output",
     ),
