@@ -7,6 +7,7 @@ import argparse
 import numpy as np
 
 from andoyer.catalogue.units import ARCSEC
+from andoyer.cli import obliquity_ensemble
 from andoyer.cli.numbers import finite_number, physical
 from andoyer.cli.output import CliError, add_output_argument, atomic_output
 
@@ -36,6 +37,8 @@ DEFAULT_STEP = 1000.0
 
 def register(commands: argparse._SubParsersAction) -> None:
     """Add the sub-command to the parser."""
+    from andoyer.planetary.orbits.factory import SOLUTION_FORMATS
+
     parser = commands.add_parser(
         "obliquity",
         epilog=EXAMPLES,
@@ -50,6 +53,11 @@ def register(commands: argparse._SubParsersAction) -> None:
         help="vondrak|nbody|secular|laplace-lagrange|PATH (default: earth vondrak, mars nbody)",
     )
     parser.add_argument(
+        "--orbit-format",
+        choices=SOLUTION_FORMATS,
+        help="the format of an --orbit PATH (default: recognised from its name or columns; docs/orbits.md)",
+    )
+    parser.add_argument(
         "--span",
         nargs=2,
         type=finite_number,
@@ -62,8 +70,8 @@ def register(commands: argparse._SubParsersAction) -> None:
         "--step",
         type=finite_number,
         metavar="DT",
-        default=DEFAULT_STEP,
-        help="output step, years (default 1000); below half the period of the fastest angle printed",
+        help="output step, years (default 1000; with --ensemble |span|/1000); below half the period of "
+        "the fastest angle printed",
     )
     strength = parser.add_mutually_exclusive_group()
     strength.add_argument(
@@ -94,10 +102,12 @@ def register(commands: argparse._SubParsersAction) -> None:
     parser.add_argument("--format", choices=("json", "csv", "table"), default="table", help="default table")
     add_output_argument(parser)
     add_output_argument(parser, "--plot", "PNG of obliquity and climatic precession")
+    obliquity_ensemble.add_arguments(parser)
+    parser.epilog += obliquity_ensemble.HELP
     parser.set_defaults(run=run)
 
 
-def orbit_source(name: str, body: str):
+def orbit_source(name: str, body: str, orbit_format: str | None = None):
     """The orbit history named on the command line (:func:`andoyer.planetary.orbits.orbit_history`).
 
     Parameters
@@ -105,6 +115,8 @@ def orbit_source(name: str, body: str):
     name : str
         ``vondrak``, ``nbody``, ``secular`` or a table path.
     body : str
+    orbit_format : str, optional
+        The format of a file (:data:`andoyer.planetary.orbits.SOLUTION_FORMATS`).
 
     Returns
     -------
@@ -117,7 +129,7 @@ def orbit_source(name: str, body: str):
     """
     from andoyer.planetary.orbits import orbit_history
 
-    return orbit_history(name, body)
+    return orbit_history(name, body, orbit_format)
 
 
 def _fields(h) -> dict:
@@ -232,6 +244,10 @@ def run(args: argparse.Namespace) -> int:
     from andoyer.cli.output import write_json, write_rows
     from andoyer.planetary.spin_axis import SpinAxisHistory, output_times, spin_axis_blocks
 
+    if obliquity_ensemble.check(args):
+        return obliquity_ensemble.run(args)
+    if args.step is None:
+        args.step = DEFAULT_STEP
     t0, t1 = args.span
     if not args.step > 0:
         msg = f"expected --step DT > 0 years, got {args.step!r}"
@@ -244,7 +260,7 @@ def run(args: argparse.Namespace) -> int:
         raise CliError(msg)
     source = args.orbit or DEFAULT_ORBIT[args.body]
     _check_table(source)
-    orbit = orbit_source(source, args.body)
+    orbit = orbit_source(source, args.body, args.orbit_format)
     _check_span(orbit, source, args.body, t0, t1)
     times = output_times(t0, t1, args.step)
     stream_csv = args.format == "csv" and args.plot is None
