@@ -25,7 +25,8 @@ tol 1e-15 (cross-checked with order-4 splitting at a small step). Each method is
 with the cheapest peer tolerance that is at least as accurate.
 
 Run: ``python3 benchmarks/bench_precession.py [--years 1000] [--peer-years 2] [--steps 0.37,...]``
-``[--order4-steps 3.7,6.7]``
+``[--order4-steps 3.7,6.7] [--rtols 1e-4,1e-5]`` (``--rtols``: rows of
+``propagate(..., method="splitting", rtol=R, order=2)``, the step chosen by step doubling)
 (pins numpy to one thread; CPU time of this process).
 
 The step of the splitting can be a sizable fraction of the day and even several days:
@@ -102,6 +103,12 @@ def splitting_h(years, step_days, order=2):
     return float(node(out.m_reference[0]))
 
 
+def controlled_h(years, rtol, order=2):
+    """The public splitting path, its step chosen from ``rtol`` (step doubling); its step and estimate too."""
+    out = propagate(MODEL, START, [years * JULIAN_YEAR], method="splitting", rtol=rtol, order=order)
+    return float(node(out.m_reference[0])), out.step / SIDEREAL_DAY, out.error_estimate
+
+
 def cpu_mean(fn, least=0.5):
     """Mean CPU time of ``fn`` over as many calls as fill ``least`` seconds (at least one)."""
     out, spent = cpu(fn)
@@ -161,6 +168,9 @@ def main():
         "--order4-steps", default="", help="order-4 splitting steps in sidereal days (accuracy-vs-cost rows)"
     )
     parser.add_argument("--rate-years", type=float, default=20.0, help="span of the rate-vs-step table")
+    parser.add_argument(
+        "--rtols", default="", help="rows of propagate(method='splitting', rtol=R, order=2) at these R"
+    )
     args = parser.parse_args()
     S, Y = args.peer_years, args.years
     h0 = float(node(START.m_reference))
@@ -234,6 +244,11 @@ def main():
         rows.append(
             (f"splitting order 4, step {step} d", err, t_own, abs(wrapped(value - half)) * ARCSEC, value)
         )
+    for rtol in [float(x) for x in args.rtols.split(",") if x]:
+        err = abs(wrapped(controlled_h(S, rtol)[0] - ref)) * ARCSEC
+        (value, step, estimate), t_own = cpu(lambda rtol=rtol: controlled_h(Y, rtol))
+        print(f"rtol {rtol:.0e}: step {step:.3f} sidereal d, estimate {estimate:.2e} (relative M), {Y:g} yr")
+        rows.append((f"splitting rtol {rtol:.0e} (order 2)", err, t_own, float("nan"), value))
     best = rows[0][4]
     secular_best = secular_h(Y, 1e-12, "dop853")
     for rtol, method in ((1e-12, "rotations"), (1e-6, "rotations"), (1e-12, "dop853"), (1e-8, "dop853")):

@@ -58,6 +58,7 @@ __all__ = [
     "STEP_SECONDS",
     "Interrupted",
     "PhasePrecisionWarning",
+    "ToleranceWarning",
     "announce",
     "caller_stacklevel",
     "check_phase",
@@ -108,6 +109,14 @@ class PhasePrecisionWarning(UserWarning):
 
     Raised as a warning (the numbers are still those of the float64 inputs, but a change
     of one ulp in ``t`` or in the moments moves them); see :func:`check_phase`.
+    """
+
+
+class ToleranceWarning(UserWarning):
+    """A requested accuracy that a run could not reach: its result reports the error it estimates.
+
+    Issued by the runs that choose their step from a tolerance (the spin axis' histories, the
+    splitting) when the step they may take runs out before the estimate meets the request.
     """
 
 

@@ -60,6 +60,10 @@ VALID: dict[str, Valid] = {
                 "propagate --model heavy-top --weight 0.5 --center-of-mass 0 0 0.3 --moments 1 1 0.5 "
                 f"--values {STATE} --range 0 1 3 --method splitting --step 0.1 --order 2"
             ),
+            (
+                "propagate --model heavy-top --weight 0.5 --center-of-mass 0 0 0.3 --moments 1 1 0.5 "
+                f"--values {STATE} --range 0 1 3 --method splitting --rtol 1e-6"
+            ),
         ),
         "--output",
     ),
@@ -115,6 +119,7 @@ VALID: dict[str, Valid] = {
             ),
             "obliquity earth --span -1000 1000 --step 100 --precession-rate 500 --output {out}",
             "obliquity saturn --span -100000 100000 --step 10000 --drift-timescale 4e9 --output {out}",
+            "obliquity earth --span -1000 1000 --step 500 --tolerance 0.001 --format json --output {out}",
             (
                 "obliquity mars --ensemble 2 --span -20000 0 --step 10000 --seed 1 --perturbation 1e-7 "
                 "--thresholds 30 --scheduler synchronous --format json --output {out}"

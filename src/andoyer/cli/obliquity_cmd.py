@@ -6,6 +6,7 @@ import argparse
 
 import numpy as np
 
+from andoyer.catalogue.units import ARCSEC
 from andoyer.cli import obliquity_ensemble
 from andoyer.cli.numbers import finite_number, physical
 from andoyer.cli.obliquity_body import add_body_arguments, resolve_body, resonance_fields
@@ -97,6 +98,12 @@ def register(commands: argparse._SubParsersAction) -> None:
         default=0.0,
         help="modern tidal rates times TD, Earth only (default 0: none; 0 <= TD <= 1.2)",
     )
+    parser.add_argument(
+        "--tolerance",
+        type=finite_number,
+        metavar="ARCSEC",
+        help="largest error of the axis wanted, arcsec (default 0.01; the JSON's error_estimate)",
+    )
     parser.add_argument("--format", choices=("json", "csv", "table"), default="table", help="default table")
     add_output_argument(parser)
     add_output_argument(parser, "--plot", "PNG of obliquity and climatic precession")
@@ -143,6 +150,8 @@ def _fields(h) -> dict:
         "climatic_precession": cp,
         "precession_rate": h.precession_rate,
         "resonances": resonance_fields(h.precession_rate),
+        "error_estimate": None if h.error_estimate is None else h.error_estimate / ARCSEC,
+        "integration_step": h.integration_step,
     }
 
 
@@ -270,6 +279,7 @@ def run(args: argparse.Namespace) -> int:
         dynamical_ellipticity=args.dynamical_ellipticity,
         tidal_dissipation=args.tidal_dissipation,
         ellipticity_drift=drift,
+        tolerance=None if args.tolerance is None else args.tolerance * ARCSEC,
         **_costs(args, orbit, stream_csv),
         what=f"an obliquity run of {times.size} output times",
     )

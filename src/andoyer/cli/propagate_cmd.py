@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import sys
 
 import numpy as np
 
@@ -53,6 +54,13 @@ def register(commands: argparse._SubParsersAction) -> None:
     parser.add_argument("--step", type=float, metavar="H", help="splitting step (time units)")
     parser.add_argument("--order", type=int, choices=(2, 4, 6), help="splitting order (default 4)")
     parser.add_argument(
+        "--rtol",
+        type=float,
+        metavar="R",
+        help="splitting: relative error of the momentum wanted, the step chosen from it "
+        "(instead of --step; the estimate is printed on stderr)",
+    )
+    parser.add_argument(
         "--from",
         dest="source",
         choices=tuple(CHARTS),
@@ -92,6 +100,9 @@ def run(args: argparse.Namespace) -> int:
         out = FreeRotation(body).propagate(state.reshape(1, -1), times[:, None])
     else:
         out = propagate(model, state.reshape(1, -1), times[:, None], method=method, **options)
+        if "rtol" in options:
+            print(f"andoyer propagate: splitting step {out.step:.6g}, estimated relative error "
+                  f"{out.error_estimate:.3g} (rtol {options['rtol']:.3g})", file=sys.stderr)
     if target is CHARTS["serret"]:
         # Serret's t0 is a time: referred to the rows' own times with the start (t = 0) as the
         # epoch of the period branch, so the elements stay constant down the table.
@@ -116,13 +127,21 @@ def _method_options(args: argparse.Namespace, method: str) -> dict[str, float]:
         raise CliError(msg)
     if method != "splitting":
         given = [
-            flag for flag, value in (("--step", args.step), ("--order", args.order)) if value is not None
+            flag
+            for flag, value in (("--step", args.step), ("--order", args.order), ("--rtol", args.rtol))
+            if value is not None
         ]
         if given:
             msg = f"expected {', '.join(given)} only with --method splitting, got --method {method}"
             raise CliError(msg)
         return {}
+    if args.rtol is not None:
+        if not (np.isfinite(args.rtol) and args.rtol > 0):
+            msg = f"expected a positive finite --rtol, got {args.rtol!r}"
+            raise CliError(msg)
+        options = {"rtol": args.rtol, "order": args.order or 4}
+        return options if args.step is None else {**options, "step": args.step}
     if args.step is None or not (np.isfinite(args.step) and args.step > 0):
-        msg = f"expected a positive --step for --method splitting, got {args.step!r}"
+        msg = f"expected a positive --step (or an --rtol) for --method splitting, got {args.step!r}"
         raise CliError(msg)
     return {"step": args.step, "order": args.order or 4}

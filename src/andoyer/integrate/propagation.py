@@ -8,7 +8,7 @@ Three integrators, one call:
   dissipative torques included. ``integrator="heyoka"`` uses heyoka's Taylor
   integrator instead (optional dependency) for gravity gradients on Kepler
   orbits, constant-rate precessing frames, heavy tops and linear damping.
-* ``"splitting"`` (options ``step``, required, ``order``, ``t0``): the
+* ``"splitting"`` (options ``step`` or ``rtol``, ``order``, ``t0``): the
   symplectic splitting ``K = T + V + F`` of exact free flow, momentum kicks
   and frame rotations (:func:`~andoyer.integrate.splitting.integrate_splitting`);
   Hamiltonian attitude-only models and precessing frames.
@@ -44,7 +44,7 @@ __all__ = ["METHODS", "propagate"]
 #: The options each method accepts (``step`` is required by ``"splitting"``).
 METHODS: dict[str, tuple[str, ...]] = {
     "reference": ("t0", "rtol", "atol", "integrator"),
-    "splitting": ("step", "order", "t0"),
+    "splitting": ("step", "order", "t0", "rtol"),
     "secular": ("t0", "rtol"),
 }
 
@@ -67,8 +67,10 @@ def propagate(model: Model, state: State, t: ArrayLike, method: str = "reference
         ``t0`` (float, default 0) for every method; ``rtol``, ``atol`` for
         ``"reference"`` (DOP853, defaults 1e-12, 1e-14) and ``integrator``
         (``"dop853"``, default, or ``"heyoka"``: ``rtol`` is then heyoka's
-        tolerance, default machine epsilon, and ``atol`` is not taken); ``step`` (required,
-        > 0) and ``order`` (2, 4 or 6, default 4) for ``"splitting"``;
+        tolerance, default machine epsilon, and ``atol`` is not taken); ``step`` (> 0),
+        ``order`` (2, 4 or 6, default 4) and ``rtol`` for ``"splitting"`` (a step, or an
+        ``rtol`` from which the step is chosen: the result is then a
+        :class:`~andoyer.integrate.splitting.SplittingState` with its ``error_estimate``);
         ``rtol`` (default 1e-12) for ``"secular"``.
 
     Returns
@@ -108,7 +110,7 @@ def propagate(model: Model, state: State, t: ArrayLike, method: str = "reference
     >>> propagate(model, start, 1.0, method="splitting")
     Traceback (most recent call last):
     ...
-    ValueError: expected a step for method='splitting' (e.g. step=0.01), got none
+    ValueError: expected a step for method='splitting' (e.g. step=0.01) or an rtol, got neither
     """
     if method not in METHODS:
         msg = f"expected method 'reference', 'splitting' or 'secular', got {method!r}"
@@ -128,12 +130,12 @@ def propagate(model: Model, state: State, t: ArrayLike, method: str = "reference
         integrator = options.pop("integrator", "dop853")
         return integrate_reference(model, state, t, **options, method=integrator)
     if method == "splitting":
-        if "step" not in options:
-            msg = "expected a step for method='splitting' (e.g. step=0.01), got none"
+        if "step" not in options and "rtol" not in options:
+            msg = "expected a step for method='splitting' (e.g. step=0.01) or an rtol, got neither"
             raise ValueError(msg)
         times = np.append(np.asarray(t, dtype=float).ravel(), float(options.get("t0", 0.0)))
         span = float(np.max(times) - np.min(times)) if np.all(np.isfinite(times)) else 0.0
-        step = options["step"]
+        step = options.get("step")
         if span > 0 and isinstance(step, int | float) and abs(step) > span:
             # The steps would be cut at the output times: the run would not be the one asked for.
             msg = f"expected a step no longer than the span of the times ({span:.6g}), got step={step!r}"

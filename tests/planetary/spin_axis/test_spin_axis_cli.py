@@ -25,8 +25,11 @@ def test_obliquity_json_keys_and_iau_values(capsys):
                  "--precession-rate", "50.3848"]) == 0
     out = json.loads(capsys.readouterr().out)
     assert set(out) == {"t", "obliquity", "precession", "axis", "orbit_normal", "eccentricity",
-                        "climatic_precession", "precession_rate", "resonances"}
+                        "climatic_precession", "precession_rate", "resonances", "error_estimate",
+                        "integration_step"}
     assert out["t"] == [-1000.0, -500.0, 0.0, 500.0, 1000.0]
+    assert 0.0 <= out["error_estimate"] <= 0.01  # arcsec: the default tolerance
+    assert out["integration_step"] <= 500.0
     assert np.shape(out["axis"]) == (5, 3)
     assert np.shape(out["orbit_normal"]) == (5, 3)
     assert out["eccentricity"] is None

@@ -25,6 +25,7 @@ Time enters the kicks at the substep's time, the free flow advancing it.
 from __future__ import annotations
 
 import math
+import warnings
 from collections.abc import Callable
 from typing import Any
 
@@ -32,7 +33,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer import _quaternion as quat
-from andoyer._limits import STEP_SECONDS, check_size, progress
+from andoyer._limits import STEP_SECONDS, ToleranceWarning, caller_stacklevel, check_size, progress
 from andoyer._validation import as_finite
 from andoyer.compositions import splitting_coefficients
 from andoyer.free.step_scalar import NUMBA, free_step
@@ -44,6 +45,8 @@ from andoyer.state import State
 
 __all__ = [
     "COMPOSITIONS",
+    "SMALLEST_RTOL",
+    "SplittingState",
     "exact_free_flow",
     "integrate_splitting",
     "split_step",
@@ -273,13 +276,106 @@ def _count_steps(unique: Array, t0: float, step: float) -> float:
     return steps
 
 
+#: The smallest ``rtol`` taken: the round-off of the momentum over a long run of substeps.
+SMALLEST_RTOL = 1e-13
+#: Halvings of the step tried before an ``rtol`` is given up (with a ToleranceWarning).
+MAX_HALVINGS = 24
+
+
+class SplittingState(State):
+    """The :class:`~andoyer.state.State` of a splitting run chosen from an ``rtol``, with its estimate.
+
+    Attributes
+    ----------
+    error_estimate : float
+        ``max |M_h − M_{h/2}| / |M|`` over the output times and states: the distance between
+        the reference-frame momenta of the run and of one at twice its step
+        (:func:`integrate_splitting`).
+    step : float
+        The step of the run (the largest; the last step to each output time is shorter).
+    order : int
+        Its order.
+    """
+
+    __slots__ = ("error_estimate", "order", "step")
+
+
+def _check_rtol(rtol: float) -> float:
+    try:
+        value = float(rtol)
+    except (TypeError, ValueError):
+        value = np.nan
+    if isinstance(rtol, bool) or not (np.isfinite(value) and value > 0):
+        msg = f"expected a positive finite rtol, got {rtol!r}"
+        raise ValueError(msg)
+    if value < SMALLEST_RTOL:
+        msg = f"expected an rtol of at least {SMALLEST_RTOL:g} (the momentum's round-off), got {rtol!r}"
+        raise ValueError(msg)
+    return value
+
+
+def _first_step(kicks: list[Perturbation], frames: list[Perturbation], span: float) -> float:
+    """A quarter of the shortest period of the perturbers' orbits and the frames, at most ``span / 4``.
+
+    The splitting's error comes from the kicks' variation along the orbits (the free flow is
+    exact), so a step of a quarter orbit is the largest worth trying.
+    """
+    step = span / 4.0
+    for kick in kicks:
+        for mass, _ in kick.point_masses() if kick.tabulable else ():
+            motion = abs(float(getattr(mass.orbit, "mean_motion", 0.0)))
+            if motion > 0:
+                step = min(step, 0.5 * np.pi / motion)
+    for frame in frames:
+        rate = float(np.linalg.norm(np.asarray(frame.frame_rate(np.asarray(0.0)), dtype=float)))
+        if rate > 0:
+            step = min(step, 0.5 * np.pi / rate)
+    return step
+
+
+def _controlled(
+    model: Model, state: State, t: ArrayLike, step: float | None, order: int, t0: float, rtol: float
+) -> SplittingState:
+    """:func:`integrate_splitting` at the step that meets ``rtol``, by step doubling."""
+    rtol = _check_rtol(rtol)
+    kicks, frames = splitting_parts(model)
+    times = np.append(as_finite(t, "t").ravel(), as_finite(t0, "t0"))
+    span = float(np.max(times) - np.min(times))
+    if span == 0:
+        out = integrate_splitting(model, state, t, 1.0, order, t0)
+        return _estimated(out, 0.0, 0.0, order)
+    h = _first_step(kicks, frames, span) if step is None else float(step)
+    coarse = integrate_splitting(model, state, t, h, order, t0).m_reference
+    scale = np.linalg.norm(state.m_reference, axis=-1)
+    error = np.inf
+    for _ in range(MAX_HALVINGS):
+        h *= 0.5
+        out = integrate_splitting(model, state, t, h, order, t0)
+        fine = out.m_reference
+        distance = np.linalg.norm(fine - coarse, axis=-1)
+        error = float(np.max(distance / np.broadcast_to(scale, distance.shape)))
+        if error <= rtol:
+            return _estimated(out, error, h, order)
+        coarse = fine
+    msg = f"the splitting met no rtol of {rtol:.3g} down to a step of {h:.3g}: estimated error {error:.3g}"
+    warnings.warn(msg, ToleranceWarning, stacklevel=caller_stacklevel())
+    return _estimated(out, error, h, order)
+
+
+def _estimated(out: State, error: float, step: float, order: int) -> SplittingState:
+    result = SplittingState.from_unit_quaternion(out.quaternion, out.m_body)
+    result.error_estimate, result.step, result.order = error, step, order
+    return result
+
+
 def integrate_splitting(
     model: Model,
     state: State,
     t: ArrayLike,
-    step: float,
+    step: float | None = None,
     order: int = 4,
     t0: float = 0.0,
+    rtol: float | None = None,
 ) -> State:
     """Propagate ``state`` (at ``t0``) under ``model`` to times ``t`` by symmetric splitting.
 
@@ -297,14 +393,24 @@ def integrate_splitting(
         Body plus attitude-only Hamiltonian models and/or precessing frames.
     state : State, shape (S...)
     t : array_like, shape (T...)
-    step : float
-        Step length (> 0).
+    step : float, optional
+        Step length (> 0). Without ``rtol``, required: the run takes it. With ``rtol``, the
+        first step tried (default: a quarter of the shortest orbital period of the perturbers
+        and of the frames' rotation, at most a quarter of the span).
     order : {2, 4, 6}
     t0 : float
+    rtol : float, optional
+        The relative error wanted in the reference-frame angular momentum ``M`` over the
+        outputs (at least 1e-13). Runs at ``h`` and ``h/2`` are compared and the step
+        halved until ``max |M_h − M_{h/2}| / |M| ≤ rtol``; the fine run is returned as a
+        :class:`SplittingState` whose ``error_estimate`` is that distance (conservative:
+        the fine run's error is below it whenever halving the step at least halves the
+        error). The attitude's spin phase is not in the estimate.
 
     Returns
     -------
     State, shape broadcast(S..., T...)
+        A :class:`SplittingState` with ``rtol``.
 
     Examples
     --------
@@ -315,9 +421,18 @@ def integrate_splitting(
     >>> out = integrate_splitting(model, s, [0.0, 1.0], step=0.05)
     >>> out.shape, out.m_body[1].round(12).tolist()  # upright spinning top: steady
     ((2,), [0.0, 0.0, 5.0])
+    >>> tilted = State.from_quaternion([0.1, 0.0, 0.0, 0.99498743710662], [0.0, 0.0, 5.0])
+    >>> out = integrate_splitting(model, tilted, [0.0, 1.0], rtol=1e-8)
+    >>> bool(out.error_estimate <= 1e-8), out.order
+    (True, 4)
     """
     if not isinstance(model, Model):
         msg = f"expected an andoyer Model, got {type(model).__name__}"
+        raise ValueError(msg)
+    if rtol is not None:
+        return _controlled(model, state, t, step, order, t0, rtol)
+    if step is None:
+        msg = "expected a step or an rtol for method='splitting' (e.g. step=0.01 or rtol=1e-8), got neither"
         raise ValueError(msg)
     if not (np.isfinite(step) and step > 0):
         msg = f"expected a positive finite step, got {step!r}"

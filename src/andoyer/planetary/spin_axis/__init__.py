@@ -33,7 +33,6 @@ from andoyer._validation import as_finite
 from andoyer.planetary.orbits.protocol import OrbitHistory, check_times
 from andoyer.planetary.spin_axis.history import (
     BLOCK_ROWS,
-    DEFAULT_STEP,
     EPSILON_0,
     HISTORY_ROW_BYTES,
     SpinAxisHistory,
@@ -45,6 +44,7 @@ from andoyer.planetary.spin_axis.history import (
     history_blocks,
     mean_pole_j2000,
     output_times,
+    resolve_stepping,
     run_cost,
 )
 from andoyer.planetary.spin_axis.insolation import daily_insolation
@@ -147,8 +147,9 @@ def spin_axis_history(
     tidal_dissipation: float = 0.0,
     ellipticity_drift: float = 0.0,
     axis: ArrayLike | None = None,
-    step: float = DEFAULT_STEP,
-    order: int = 8,
+    step: float | None = None,
+    order: int | None = None,
+    tolerance: float | None = None,
     coupling: Callable[[SpinAxisModel, tuple[float, float]], SpinAxisModel] | None = None,
 ) -> SpinAxisHistory:
     r"""The spin axis of ``body`` along ``orbit`` at ``times`` (Julian years from J2000).
@@ -175,11 +176,20 @@ def spin_axis_history(
         ``Ḣ/H`` per Julian year; ``H`` must stay within ``(0, 1/2)`` over the span.
     axis : array_like, shape (3,), optional
         Spin axis at J2000, J2000 ecliptic frame.
-    step : float
+    step : float, optional
         Largest integration step (years), shortened where the axis would turn by more than
         1/16 of a turn in one (:data:`~andoyer.planetary.spin_axis.history.MAX_TURN_PER_STEP`).
-    order : {2, 4, 6, 8}
-        Order of the composition.
+        Given without a ``tolerance``: the run takes it (no error estimate). Otherwise
+        the first step tried (default 1000 years).
+    order : {2, 4, 6, 8}, optional
+        Order of the composition (default 8).
+    tolerance : float, optional
+        The largest error of the axis wanted over the output times, radians (at least
+        1e-12): the step is halved until two runs agree to it
+        (:func:`~andoyer.planetary.spin_axis.history.controlled_outputs`). Default, when no
+        ``step`` is given: 0.01″
+        (:data:`~andoyer.planetary.spin_axis.history.DEFAULT_TOLERANCE`, far below the
+        model's own error, the forced nutation it averages out).
     coupling : callable, optional
         ``coupling(model, (T0, T1))`` returns the model to integrate in place of the one built
         here (e.g. with ``α(t)`` following a tidal history:
@@ -188,7 +198,8 @@ def spin_axis_history(
     Returns
     -------
     SpinAxisHistory
-        Its ``largest_turn`` says whether the output times sample the precession.
+        Its ``largest_turn`` says whether the output times sample the precession; its
+        ``error_estimate`` (radians), ``integration_step`` and ``order`` what the run took.
 
     Raises
     ------
@@ -216,6 +227,7 @@ def spin_axis_history(
         axis=axis,
         step=step,
         order=order,
+        tolerance=tolerance,
         coupling=coupling,
         row_bytes=HISTORY_ROW_BYTES,
         what="a spin-axis history",
@@ -271,8 +283,9 @@ def spin_axis_blocks(
     tidal_dissipation: float = 0.0,
     ellipticity_drift: float = 0.0,
     axis: ArrayLike | None = None,
-    step: float = DEFAULT_STEP,
-    order: int = 8,
+    step: float | None = None,
+    order: int | None = None,
+    tolerance: float | None = None,
     coupling: Callable[[SpinAxisModel, tuple[float, float]], SpinAxisModel] | None = None,
     rows: int = BLOCK_ROWS,
     row_bytes: float = 0.0,
@@ -291,7 +304,8 @@ def spin_axis_blocks(
     Parameters
     ----------
     orbit, body, times, precession_rate, dynamical_ellipticity : see :func:`spin_axis_history`
-    tidal_dissipation, ellipticity_drift, axis, step, order, coupling : see :func:`spin_axis_history`
+    tidal_dissipation, ellipticity_drift, axis : see :func:`spin_axis_history`
+    step, order, tolerance, coupling : see :func:`spin_axis_history`
     rows : int
         Output times per block.
     row_bytes, row_seconds, fixed_bytes : float
@@ -324,5 +338,6 @@ def spin_axis_blocks(
         axis,
         coupling,
     )
+    step, order, tolerance = resolve_stepping(step, order, tolerance)
     _, step = check_run(orbit, t, what, 1, step, order, row_bytes, row_seconds, fixed_bytes, model)
-    return history_blocks(orbit, model, t, s0, step, order, int(rows))
+    return history_blocks(orbit, model, t, s0, step, order, int(rows), tolerance)
