@@ -74,7 +74,7 @@ from numpy.typing import NDArray
 from andoyer import bodies, catalogue
 from andoyer._limits import STEP_SECONDS, announce, check_size
 from andoyer.body import RigidBody
-from andoyer.catalogue.units import ARCSEC, JULIAN_YEAR
+from andoyer.catalogue.units import ARCSEC, DAY, JULIAN_YEAR
 from andoyer.integrate.output import OUTPUT_BYTES
 from andoyer.integrate.propagation import propagate
 from andoyer.integrate.splitting import splitting_coefficients
@@ -442,7 +442,7 @@ class PrecessionRates:
             "secular_arcsec_per_year": self.secular,
             "integrated_arcsec_per_year": self.integrated,
             "integration_years": self.years,
-            "step_days": None if self.step is None else self.step / 86400.0,
+            "step_days": None if self.step is None else self.step / DAY,
         }
 
 
