@@ -111,6 +111,7 @@ VALID: dict[str, Valid] = {
                 "--tidal-dissipation 0.5 --output {out}"
             ),
             "obliquity earth --span -1000 1000 --step 100 --precession-rate 500 --output {out}",
+            "obliquity earth --span -2000 0 --step 1000 --tides constant-lag --format json --output {out}",
         ),
         "--output",
     ),
@@ -178,6 +179,21 @@ REFUSALS = (
     ("portrait phase", "levels", "portrait phase --body eros --levels 100000 --out {out}"),
     ("portrait sphere", "levels", "portrait sphere --body eros --levels 100000 --out {out}"),
     ("portrait precession", "points", "portrait precession --moments 1 1 1.5 --steps 100000000 --out {out}"),
+)
+
+#: Options that contradict each other, refused before any work: (command, case, argument line).
+CONFLICTS = (
+    ("obliquity", "tides-mars", "obliquity mars --tides ocean --span -2000 0 --step 1000 --output {out}"),
+    (
+        "obliquity",
+        "tides-dissipation",
+        "obliquity earth --tides ocean --tidal-dissipation 0 --span -2000 0 --step 1000 --output {out}",
+    ),
+    (
+        "obliquity",
+        "tides-ellipticity",
+        "obliquity earth --tides ocean --dynamical-ellipticity 0.0033 --span -2e3 0 --step 1e3 --output {out}",
+    ),
 )
 
 INPUT_CSV = "phi,theta,psi,Phi,Theta,Psi\n0.3,0.8,1.2,0.5,0.2,0.9\n1.0,0.41,0.0,0.9,0.0,0.98\n"
@@ -267,6 +283,8 @@ def mutations() -> list:
     # any work with what they would need.
     for name, case, line in REFUSALS:
         add(name, "size", case, tuple(line.split()))
+    for name, case, line in CONFLICTS:
+        add(name, "conflict", case, tuple(line.split()))
     # Positional choices (precession's body) and an unknown sub-command.
     add("precession", "choice", "body", ("precession", "pluto"))
     add("bodies", "choice", "name", ("bodies", "vulcan"))
