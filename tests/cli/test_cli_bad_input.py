@@ -192,7 +192,7 @@ CONFLICTS = (
     (
         "obliquity",
         "tides-ellipticity",
-        "obliquity earth --tides ocean --dynamical-ellipticity 0.0033 --span -2e3 0 --step 1e3 --output {out}",
+        "obliquity earth --tides ocean --dynamical-ellipticity 0.003 --span -2e3 0 --step 1e3 --output {out}",
     ),
 )
 
