@@ -12,8 +12,9 @@ For each file given, the script integrates the body's axis along the ``nbody`` o
 the settings given; ``--orbit secular`` for the secular model) on the file's 1-kyr grid within
 ``--span`` and prints the largest differences in obliquity, ``e`` and ``e sin ϖ`` over
 |t| ≤ 20 kyr, 250 kyr, 1 Myr and the span, the values at J2000, the Mars obliquity range, and
-(``--fit-rate``) the precession rate that best fits La2004's obliquity over 250 kyr. ``--vondrak`` adds the Earth's obliquity against the
-``vondrak`` source and the VCW 2011 equator (``erfa.ltpequ``/``ltpecl``) over ±200 kyr;
+(``--fit-rate``) the precession rate that best fits La2004's obliquity over 250 kyr.
+``--vondrak`` adds the Earth's obliquity against the ``vondrak`` source and the VCW 2011
+equator (``erfa.ltpequ``/``ltpecl``) over ±200 kyr;
 ``--secular`` the ``secular`` source against ``nbody``; ``--reference-cache DIR`` a second
 ``nbody`` run (its cache folder, e.g. one without GR or with half the step) against this one.
 

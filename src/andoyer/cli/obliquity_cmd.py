@@ -158,7 +158,7 @@ TABLE_BYTES_PER_BYTE = 48
 PLOT_POINT_BYTES = 200
 
 
-def _costs(args: argparse.Namespace, orbit, stream_csv: bool, extra_row_bytes: float = 0.0) -> dict:
+def _costs(args: argparse.Namespace, orbit, stream_csv: bool, tides=None) -> dict:  # type: ignore[no-untyped-def]
     """What the command adds to the integration's cost (:func:`~andoyer.planetary.spin_axis.check_run`)."""
     from andoyer.cli.output import BLOCK_ROWS, FORMAT_SECONDS
     from andoyer.planetary.spin_axis.history import HISTORY_ROW_BYTES
@@ -171,13 +171,14 @@ def _costs(args: argparse.Namespace, orbit, stream_csv: bool, extra_row_bytes: f
         row_bytes, fixed = HISTORY_ROW_BYTES + 16.0, BLOCK_ROWS * 40 * width
     if args.plot is not None:
         row_bytes += PLOT_POINT_BYTES
+    extra_bytes, extra_seconds = (0.0, 0.0) if tides is None else (tides.row_bytes, tides.row_seconds)
     if stream_csv:  # the tidal columns of a block at a time
-        fixed += BLOCK_ROWS * extra_row_bytes
+        fixed += BLOCK_ROWS * extra_bytes
     else:
-        row_bytes += extra_row_bytes
+        row_bytes += extra_bytes
     return {
         "row_bytes": row_bytes,
-        "row_seconds": width * FORMAT_SECONDS * passes,
+        "row_seconds": width * FORMAT_SECONDS * passes + extra_seconds,
         "fixed_bytes": fixed,
     }
 
@@ -262,7 +263,7 @@ def run(args: argparse.Namespace) -> int:
         dynamical_ellipticity=args.dynamical_ellipticity,
         tidal_dissipation=tides.tidal_dissipation,
         coupling=tides.coupling,
-        **_costs(args, orbit, stream_csv, tides.row_bytes),
+        **_costs(args, orbit, stream_csv, tides),
         what=f"an obliquity run of {times.size} output times",
     )
     first = next(blocks)  # the integration, before anything is written

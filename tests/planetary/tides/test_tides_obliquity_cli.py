@@ -185,3 +185,14 @@ def test_obliquity_default_dissipation_is_closer_to_la2004_over_5_myr(tmp_path):
     assert rms["default"] < 0.7 * rms["none"]
     assert rms["default"] < 0.2
     assert abs(error["default"][0]) < 0.3 < abs(error["none"][0])  # 5 Myr ago
+
+
+@pytest.mark.slow
+def test_tidal_history_more_output_times_than_a_million_steps():
+    """Every output time ends a step: 1.2 million of them were refused ("status 3") before the step
+    budget counted them; the history at every thousandth time is the one integrated to those alone."""
+    t = np.linspace(-1.2e8, 0.0, 1_200_001)
+    dense = tidal_history(t, "ocean")
+    sparse = tidal_history(t[::100_000], "ocean")
+    np.testing.assert_allclose(dense.lunar_distance[::100_000], sparse.lunar_distance, rtol=1e-12, atol=0)
+    np.testing.assert_allclose(dense.day_length[::100_000], sparse.day_length, rtol=1e-12, atol=0)
