@@ -9,7 +9,8 @@ distributed at https://vo.imcce.fr/insola/earth/online/ (``INSOLN.LA2004.BTL.ASC
 ``%`` comment lines are read.
 
 For each file given, the script integrates the body's axis along the ``nbody`` orbit (with
-the settings given; ``--orbit secular`` for the secular model) on the file's 1-kyr grid within
+the settings given; ``--orbit secular`` for the secular model; for the Earth ``--earth-td``
+or ``--earth-tides MODEL``) on the file's 1-kyr grid within
 ``--span`` and prints the largest differences in obliquity, ``e`` and ``e sin ϖ`` over
 |t| ≤ 20 kyr, 250 kyr, 1 Myr and the span, the values at J2000, the Mars obliquity range, and
 (``--fit-rate``) the precession rate that best fits La2004's obliquity over 250 kyr.
@@ -41,6 +42,7 @@ sys.path.insert(0, str(ROOT / "src"))
 
 from andoyer.planetary.orbits import NBodyOrbit, SecularOrbit, VondrakEcliptic  # noqa: E402
 from andoyer.planetary.spin_axis import DEFAULT_PRECESSION_RATE, spin_axis_history  # noqa: E402
+from andoyer.planetary.tides import tidal_spin_axis_history  # noqa: E402
 
 WINDOWS = (20000.0, 250000.0, 1.0e6)
 
@@ -91,7 +93,11 @@ def compare(body: str, paths: list[str], args: argparse.Namespace, rate: float, 
     lo, hi = args.span
     data = data[(data[:, 0] >= lo) & (data[:, 0] <= hi)]
     t = data[:, 0]
-    h = spin_axis_history(compared_orbit(body, args), body, t, precession_rate=rate, tidal_dissipation=td)
+    orbit = compared_orbit(body, args)
+    if body == "earth" and args.earth_tides:  # α(t) from the Earth–Moon tidal history instead of T_d
+        h = tidal_spin_axis_history(orbit, body, t, args.earth_tides, precession_rate=rate)
+    else:
+        h = spin_axis_history(orbit, body, t, precession_rate=rate, tidal_dissipation=td)
     obl = np.degrees(h.obliquity)
     ref_obl = np.degrees(data[:, 2])
     cp, ref_cp = h.climatic_precession, data[:, 1] * np.sin(data[:, 3])
@@ -101,6 +107,7 @@ def compare(body: str, paths: list[str], args: argparse.Namespace, rate: float, 
         "precession_rate": rate,
         "tidal_dissipation": td,
         "orbit": args.orbit,
+        "tides": args.earth_tides if body == "earth" else None,
         "gr": not args.no_gr,
         "step_days": args.step_days,
         "at J2000": {
@@ -201,6 +208,7 @@ def main(argv: list[str] | None = None) -> None:
     parser.add_argument("--mars-rate", type=float, default=DEFAULT_PRECESSION_RATE["mars"], help="″/yr")
     parser.add_argument("--earth-rate", type=float, default=DEFAULT_PRECESSION_RATE["earth"], help="″/yr")
     parser.add_argument("--earth-td", type=float, default=0.0, help="tidal dissipation T_d (Earth)")
+    parser.add_argument("--earth-tides", choices=("ocean", "constant-lag"), help="Earth: tides, not T_d")
     parser.add_argument("--orbit", choices=("nbody", "secular"), default="nbody", help="orbit against La2004")
     parser.add_argument("--step-days", type=float, default=4.0)
     parser.add_argument("--no-gr", action="store_true", help="leave out general relativity")
