@@ -57,6 +57,15 @@ def test_obliquity_tides_json_is_tidal_spin_axis_history(model, tmp_path):
     assert fields["lunar_distance"][0] == pytest.approx(384399 - 0.0383e-3 * 200000, abs=0.2)
 
 
+def test_obliquity_tides_precession_rate_calibrates_alpha_at_j2000(tmp_path):
+    argv = ["--tides", "ocean", "--precession-rate", "50.3", "--span", "-100000", "0", "--step", "5000"]
+    fields = _json(argv, tmp_path)
+    assert fields["precession_rate"] == pytest.approx(50.3, rel=1e-12)
+    t = output_times(-100000.0, 0.0, 5000.0)
+    h = tidal_spin_axis_history(VondrakEcliptic(), "earth", t, "ocean", precession_rate=50.3)
+    np.testing.assert_allclose(fields["precession"], np.degrees(h.precession), rtol=1e-15, atol=0)
+
+
 def test_obliquity_tides_csv_and_table_carry_the_tidal_columns(tmp_path):
     argv = ["obliquity", "earth", "--tides", "ocean", "--span", "-20000", "0", "--step", "10000"]
     fields = _json(argv[2:], tmp_path)
