@@ -91,7 +91,15 @@ SLOW_CASES = {
     "obliquity-laplace-lagrange-csv": (  # streamed: the memory of the output times only (an unbounded orbit)
         "obliquity earth --orbit laplace-lagrange --span -1000 0 --step 100 --format csv --output w.csv",
         "obliquity earth --orbit laplace-lagrange --span -1e8 0 --step 500 --format csv --output big.csv",
-        "obliquity earth --orbit laplace-lagrange --span -4.9e9 0 --step 500 --format csv --output bigger.csv",
+        (
+            "obliquity earth --orbit laplace-lagrange --span -4.9e9 0 --step 500 --format csv "
+            "--output bigger.csv"
+        ),
+    ),
+    "obliquity-tides-json": (  # the tidal history's columns (obliquity --tides), a million rows
+        "obliquity earth --tides ocean --span -1000 0 --step 100 --format json --output w.json",
+        "obliquity earth --tides ocean --span -20000 0 --step 0.02 --format json --output big.json",
+        "obliquity earth --tides ocean --span -190000 0 --step 0.02 --format json --output bigger.json",
     ),
     "nutation-json-plot": (
         "nutation earth --span 0 1 --step 0.5 --format json --output w.json --plot w.png",
