@@ -92,8 +92,8 @@ SLOW_CASES = {
         "obliquity earth --orbit laplace-lagrange --span -1000 0 --step 100 --format csv --output w.csv",
         "obliquity earth --orbit laplace-lagrange --span -1e8 0 --step 500 --format csv --output big.csv",
         (
-            "obliquity earth --orbit laplace-lagrange --span -4.9e9 0 --step 500 --format csv "
-            "--output bigger.csv"
+            "obliquity earth --orbit laplace-lagrange --span -4.9e9 0 --step 500 "
+            "--format csv --output bigger.csv"
         ),
     ),
     "obliquity-tides-json": (  # the tidal history's columns (obliquity --tides), a million rows

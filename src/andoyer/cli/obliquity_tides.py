@@ -153,8 +153,8 @@ def obliquity_tides(args: argparse.Namespace) -> ObliquityTides:
     Raises
     ------
     CliError
-        ``--tides`` for another body than the Earth, or with ``--tidal-dissipation`` or
-        ``--dynamical-ellipticity``.
+        ``--tides`` for another body than the Earth, or with ``--tidal-dissipation``,
+        ``--dynamical-ellipticity`` or ``--ensemble``.
 
     Examples
     --------
@@ -169,6 +169,9 @@ def obliquity_tides(args: argparse.Namespace) -> ObliquityTides:
     """
     body = str(args.body)
     given = args.tidal_dissipation
+    if args.tides is not None and getattr(args, "ensemble", None) is not None:
+        msg = f"expected no --tides with --ensemble (its members have no tides), got --tides {args.tides}"
+        raise CliError(msg)
     if args.tides is None:
         default = DEFAULT_TIDAL_DISSIPATION.get(body, 0.0)
         return ObliquityTides(float(default if given is None else given))

@@ -131,6 +131,7 @@ def test_obliquity_tides_precession_drift_follows_the_present_rates(tmp_path):
         (["earth", "--tides", "ocean", "--tidal-dissipation", "1"], "(the tidal model sets the dissipation)"),
         (["earth", "--tides", "constant-lag", "--dynamical-ellipticity", "0.0033"],
          "expected no --dynamical-ellipticity with --tides"),
+        (["earth", "--tides", "ocean", "--ensemble", "2"], "expected no --tides with --ensemble"),
     ],
 )
 def test_obliquity_tides_refusals_are_one_line(argv, said, tmp_path, capsys):
