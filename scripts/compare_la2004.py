@@ -48,20 +48,16 @@ WINDOWS = (20000.0, 250000.0, 1.0e6)
 
 
 def read_la2004(paths: list[str]) -> np.ndarray:
-    """Rows ``(t [yr], e, obliquity [rad], ϖ [rad])`` of La2004 files, merged, sorted, unique in t."""
-    rows = []
-    for path in paths:
-        for raw in Path(path).read_text().splitlines():
-            line = raw.strip()
-            if not line or line.startswith(("%", "#")):
-                continue
-            values = [float(v.replace("D", "E").replace("d", "e")) for v in line.split()[:4]]
-            if len(values) != 4:
-                msg = f"expected 4 columns (t, e, obliquity, varpi) in {path}, got {line!r}"
-                raise ValueError(msg)
-            rows.append(values)
-    data = np.array(rows)
-    data[:, 0] *= 1000.0
+    """Rows ``(t [yr], e, obliquity [rad], ϖ [rad])`` of La2004 files, merged, sorted, unique in t.
+
+    Each file is read by the library's checked reader of the format's columns
+    (:mod:`andoyer.planetary.orbits.imcce`: Fortran exponents, comments, a damaged line named).
+    """
+    from andoyer.planetary.orbits.imcce import KYR, LA2004_COLUMNS
+    from andoyer.planetary.orbits.numeric_text import read_table
+
+    data = np.concatenate([read_table(path, LA2004_COLUMNS, min_rows=1).values for path in paths])
+    data[:, 0] *= KYR
     _, keep = np.unique(data[:, 0], return_index=True)
     return data[keep]
 

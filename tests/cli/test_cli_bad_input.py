@@ -126,6 +126,14 @@ VALID: dict[str, Valid] = {
         ),
         "--output",
     ),
+    "orbit": Valid(
+        (
+            "orbit laplace-lagrange --span -1000 0 --step 500 --format json --output {out}",
+            "orbit secular --planets mars earth --span 0 10000 --step 5000 --format csv --output {out}",
+            "orbit vondrak --span -1000 1000 --step 1000 --format table",
+        ),
+        "--output",
+    ),
     "brackets": Valid(("brackets --algebra so3 --format json --output {out}",), "--output"),
     "series sam": Valid(("series sam --order 2 --format tex --output {out}",), "--output"),
     "portrait phase": Valid(
@@ -195,6 +203,7 @@ ENSEMBLE_BAD = (
 REFUSALS = (
     ("obliquity", "steps", "obliquity earth --orbit secular --span -1e12 0 --step 1e10 --output {out}"),
     ("obliquity", "rows", "obliquity earth --span -190000 0 --step 0.0001 --format table --output {out}"),
+    ("orbit", "rows", "orbit laplace-lagrange --span -1e9 0 --step 1 --output {out}"),
     ("nutation", "time", "nutation earth --span 0 200000 --step 1000 --output {out}"),
     ("precession", "memory", "precession earth --integrate 1e9 --output {out}"),
     ("portrait cassini", "levels", "portrait cassini --levels 100000000 --out {out}"),

@@ -99,7 +99,10 @@ def test_cli_propagate_mars_solar_secular_rate(rows):
         "--range", "0", repr(100 * JULIAN_YEAR), "3", "--to", "andoyer",
     )  # fmt: skip
     C, AB = 1.0, 0.9942917 + 0.9949813
-    gm, a, e = 1.3271244e20, 1.52368 * 1.495978707e11, 0.0934
+    # the Sun's mean orbit about Mars (andoyer.perturbations.solar_system): DE440's GMS and GM4 (m³/s²),
+    # the Mars Fact Sheet's sidereal period 686.980 d with Kepler's a, Standish's e = 0.0933941
+    gm, gm_mars, period = 1.32712440041279419e20, 4.2828375816e13, 686.980 * 86400.0
+    a, e = ((gm + gm_mars) * (period / (2 * np.pi)) ** 2) ** (1 / 3), 0.0933941
     rate = -1.5 * gm / (a**3 * (1 - e * e) ** 1.5 * G) * (C - AB / 2) / C * np.cos(eps)
     rate *= (3 * np.cos(0.01) ** 2 - 1) / 2
     assert table[:, 4] == pytest.approx(1.0 + rate * table[:, 0], abs=1e-10)

@@ -129,6 +129,7 @@ class Body:
     j0: Q = None
     rotation_period: Q = None
     rotation_rate: Q = None
+    spin_rate: Q = None
     prime_meridian: Q = None
     pole_ra: Q = None
     pole_ra_rate: Q = None

@@ -75,6 +75,10 @@ COMMANDS: dict[str, tuple[str, str]] = {
         "andoyer.cli.obliquity_cmd",
         "obliquity, general and climatic precession of the Earth or Mars over 10^3-10^7 years",
     ),
+    "orbit": (
+        "andoyer.cli.orbit_cmd",
+        "the planets' elements from an orbit source (N-body, secular, ...) or a published solution file",
+    ),
     "tides": (
         "andoyer.cli.tides_cmd",
         "the Earth-Moon tidal history: lunar distance, day length, precession constant, obliquity (Gyr)",

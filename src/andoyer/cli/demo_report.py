@@ -24,6 +24,7 @@ import numpy as np
 from andoyer import bodies
 from andoyer._files import new_dir_mode
 from andoyer.body import RigidBody
+from andoyer.catalogue.units import DAY
 from andoyer.cli.chart_table import CHARTS
 from andoyer.cli.output import CliError, atomic_output, output_target
 from andoyer.free_rotation import FreeRotation
@@ -264,7 +265,7 @@ def section_precession(ctx: DemoContext) -> str:
                 [
                     ["secular (averaged) model", f"{rates.secular:.4f}"],
                     [
-                        f"splitting integration, {rates.years:.3g} yr, step {rates.step / 86400:.3g} d",
+                        f"splitting integration, {rates.years:.3g} yr, step {rates.step / DAY:.3g} d",
                         f"{rates.integrated:.4f}",
                     ],
                 ],

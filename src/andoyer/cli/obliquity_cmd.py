@@ -45,6 +45,8 @@ DEFAULT_STEP = 1000.0
 
 def register(commands: argparse._SubParsersAction) -> None:
     """Add the sub-command to the parser."""
+    from andoyer.planetary.orbits.factory import SOLUTION_FORMATS
+
     parser = commands.add_parser(
         "obliquity",
         epilog=EXAMPLES,
@@ -57,6 +59,11 @@ def register(commands: argparse._SubParsersAction) -> None:
         "--orbit",
         metavar="SOURCE",
         help="vondrak|nbody|secular|laplace-lagrange|PATH (default: earth vondrak, mars nbody)",
+    )
+    parser.add_argument(
+        "--orbit-format",
+        choices=SOLUTION_FORMATS,
+        help="the format of an --orbit PATH (default: recognised from its name or columns; docs/orbits.md)",
     )
     parser.add_argument(
         "--span",
@@ -103,7 +110,7 @@ def register(commands: argparse._SubParsersAction) -> None:
     parser.set_defaults(run=run)
 
 
-def orbit_source(name: str, body: str):
+def orbit_source(name: str, body: str, orbit_format: str | None = None):
     """The orbit history named on the command line (:func:`andoyer.planetary.orbits.orbit_history`).
 
     Parameters
@@ -111,6 +118,8 @@ def orbit_source(name: str, body: str):
     name : str
         ``vondrak``, ``nbody``, ``secular`` or a table path.
     body : str
+    orbit_format : str, optional
+        The format of a file (:data:`andoyer.planetary.orbits.SOLUTION_FORMATS`).
 
     Returns
     -------
@@ -123,7 +132,7 @@ def orbit_source(name: str, body: str):
     """
     from andoyer.planetary.orbits import orbit_history
 
-    return orbit_history(name, body)
+    return orbit_history(name, body, orbit_format)
 
 
 def _fields(h) -> dict:
@@ -258,7 +267,7 @@ def run(args: argparse.Namespace) -> int:
         raise CliError(msg)
     source = args.orbit or DEFAULT_ORBIT[args.body]
     _check_table(source)
-    orbit = orbit_source(source, args.body)
+    orbit = orbit_source(source, args.body, args.orbit_format)
     _check_span(orbit, source, args.body, t0, t1)
     times = output_times(t0, t1, args.step)
     stream_csv = args.format == "csv" and args.plot is None

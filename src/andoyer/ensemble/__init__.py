@@ -11,6 +11,9 @@ and recomputes what does not match) or to NetCDF (assembled atomically at the en
 runs on a ``distributed.LocalCluster`` by default, or on any Dask scheduler given by address.
 See ``docs/ensembles.md``.
 
+:func:`run_nbody_ensemble` integrates N-body members from perturbed initial conditions (one per
+Dask task, in the N-body cache; :mod:`andoyer.ensemble.nbody`).
+
 Requires the ``ensemble`` extra (dask[distributed], xarray, zarr, google-crc32c).
 
 Examples
@@ -26,6 +29,7 @@ Examples
 """
 
 from andoyer.ensemble.layout import OUTPUTS, EnsembleSpec
+from andoyer.ensemble.nbody import DEFAULT_DELTA, nbody_member, perturbed_state, run_nbody_ensemble
 from andoyer.ensemble.obliquity import MemberPropagator, MemberSampler, obliquity_ensemble
 from andoyer.ensemble.propagators import FreePropagator, Propagator
 from andoyer.ensemble.runner import local_client, run_ensemble
@@ -41,6 +45,7 @@ from andoyer.ensemble.spin_axis import SpinAxisPropagator, SpinParameterSampler
 from andoyer.ensemble.store import DamagedChunkWarning, completed_chunks
 
 __all__ = [
+    "DEFAULT_DELTA",
     "OUTPUTS",
     "AndoyerSampler",
     "DamagedChunkWarning",
@@ -58,6 +63,9 @@ __all__ = [
     "chunk_rng",
     "completed_chunks",
     "local_client",
+    "nbody_member",
     "obliquity_ensemble",
+    "perturbed_state",
     "run_ensemble",
+    "run_nbody_ensemble",
 ]

@@ -61,13 +61,14 @@ class SecularGravityGradient:
     Examples
     --------
     >>> from andoyer import bodies
+    >>> from andoyer.catalogue.units import ARCSEC
     >>> from andoyer.perturbations.solar_system import DAY, JULIAN_YEAR, OBLIQUITY, mean_perturbers
     >>> earth = bodies.get("earth")
     >>> sun = mean_perturbers("earth")[0]
     >>> model = SecularGravityGradient(earth, sun)
     >>> G = earth.C * 2 * np.pi / 86164.0905
     >>> rate = model.node_rate(G, G, G * np.cos(OBLIQUITY["earth"]))  # rad/s
-    >>> round(float(-rate * JULIAN_YEAR * 206264.806), 2)  # the Sun's share, arcsec per year
+    >>> round(float(-rate * JULIAN_YEAR / ARCSEC), 2)  # the Sun's share, arcsec per year
     15.97
     """
 

@@ -46,9 +46,10 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer._validation import as_finite
+from andoyer.catalogue.units import ARCSEC, AU, DEGREE, JULIAN_YEAR
 from andoyer.perturbations.gravity import PointMass
 from andoyer.perturbations.orbits import TabulatedOrbit, solve_kepler
-from andoyer.perturbations.solar_system import AU, GM_MOON, GM_SUN, JULIAN_YEAR
+from andoyer.perturbations.solar_system import GM_MOON, GM_SUN
 
 __all__ = [
     "GENERAL_PRECESSION",
@@ -64,9 +65,6 @@ __all__ = [
 
 Array = NDArray[np.float64]
 
-_ARCSEC = np.pi / 648000.0
-_DEGREE = np.pi / 180.0
-
 #: IERS Conventions 2010, eq. 5.43: ``(l, l′, F, D, Ω)`` in arcseconds, powers 0..4 of Julian centuries TT.
 _DELAUNAY = np.array(
     [
@@ -79,7 +77,7 @@ _DELAUNAY = np.array(
 )
 
 #: IAU 2006 general precession in longitude at J2000, 5028.796195″ per Julian century (Capitaine et al. 2003).
-GENERAL_PRECESSION = 5028.796195 * _ARCSEC / 100.0
+GENERAL_PRECESSION = 5028.796195 * ARCSEC / 100.0
 
 # Meeus (1998) Table 47.A: multipliers of (D, l′, l, F); Σl in 1e-6 degree, Σr in metres.
 _LR = np.array(
@@ -215,7 +213,7 @@ def delaunay_arguments(t: ArrayLike) -> Array:
     """
     T = _centuries(t)[..., None]
     powers = T ** np.arange(5)
-    return np.sum(_DELAUNAY * powers[..., None, :], axis=-1) * _ARCSEC
+    return np.sum(_DELAUNAY * powers[..., None, :], axis=-1) * ARCSEC
 
 
 def delaunay_rates(t: ArrayLike = 0.0) -> Array:
@@ -229,7 +227,7 @@ def delaunay_rates(t: ArrayLike = 0.0) -> Array:
     """
     T = _centuries(t)[..., None]
     powers = np.arange(1, 5) * T ** np.arange(4)
-    return np.sum(_DELAUNAY[:, 1:] * powers[..., None, :], axis=-1) * _ARCSEC / 100.0
+    return np.sum(_DELAUNAY[:, 1:] * powers[..., None, :], axis=-1) * ARCSEC / 100.0
 
 
 def _series_angles(args: Array, table: Array) -> Array:
@@ -274,18 +272,18 @@ def moon_ecliptic(
     eccentric = E ** np.abs(_LR[:, 1])
     L = a[..., 2] + a[..., 4]
     # Meeus' additive terms: Venus (A1), Jupiter (A2), the Earth's flattening (in latitude, sin L).
-    A1 = (119.75 + 131.849 * T) * _DEGREE
-    A2 = (53.09 + 479264.290 * T) * _DEGREE
-    A3 = (313.45 + 481266.484 * T) * _DEGREE
+    A1 = (119.75 + 131.849 * T) * DEGREE
+    A2 = (53.09 + 479264.290 * T) * DEGREE
+    A3 = (313.45 + 481266.484 * T) * DEGREE
     extra_lon = 1962 * np.sin(L - a[..., 2])
     extra_lat = -2235 * np.sin(L) + 127 * np.sin(L - a[..., 0]) - 115 * np.sin(L + a[..., 0])
     if planetary:
         extra_lon = extra_lon + 3958 * np.sin(A1) + 318 * np.sin(A2)
         extra_lat = extra_lat + 382 * np.sin(A3) + 175 * np.sin(A1 - a[..., 2]) + 175 * np.sin(A1 + a[..., 2])
-    lon = L + (np.sum(_LR[:, 4] * eccentric * np.sin(lr), axis=-1) + extra_lon) * 1e-6 * _DEGREE
+    lon = L + (np.sum(_LR[:, 4] * eccentric * np.sin(lr), axis=-1) + extra_lon) * 1e-6 * DEGREE
     distance = _R0 + np.sum(_LR[:, 5] * eccentric * np.cos(lr), axis=-1)
     b = _series_angles(a, _B)
-    lat = (np.sum(_B[:, 4] * E ** np.abs(_B[:, 1]) * np.sin(b), axis=-1) + extra_lat) * 1e-6 * _DEGREE
+    lat = (np.sum(_B[:, 4] * E ** np.abs(_B[:, 1]) * np.sin(b), axis=-1) + extra_lat) * 1e-6 * DEGREE
     return lon, lat, distance
 
 

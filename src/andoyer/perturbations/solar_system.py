@@ -1,16 +1,24 @@
-"""Mean orbits of the Sun and the Moon seen from the Earth and Mars, for the gravity-gradient models.
+r"""Mean orbits of the Sun and the Moon seen from the Earth and Mars, for the gravity-gradient models.
 
 Reference frame: the mean orbital plane of the torqued planet (its ecliptic of
 J2000), ``s3`` its pole, ``s1`` towards the ascending node of the Moon's orbit
-at ``t = 0``. Times are seconds. Sources:
+at ``t = 0``. Times are seconds. Every number is the catalogue's
+(:func:`andoyer.catalogue.get`, where each carries its source):
 
-* gravitational parameters: IAU 2015 Resolution B3 nominal ``GM_sun``
-  (1.3271244e20 m³ s⁻²); DE440 ``GM_moon`` = 4.9028e12 m³ s⁻².
-* Earth's orbit: a = 1 au = 1.495978707e11 m (IAU 2012), e = 0.0167086, sidereal year 365.256363004 d.
-* Mars' orbit: a = 1.52368 au, e = 0.0934, sidereal period 686.980 d (JPL mean elements, J2000).
-* the Moon's mean orbit: a = 384399 km, e = 0.0549, inclination 5.145° to the ecliptic,
-  sidereal month 27.321661 d, nodal regression period 6798.38 d (18.61 yr).
-* obliquities: Earth 23.44° (IAU 2006, 84381.406″), Mars 25.19° (Mars Fact Sheet, NASA GSFC).
+* gravitational parameters: the Sun's ``GM`` (DE440), the Moon's (Williams et al. 2014),
+  the Earth's (IERS 2010) and the Mars system's (DE440);
+* the Sun's orbit about the planet: the planet's eccentricity (Standish's J2000 mean elements)
+  and sidereal period ``P`` (the Earth's sidereal year, IERS; Mars', the NASA Mars Fact Sheet),
+  with the semi-major axis of Kepler's third law for that period,
+
+  .. math:: a = \left(\frac{G(M_\odot + m)}{n^2}\right)^{1/3}, \qquad n = \frac{2\pi}{P},
+
+  so that the torque ``∝ GM☉/a³`` and the mean motion belong to one ellipse (``m``: the
+  Earth–Moon system's or the Mars system's mass; ``a`` = 1.00000004 au for the Earth,
+  1.523692 au for Mars);
+* the Moon's mean orbit (the Astronomical Almanac's): ``a``, ``e``, inclination to the
+  ecliptic, sidereal month and nodal regression period;
+* obliquities: the Earth's IAU 2006 ``ε₀`` = 84381.406″, Mars' 25.19° (Mars Fact Sheet).
 
 Examples
 --------
@@ -18,24 +26,35 @@ Examples
 ['Sun', 'Moon']
 >>> round(float(np.degrees(OBLIQUITY["mars"])), 2)
 25.19
+>>> round(mean_perturbers("mars")[0].orbit.semi_major_axis / AU, 6)
+1.523692
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from andoyer import catalogue
+from andoyer.catalogue.units import AU, DAY, JULIAN_YEAR
 from andoyer.perturbations.gravity import PointMass
 from andoyer.perturbations.orbits import KeplerOrbit
 
-__all__ = ["DAY", "JULIAN_YEAR", "OBLIQUITY", "mean_perturbers"]
+__all__ = ["AU", "DAY", "GM_MOON", "GM_SUN", "JULIAN_YEAR", "OBLIQUITY", "mean_perturbers"]
 
-DAY = 86400.0
-JULIAN_YEAR = 365.25 * DAY
-AU = 1.495978707e11
-GM_SUN = 1.3271244e20
-GM_MOON = 4.9028e12
+_SUN, _EARTH, _MOON, _MARS = (catalogue.get(name) for name in ("sun", "earth", "moon", "mars"))
 
-OBLIQUITY = {"earth": np.radians(84381.406 / 3600.0), "mars": np.radians(25.19)}
+#: ``GM`` of the Sun and of the Moon, m³/s² (the catalogue's).
+GM_SUN = _SUN.gm.si()
+GM_MOON = _MOON.gm.si()
+
+OBLIQUITY = {"earth": _EARTH.obliquity.si(), "mars": _MARS.obliquity.si()}
+
+
+def _sun_seen_from(planet: catalogue.Body, system_gm: float) -> KeplerOrbit:
+    """The Sun's mean orbit about ``planet``: its eccentricity and period, Kepler's ``a``."""
+    n = 2 * np.pi / planet.require("orbital_period", "the Sun's mean orbit").si()
+    a = ((GM_SUN + system_gm) / n**2) ** (1.0 / 3.0)
+    return KeplerOrbit(a, planet.require("eccentricity", "the Sun's mean orbit").value, 0.0, 0.0, 0.0, 0.0, n)
 
 
 def mean_perturbers(planet: str) -> list[PointMass]:
@@ -51,20 +70,19 @@ def mean_perturbers(planet: str) -> list[PointMass]:
     """
     key = str(planet).strip().lower()
     if key == "earth":
-        sun = KeplerOrbit(AU, 0.0167086, 0.0, 0.0, 0.0, 0.0, 2 * np.pi / (365.256363004 * DAY))
+        sun = _sun_seen_from(_EARTH, _EARTH.gm.si() + GM_MOON)
         moon = KeplerOrbit(
-            384399e3,
-            0.0549,
-            np.radians(5.145),
+            _MOON.semi_major_axis.si(),
+            _MOON.eccentricity.value,
+            _MOON.inclination.si(),
             0.0,
             0.0,
             0.0,
-            2 * np.pi / (27.321661 * DAY),
-            node_rate=-2 * np.pi / (6798.38 * DAY),
+            2 * np.pi / _MOON.orbital_period.si(),
+            node_rate=-2 * np.pi / _MOON.node_period.si(),
         )
         return [PointMass(GM_SUN, sun, "Sun"), PointMass(GM_MOON, moon, "Moon")]
     if key == "mars":
-        sun = KeplerOrbit(1.52368 * AU, 0.0934, 0.0, 0.0, 0.0, 0.0, 2 * np.pi / (686.980 * DAY))
-        return [PointMass(GM_SUN, sun, "Sun")]
+        return [PointMass(GM_SUN, _sun_seen_from(_MARS, _MARS.gm.si()), "Sun")]
     msg = f"expected 'earth' or 'mars', got {planet!r}"
     raise ValueError(msg)

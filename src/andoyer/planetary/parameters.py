@@ -28,6 +28,7 @@ ellipticity_drift       1/yr        finite                       ``H (1 + Ḣ_r 
 obliquity               rad         0 ≤ ε₀ < π/2                 ``ψ̇ = α cos ε₀`` sets ``α``: it needs
                                                                  ``cos ε₀ > 0``
 eccentricity                        0 ≤ e < 1                    a bound orbit
+semi_major_axis         au          a > 0                        a bound orbit's size (solution files)
 inclination             rad         0 ≤ i ≤ π                    the angle between two unit normals
 laplace_inclination     rad         0 < i < π/2                  Colombo's top: the orbit's inclination to
                                                                  its Laplace plane (Peale 1969)
@@ -184,6 +185,9 @@ PARAMETERS: dict[str, Parameter] = {
         "the precession rate alpha cos(eps0) sets alpha: it needs cos(eps0) > 0",
     ),
     "eccentricity": Parameter("eccentricity", "e", 0.0, 1.0, True, False, "", "a bound orbit"),
+    "semi_major_axis": Parameter(
+        "semi-major axis", "a", 0.0, math.inf, False, False, "au", "a bound orbit's size"
+    ),
     "inclination": Parameter(
         "inclination", "i", 0.0, math.pi, True, True, "rad", "the angle between two unit normals"
     ),

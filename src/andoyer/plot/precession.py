@@ -37,7 +37,8 @@ from matplotlib.figure import Figure
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer._validation import as_finite
-from andoyer.planetary.precession import ARCSEC, fit_trend
+from andoyer.catalogue.units import ARCSEC, DEGREE
+from andoyer.planetary.precession import fit_trend
 from andoyer.state import State
 
 __all__ = ["PrecessionSeries", "precession", "precession_data"]
@@ -224,7 +225,7 @@ def precession(
             msg = f"expected three matplotlib Axes, got {axes!r}"
             raise ValueError(msg)
         fig = axes[0].figure
-    k, unit = (180 / np.pi, "deg") if degrees else (1.0, "rad")
+    k, unit = (1 / DEGREE, "deg") if degrees else (1.0, "rad")
     names = ("\\varphi", "\\theta") if axis == "figure" else ("h", "I")
     what = "figure axis $b_3$" if axis == "figure" else "angular momentum"
     t = data.t

@@ -36,6 +36,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer._validation import as_finite
+from andoyer.catalogue.units import DAY, HOUR
 from andoyer.series import CompiledSeries, LieTransform, PoissonRing, PoissonSeries, deprit, lie_sum
 
 __all__ = [
@@ -89,7 +90,7 @@ def check_order(order: int, name: str = "order", offset: int = 0) -> None:
 
 
 def _duration(seconds: float) -> str:
-    for unit, size in (("days", 86400.0), ("hours", 3600.0), ("minutes", 60.0)):
+    for unit, size in (("days", DAY), ("hours", HOUR), ("minutes", 60.0)):
         if seconds >= 2 * size:
             return f"{seconds / size:.0f} {unit}"
     return f"{seconds:.0f} seconds"

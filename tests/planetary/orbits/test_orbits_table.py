@@ -104,8 +104,15 @@ def test_table_alkhqp_with_rotation(tmp_path):
     orbit = PrecessingOrbit()
     t = np.linspace(-2e4, 2e4, 81)
     e, i, node, varpi = orbit.elements(t)
-    columns = (t / 1000, 1.0 + 0 * t, 0 * t, e * np.cos(varpi), e * np.sin(varpi),
-               np.sin(i / 2) * np.cos(node), np.sin(i / 2) * np.sin(node))
+    columns = (
+        t / 1000,
+        1.0 + 0 * t,
+        0 * t,
+        e * np.cos(varpi),
+        e * np.sin(varpi),
+        np.sin(i / 2) * np.cos(node),
+        np.sin(i / 2) * np.sin(node),
+    )
     rows = [" ".join(repr(float(x)) for x in row).replace("e-", "D-") for row in zip(*columns, strict=True)]
     path = tmp_path / "La2010x_alkhqp.dat"
     path.write_text("\n".join(rows) + "\n")
@@ -140,10 +147,14 @@ ELEMENTS = "t_years,e,inclination_deg,node_deg,varpi_deg\n"
         (HEAD + "0,0,0,1\n1,0,1\n2,0,0,1\n3,0,0,1\n", "expected 4 values on line 3"),
         (HEAD + "0,0,0,1\n1,0,0,1\n2,0,0,1\n", f"at least {MIN_ROWS} rows"),
         (HEAD + "0,0,0,1\n1,0,0,2\n2,0,0,1\n3,0,0,1\n", "unit orbit normals, got length 2 at row"),
-        ("t_years,e,inclination_deg,node_deg,varpi_deg\n" + "".join(f"{t},1.2,0,0,0\n" for t in range(4)),
-         "expected an eccentricity 0 <= e < 1 .*got 1.2 in column e on line 2"),
-        (ELEMENTS + "".join(f"{t},0.1,{100 * t},0,0\n" for t in range(4)),
-         r"expected an inclination 0 <= i <= 180 deg .*got 200.0 in column inclination_deg on line 4"),
+        (
+            "t_years,e,inclination_deg,node_deg,varpi_deg\n" + "".join(f"{t},1.2,0,0,0\n" for t in range(4)),
+            "expected an eccentricity 0 <= e < 1 .*got 1.2 in column e on line 2",
+        ),
+        (
+            ELEMENTS + "".join(f"{t},0.1,{100 * t},0,0\n" for t in range(4)),
+            r"expected an inclination 0 <= i <= 180 deg .*got 200.0 in column inclination_deg on line 4",
+        ),
     ],
 )
 def test_table_csv_errors(tmp_path, text, match):
@@ -160,10 +171,18 @@ def test_table_span_error(tmp_path):
 @pytest.mark.parametrize(
     ("text", "rotation", "match"),
     [
-        ("0 1 0 0 0 0 0\n1 1 0 0 0 0\n", np.eye(3), "expected 7 columns t a l k h q p on line 2"),
-        ("0 1 0 0 0 0 x\n", np.eye(3), "expected numbers on line 1"),
-        ("0 1 0 0 0 0 nan\n", np.eye(3), "expected finite numbers on line 1"),
-        ("0 1 0 0 0 0 0\n", 2 * np.eye(3), "expected an orthogonal 3x3 rotation"),
+        (
+            "0 1 0 0 0 0 0\n1 1 0 0 0 0\n",
+            np.eye(3),
+            r"expected 7 columns \(t a l k h q p\) on line 2 .*got 6",
+        ),
+        ("0 1 0 0 0 0 0\n" * 3 + "3 1 0 0 0 0 x\n", np.eye(3), "expected numbers .* on line 4"),
+        (
+            "".join(f"{t} 1 0 0 0 0 0\n" for t in range(3)) + "3 1 0 0 0 0 nan\n",
+            np.eye(3),
+            "expected finite numbers, got nan in column p on line 4",
+        ),
+        ("0 1 0 0 0 0 0\n", 2 * np.eye(3), "expected a proper orthogonal 3x3 rotation"),
     ],
 )
 def test_table_alkhqp_errors(tmp_path, text, rotation, match):

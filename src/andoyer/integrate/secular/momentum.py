@@ -69,6 +69,7 @@ def propagate_momentum(
     Examples
     --------
     >>> from andoyer import bodies
+    >>> from andoyer.catalogue.units import ARCSEC
     >>> from andoyer.perturbations.averaged_gravity import SecularGravityGradient
     >>> from andoyer.perturbations.solar_system import JULIAN_YEAR, OBLIQUITY, mean_perturbers
     >>> earth = bodies.get("earth")
@@ -76,7 +77,7 @@ def propagate_momentum(
     >>> G = earth.C * 2 * np.pi / 86164.0905
     >>> M0 = G * np.array([0.0, -np.sin(OBLIQUITY["earth"]), np.cos(OBLIQUITY["earth"])])
     >>> M = propagate_momentum(model, M0, G, [100 * JULIAN_YEAR])
-    >>> round(float(np.arctan2(M[0, 0], -M[0, 1]) * 206264.806 / 100), 2)  # arcsec per year
+    >>> round(float(np.arctan2(M[0, 0], -M[0, 1]) / ARCSEC / 100), 2)  # arcsec per year
     -50.35
     """
     M0 = as_vectors(M0, "M0")

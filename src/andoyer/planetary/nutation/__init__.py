@@ -72,10 +72,11 @@ axis by ``H`` times less. The
 constant part of ``m × ṁ`` (the precession, 8.7 mas in obliquity) belongs to
 the mean pole, not to the nutation.
 
-Constants: ``ω = 7.292115·10⁻⁵ rad/s`` (IERS Conventions 2010, Table 1.2);
-``ε₀ = 84381.406″`` (IAU 2006); default ``H = 0.0032737949`` (Mathews,
-Herring & Buffett 2002, MHB2000, the IERS Conventions 2010 value);
-``GM_Sun``, ``GM_Moon`` of :mod:`andoyer.perturbations.solar_system`.
+Constants, all the catalogue's (:func:`andoyer.catalogue.get`): the Earth's ``spin_rate``
+``ω = 7.292115·10⁻⁵ rad/s`` (GRS80; IERS Conventions 2010, Table 1.2), its ``obliquity``
+``ε₀ = 84381.406″`` (IAU 2006) and its default ``H = 0.00327379492`` (Mathews, Herring &
+Buffett 2002, MHB2000; IERS Conventions 2010 rounds it to 0.0032737949); ``GM_Sun``,
+``GM_Moon`` of :mod:`andoyer.perturbations.solar_system`.
 """
 
 from andoyer.planetary.nutation.analytic import NutationSeries, luni_solar_precession, nutation_series

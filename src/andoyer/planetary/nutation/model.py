@@ -10,22 +10,23 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
+from andoyer import catalogue
+from andoyer.catalogue.units import ARCSEC, JULIAN_YEAR
 from andoyer.perturbations.lunar_theory import moon_ecliptic, sun_ecliptic
-from andoyer.perturbations.solar_system import GM_MOON, GM_SUN, JULIAN_YEAR
+from andoyer.perturbations.solar_system import GM_MOON, GM_SUN
 
 __all__ = ["ARCSEC", "AXES", "EARTH_ROTATION", "H_MHB2000", "MEAN_OBLIQUITY", "PRINCIPAL_TERMS"]
 
 Array = NDArray[np.float64]
 
-#: One arcsecond in radians.
-ARCSEC = np.pi / 648000.0
-#: Earth's nominal mean angular velocity, rad/s (IERS Conventions 2010, Table 1.2).
-EARTH_ROTATION = 7.292115e-5
-#: Dynamical ellipticity ``(C − (A+B)/2)/C`` of MHB2000 (Mathews et al. 2002; IERS Conventions 2010,
-#: Table 1.1).
-H_MHB2000 = 0.0032737949
-#: Mean obliquity of the ecliptic at J2000.0, IAU 2006: 84381.406″.
-MEAN_OBLIQUITY = 84381.406 * ARCSEC
+_EARTH = catalogue.get("earth")
+#: Earth's nominal mean (inertial) angular velocity, rad/s: the catalogue's ``spin_rate``, 7.292115e-5
+#: (GRS80; IERS Conventions 2010, Table 1.2).
+EARTH_ROTATION = _EARTH.spin_rate.si()
+#: Dynamical ellipticity ``(C − (A+B)/2)/C`` of MHB2000 (Mathews et al. 2002): the catalogue's.
+H_MHB2000 = _EARTH.dynamical_ellipticity.value
+#: Mean obliquity of the ecliptic at J2000.0, IAU 2006: 84381.406″ (the catalogue's).
+MEAN_OBLIQUITY = _EARTH.obliquity.si()
 #: The axes whose nutation is offered.
 AXES = ("figure", "momentum", "rotation")
 #: The principal terms: name -> multipliers of ``(l, l′, F, D, Ω)``.

@@ -25,6 +25,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer._limits import check_size
+from andoyer.catalogue.units import DAY, JULIAN_YEAR
 from andoyer.perturbations.lunar_theory import (
     check_span,
     delaunay_arguments,
@@ -32,7 +33,7 @@ from andoyer.perturbations.lunar_theory import (
     moon_ecliptic,
     sun_ecliptic,
 )
-from andoyer.perturbations.solar_system import DAY, GM_MOON, GM_SUN, JULIAN_YEAR
+from andoyer.perturbations.solar_system import GM_MOON, GM_SUN
 from andoyer.planetary.nutation.analytic import NutationSeries, nutation_series
 from andoyer.planetary.nutation.fit import _large, _resolved, minimum_span
 from andoyer.planetary.nutation.model import (

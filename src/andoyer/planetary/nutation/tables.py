@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from andoyer.catalogue.units import DAY, JULIAN_YEAR
 from andoyer.perturbations.lunar_theory import check_span, delaunay_arguments, delaunay_rates
-from andoyer.perturbations.solar_system import DAY, JULIAN_YEAR
 from andoyer.planetary.nutation.analytic import NutationSeries, nutation_series
 from andoyer.planetary.nutation.fit import _large, _split, minimum_span
 from andoyer.planetary.nutation.model import ARCSEC, H_MHB2000, MEAN_OBLIQUITY, PRINCIPAL_TERMS, _axis

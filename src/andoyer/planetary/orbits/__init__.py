@@ -17,7 +17,9 @@ Wallace 2011, through pyerfa's ``ltpecl``), :class:`NBodyOrbit` (the Sun and the
 planets integrated with REBOUND, cached), :class:`SecularOrbit` (the long secular model of
 the eight planets: nonlinear, with the Jupiter–Saturn second-order terms, 10⁸–10⁹ years),
 :class:`LaplaceLagrangeOrbit` (the linear Laplace–Lagrange theory), :class:`TableOrbit`
-(CSV and La2010-style tables); :func:`orbit_history` picks one by name or path.
+(CSV tables and the published solutions, :func:`read_solution`: La2004, La2010, ZB18a,
+ZB20, ZB23); :func:`orbit_history` picks one by name or path, :func:`planet_orbits` gives every
+planet's classical elements of a source (``andoyer orbit``).
 
 Examples
 --------
@@ -29,19 +31,29 @@ Examples
 True
 """
 
-from andoyer.planetary.orbits.factory import SOURCES, orbit_history, source_span
+from andoyer.planetary.orbits.factory import (
+    SOLUTION_FORMATS,
+    SOURCES,
+    orbit_history,
+    planet_orbits,
+    read_solution,
+    solution_format,
+    source_span,
+)
 from andoyer.planetary.orbits.frequencies import fundamental_frequencies, spectral_lines
+from andoyer.planetary.orbits.imcce import read_alkhqp
 from andoyer.planetary.orbits.laplace_lagrange import LaplaceLagrangeOrbit
 from andoyer.planetary.orbits.lyapunov import lyapunov_exponent
 from andoyer.planetary.orbits.nbody import NBodyOrbit
 from andoyer.planetary.orbits.planets import PLANETS
 from andoyer.planetary.orbits.protocol import OrbitHistory, check_times
 from andoyer.planetary.orbits.secular import SecularOrbit
-from andoyer.planetary.orbits.table import TableOrbit, read_alkhqp, read_orbit_csv, write_orbit_csv
+from andoyer.planetary.orbits.table import TableOrbit, read_orbit_csv, write_orbit_csv
 from andoyer.planetary.orbits.vondrak import VondrakEcliptic
 
 __all__ = [
     "PLANETS",
+    "SOLUTION_FORMATS",
     "SOURCES",
     "LaplaceLagrangeOrbit",
     "NBodyOrbit",
@@ -53,8 +65,11 @@ __all__ = [
     "fundamental_frequencies",
     "lyapunov_exponent",
     "orbit_history",
+    "planet_orbits",
     "read_alkhqp",
     "read_orbit_csv",
+    "read_solution",
+    "solution_format",
     "source_span",
     "spectral_lines",
     "write_orbit_csv",

@@ -11,7 +11,15 @@ vector are
 
 and the heliocentric state follows from Kepler's equation ``E − e sin E = M`` with
 ``r = a (cos E − e, √(1−e²) sin E, 0)`` in the orbit's own frame turned by the same
-rotation. The inverse uses ``h = r × v`` and ``e = v × h/μ − r/|r|``.
+rotation. The inverse uses ``h = r × v`` and ``e = v × h/μ − r/|r|``; the elements of a
+normal ``n`` and an eccentricity vector ``e`` are
+
+.. math::
+   i = \operatorname{atan2}(\sqrt{n_x^2 + n_y^2}, n_z), \quad
+   \Omega = \operatorname{atan2}(n_x, -n_y), \quad
+   \varpi = \Omega + \operatorname{atan2}(e\cdot(n\times\hat N),\; e\cdot\hat N),
+
+with ``N̂ = (cos Ω, sin Ω, 0)`` the ascending node (``ω`` measured in the orbit plane).
 """
 
 from __future__ import annotations
@@ -19,7 +27,15 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-__all__ = ["eccentricity_from_elements", "elements_to_state", "normal_from_elements", "state_to_vectors"]
+from andoyer._fastmath import wrap_2pi
+
+__all__ = [
+    "eccentricity_from_elements",
+    "elements_from_vectors",
+    "elements_to_state",
+    "normal_from_elements",
+    "state_to_vectors",
+]
 
 Array = NDArray[np.float64]
 
@@ -164,3 +180,43 @@ def state_to_vectors(mu: ArrayLike, r: ArrayLike, v: ArrayLike) -> tuple[Array, 
     h = np.cross(r, v)
     ecc = np.cross(v, h) / mu - r / np.linalg.norm(r, axis=-1, keepdims=True)
     return h / np.linalg.norm(h, axis=-1, keepdims=True), ecc
+
+
+def elements_from_vectors(
+    normal: ArrayLike, eccentricity_vector: ArrayLike
+) -> tuple[Array, Array, Array, Array]:
+    r"""Eccentricity, inclination, node and longitude of perihelion of a normal and an eccentricity vector.
+
+    The inverse of :func:`normal_from_elements` and :func:`eccentricity_from_elements`
+    (module notes): ``ϖ = Ω + ω`` with ``ω`` the angle from the ascending node to the
+    perihelion in the orbit plane. Where ``i = 0`` the node is ``atan2(0, −0) = 0`` and ``ϖ``
+    is still the longitude of the perihelion; where ``e = 0``, ``ϖ`` is ``Ω``.
+
+    Parameters
+    ----------
+    normal : array_like, shape (..., 3)
+        Unit orbit normals (renormalised).
+    eccentricity_vector : array_like, shape (..., 3)
+        ``e`` times the unit vector to perihelion, in the orbit plane.
+
+    Returns
+    -------
+    e, inclination, node, varpi : numpy.ndarray, shape (...)
+        ``i`` in ``[0, π]``; ``Ω`` and ``ϖ`` in ``[0, 2π)`` (radians).
+
+    Examples
+    --------
+    >>> n = normal_from_elements(0.1, 2.0)
+    >>> e, i, node, varpi = elements_from_vectors(n, eccentricity_from_elements(0.2, 0.1, 2.0, 3.0))
+    >>> [round(float(x), 12) for x in (e, i, node, varpi)]
+    [0.2, 0.1, 2.0, 3.0]
+    """
+    n = np.asarray(normal, float)
+    ecc = np.asarray(eccentricity_vector, float)
+    n = n / np.linalg.norm(n, axis=-1, keepdims=True)
+    inclination = np.arctan2(np.hypot(n[..., 0], n[..., 1]), n[..., 2])
+    node = np.arctan2(n[..., 0], -n[..., 1])
+    towards_node = np.stack([np.cos(node), np.sin(node), np.zeros_like(node)], axis=-1)
+    ahead = np.cross(n, towards_node)  # in the plane, 90° past the node along the motion
+    omega = np.arctan2(np.sum(ecc * ahead, axis=-1), np.sum(ecc * towards_node, axis=-1))
+    return np.linalg.norm(ecc, axis=-1), inclination, wrap_2pi(node), wrap_2pi(node + omega)

@@ -28,10 +28,12 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from andoyer.catalogue.units import ARCSEC
+
 __all__ = ["fundamental_frequencies", "spectral_lines"]
 
 Array = NDArray[np.float64]
-ARCSEC_PER_RAD = 180.0 * 3600.0 / np.pi
+ARCSEC_PER_RAD = 1.0 / ARCSEC
 
 
 def spectral_lines(

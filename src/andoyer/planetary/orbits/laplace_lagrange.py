@@ -57,6 +57,7 @@ from functools import cache
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from andoyer.catalogue.units import ARCSEC
 from andoyer.planetary.orbits.elements import eccentricity_from_elements
 from andoyer.planetary.orbits.laplace import laplace_coefficient
 from andoyer.planetary.orbits.planets import PLANETS, check_planet, planet_data
@@ -64,7 +65,6 @@ from andoyer.planetary.orbits.protocol import check_times
 
 __all__ = ["LA2004_G", "LA2004_S", "LaplaceLagrangeOrbit", "secular_matrices"]
 
-ARCSEC = np.pi / (180.0 * 3600.0)
 
 #: La2004 fundamental frequencies g1…g8 (″/yr), Laskar et al. (2004), A&A 428, 261, Table 3.
 #: Confirmed (review, 2026): the table number (A&A's table list for the paper), g2 and g5 (as

@@ -34,6 +34,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from andoyer.catalogue.units import DAY, JULIAN_YEAR
 from andoyer.planetary.orbits.planets import planet_data
 
 __all__ = ["MeanElements", "invariable_rotation", "mean_elements", "poincare_elements"]
@@ -181,7 +182,7 @@ def mean_elements(window: float = 5000.0, sample: float = 0.0625, gr: bool | Non
     data = planet_data()
     if gr is None:
         gr = _has_reboundx()
-    steps = max(1, round(sample * 365.25 / 4.0))
+    steps = max(1, round(sample * (JULIAN_YEAR / DAY) / 4.0))
     count = round(window / sample)
     states = []
     for sign in (1.0, -1.0):

@@ -89,6 +89,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from andoyer._files import atomic_write_bytes
 from andoyer._limits import Interrupted, announce, check_size
+from andoyer.catalogue.units import AU, DAY, JULIAN_YEAR, SPEED_OF_LIGHT
 from andoyer.planetary.orbits.elements import state_to_vectors
 from andoyer.planetary.orbits.planets import PLANETS, check_planet, planet_data
 from andoyer.planetary.orbits.protocol import check_times
@@ -97,8 +98,8 @@ __all__ = ["NBodyOrbit", "cache_directory", "make_simulation"]
 
 Array = NDArray[np.float64]
 
-#: Speed of light, au per Julian year (299 792.458 km/s, au = 149 597 870.700 km).
-C_AU_PER_YEAR = 299792.458 * 365.25 * 86400.0 / 149597870.700
+#: Speed of light, au per Julian year (:data:`andoyer.catalogue.units.SPEED_OF_LIGHT`, ``AU``).
+C_AU_PER_YEAR = SPEED_OF_LIGHT * JULIAN_YEAR / AU
 #: Integrations are extended in chunks of this many years (whole sampling intervals), each
 #: started from the state saved at the end of the one before.
 CHUNK_YEARS = 1000.0
@@ -242,6 +243,7 @@ class _Segment:
     ) -> None:
         self.folder, self.key, self.sign, self.index = folder, key, sign, index
         self.step, self.sample, self.gr = step, sample, gr
+        self.initial: Array | None = None  # J2000 barycentric states (9, 6); None: the shipped ones
         self.direction = "forward" if sign > 0 else "backward"
         self.t = np.zeros(0)
         self.normal = np.zeros((0, 3))
@@ -413,6 +415,8 @@ class _Segment:
 
     def _chunk(self, times: Array, state: Array | None, t_state: float) -> tuple[Array, Array, Array, Array]:
         """Integrate one chunk from ``state`` at ``t_state`` (``None``: J2000); its samples and end state."""
+        if state is None and self.initial is not None:
+            state = self.initial
         sim, extras = make_simulation(self.sign * self.step, self.gr, state, t_state)
         states = np.empty((times.size, 9, 6))
         reached = np.empty(times.size)
@@ -483,6 +487,10 @@ class NBodyOrbit:
         Read and write the on-disk cache.
     progress : bool or None
         Progress bar on long runs; ``None``: when standard error is a terminal.
+    initial_state : array_like, shape (9, 6), optional
+        Barycentric positions (au) and velocities (au/yr) of the Sun and the planets at J2000,
+        in place of the shipped ones (an ensemble's perturbed member,
+        :mod:`andoyer.ensemble.nbody`); part of the cache's key.
 
     Examples
     --------
@@ -503,9 +511,16 @@ class NBodyOrbit:
         max_span: float = 5.0e7,
         cache: bool = True,
         progress: bool | None = None,
+        initial_state: ArrayLike | None = None,
     ) -> None:
         self.body = PLANETS[check_planet(body)]
         self._index = PLANETS.index(self.body)
+        self.initial_state = None
+        if initial_state is not None:
+            self.initial_state = np.array(initial_state, dtype=float)
+            if self.initial_state.shape != (9, 6) or not np.isfinite(self.initial_state).all():
+                msg = f"expected a finite initial_state of shape (9, 6), got shape {self.initial_state.shape}"
+                raise ValueError(msg)
         if not (np.isfinite(step_days) and 0.01 <= step_days <= 30.0):
             msg = f"expected step_days between 0.01 and 30, got {step_days!r}"
             raise ValueError(msg)
@@ -532,7 +547,7 @@ class NBodyOrbit:
         self.gr = bool(gr)
         self.sample_years = float(sample_years)
         # A whole number of steps per sample, so that every sample falls on a step.
-        steps_per_sample = max(1, round(sample_years * 365.25 / step_days))
+        steps_per_sample = max(1, round(sample_years * (JULIAN_YEAR / DAY) / step_days))
         self.step_years = self.sample_years / steps_per_sample
         self.span = (-float(max_span), float(max_span))
         self.progress = progress
@@ -543,6 +558,8 @@ class NBodyOrbit:
             sign: _Segment(folder, self.key, sign, self.step_years, self.sample_years, self.gr, self._index)
             for sign in (1, -1)
         }
+        for segment in self._segments.values():
+            segment.initial = self.initial_state
         self._spline_reach = (-1.0, -1.0)
         self._splines = None
 
@@ -564,6 +581,8 @@ class NBodyOrbit:
             import reboundx
 
             settings["reboundx"] = reboundx.__version__
+        if self.initial_state is not None:
+            settings["initial_state"] = hashlib.sha256(self.initial_state.tobytes()).hexdigest()
         return hashlib.sha256(json.dumps(settings, sort_keys=True).encode()).hexdigest()[:24]
 
     def _ensure(self, times: Array) -> None:

@@ -6,6 +6,11 @@ Standish's JPL Table 1 elements (mean elements, a fit to DE405, J2000 ecliptic a
 the DE440 gravitational parameters (the DE440 header constants; Park et al. 2021);
 see that script for the sources. Units: au, Julian years, au³/yr². ``"earth"`` is the
 Earth–Moon barycentre.
+
+The file is the N-body solution's data, kept whole because ``data/secular_model.json`` is bound
+to its digest: its GMs and Standish elements are the catalogue's (:func:`andoyer.catalogue.get`;
+``tests/catalogue/test_catalogue_single_source.py`` checks that they agree, the Earth's row being
+the Earth–Moon barycentre's).
 """
 
 from __future__ import annotations

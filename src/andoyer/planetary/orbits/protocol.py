@@ -77,8 +77,7 @@ def check_times(t: ArrayLike, span: tuple[float, float], source: str) -> Array:
     if times.size and (times.min() < lo or times.max() > hi):
         bad = float(times.min()) if times.min() < lo else float(times.max())
         msg = (
-            f"expected times within the {source} orbit's span {lo:g} to {hi:g} years from J2000, "
-            f"got {bad:g}"
+            f"expected times within the {source} orbit's span {lo:g} to {hi:g} years from J2000, got {bad:g}"
         )
         raise ValueError(msg)
     return times

@@ -37,9 +37,11 @@ from __future__ import annotations
 
 import json
 import sys
+from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cache
 from importlib import resources
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -332,6 +334,43 @@ class SecularOrbit:
         P = self.model.terms.count
         keep = np.array([self._index, P + self._index], dtype=np.int64)
         self._runs = {sign: _Run(self.model, keep, sign, self.step) for sign in (1, -1)}
+        self._columns = np.array([0, 1])  # of x_j, y_j among the runs' kept variables
+
+    @classmethod
+    def system(cls, bodies: Sequence[str], **options: Any) -> dict[str, SecularOrbit]:
+        """The orbits of several planets from one integration (each alone integrates all eight).
+
+        Parameters
+        ----------
+        bodies : sequence of str
+            Planets of :data:`~andoyer.planetary.orbits.planets.PLANETS`.
+        **options
+            As :class:`SecularOrbit` (``step``, ``max_span``, ``progress``).
+
+        Returns
+        -------
+        dict of str to SecularOrbit
+            Sharing their integration: asking one for a longer span extends them all.
+
+        Examples
+        --------
+        >>> orbits = SecularOrbit.system(["mars", "earth"])
+        >>> bool((orbits["mars"].normal(-1e5) == SecularOrbit("mars").normal(-1e5)).all())
+        True
+        """
+        orbits = {PLANETS[check_planet(b)]: cls(b, **options) for b in bodies}
+        if not orbits:
+            msg = "expected at least one planet, got none"
+            raise ValueError(msg)
+        first = next(iter(orbits.values()))
+        P = first.model.terms.count
+        indices = [orbit._index for orbit in orbits.values()]
+        keep = np.array(indices + [P + j for j in indices], dtype=np.int64)
+        runs = {sign: _Run(first.model, keep, sign, first.step) for sign in (1, -1)}
+        for k, orbit in enumerate(orbits.values()):
+            orbit._runs = runs
+            orbit._columns = np.array([k, len(indices) + k])
+        return orbits
 
     def _poincare(self, t: ArrayLike) -> tuple[CArray, CArray]:
         from andoyer.planetary.orbits.secular_flow import hermite
@@ -344,7 +383,7 @@ class SecularOrbit:
             if not np.any(side):
                 continue
             run.extend(float(np.abs(flat[side]).max()), self.progress)
-            out[side] = hermite(flat[side], 0.0, sign * self.step, run.w, run.dw)
+            out[side] = hermite(flat[side], 0.0, sign * self.step, run.w, run.dw)[:, self._columns]
         return out[:, 0].reshape(times.shape), out[:, 1].reshape(times.shape)
 
     def poincare(self, t: ArrayLike) -> tuple[CArray, CArray]:

@@ -14,10 +14,12 @@ two column sets (extra columns are ignored):
 **alkhqp** (whitespace-separated, no header, 7 columns, the layout of La2010's
 ``La2010X_alkhqp3L.dat`` files): ``t`` (kyr), ``a``, ``λ``, ``k = e cos ϖ``,
 ``h = e sin ϖ``, ``q = sin(i/2) cos Ω``, ``p = sin(i/2) sin Ω``. La2010 refers these to the
-*invariable plane* of the Solar System, not to the J2000 ecliptic: the reader takes a
-``rotation`` (3×3, file frame → J2000 ecliptic), with no default, so that a frame is never
-assumed silently. (La2004's ``INSOLN``/``INSOLP`` files tabulate e, the obliquity and ϖ of
-date: spin quantities, not an orbit plane; they are not an orbit source.)
+*invariable plane* of the Solar System, not to the J2000 ecliptic: the reader
+(:func:`~andoyer.planetary.orbits.imcce.read_la2010`, the one reader of the format, and
+:func:`~andoyer.planetary.orbits.imcce.read_alkhqp` for its orbit) takes a
+``rotation`` (3×3, file frame → J2000 ecliptic) or fixes it from the file's J2000 row, and says
+which. (La2004's ``INSOLN``/``INSOLP`` files tabulate e, the obliquity and ϖ of date: spin
+quantities, not an orbit plane; they are not an orbit source.)
 
 Interpolation: the vectors (elements are turned into vectors first, which avoids angle
 wrap-around) are interpolated by a not-a-knot cubic spline in ``t``; the normal is
@@ -39,7 +41,7 @@ from andoyer.planetary.orbits.elements import eccentricity_from_elements, normal
 from andoyer.planetary.orbits.protocol import OrbitHistory, check_times
 from andoyer.planetary.parameters import PARAMETERS
 
-__all__ = ["TableOrbit", "read_alkhqp", "read_orbit_csv", "write_orbit_csv"]
+__all__ = ["TableOrbit", "read_orbit_csv", "write_orbit_csv"]
 
 Array = NDArray[np.float64]
 VECTOR_COLUMNS = ("nx", "ny", "nz")
@@ -273,60 +275,6 @@ def read_orbit_csv(path: str | os.PathLike[str]) -> TableOrbit:
     e, inc, node, varpi = values[:, 1], *np.radians(values[:, 2:5].T)
     normal = normal_from_elements(inc, node)
     return TableOrbit(t, normal, eccentricity_from_elements(e, inc, node, varpi), name=Path(path).name)
-
-
-def read_alkhqp(path: str | os.PathLike[str], rotation: ArrayLike) -> TableOrbit:
-    r"""Read a La2010-style ``t a λ k h q p`` file, turning its frame into the J2000 ecliptic.
-
-    Parameters
-    ----------
-    path : str or path-like
-        Whitespace-separated, 7 columns, ``t`` in kyr from J2000.
-    rotation : array_like, shape (3, 3)
-        Orthogonal matrix taking vectors from the file's frame to the J2000 ecliptic
-        (the identity if the file is referred to the J2000 ecliptic already).
-
-    Returns
-    -------
-    TableOrbit
-
-    Examples
-    --------
-    >>> import tempfile, pathlib
-    >>> path = pathlib.Path(tempfile.mkdtemp()) / "orbit.dat"
-    >>> _ = path.write_text("".join(f"{t} 1.0 0.0 0.0167 0.0 0.0 0.0\n" for t in (-3, -2, -1, 0)))
-    >>> orbit = read_alkhqp(path, rotation=np.eye(3))
-    >>> orbit.span, orbit.eccentricity_vector(-1500.0).round(4).tolist()
-    ((-3000.0, 0.0), [0.0167, 0.0, 0.0])
-    """
-    R = as_vectors(rotation, "rotation")
-    if R.shape != (3, 3) or not np.allclose(R @ R.T, np.eye(3), atol=1e-9):
-        msg = f"expected an orthogonal 3x3 rotation matrix, got {R.tolist()}"
-        raise ValueError(msg)
-    rows = [(k + 1, line.split()) for k, line in enumerate(_text_lines(path)) if line.strip()]
-    values = np.empty((len(rows), 7))
-    for r, (line, fields) in enumerate(rows):
-        if len(fields) != 7:
-            msg = f"expected 7 columns t a l k h q p on line {line} of {str(path)!r}, got {len(fields)}"
-            raise ValueError(msg)
-        try:
-            values[r] = [float(x.replace("D", "E")) for x in fields]  # Fortran exponents
-        except ValueError:
-            msg = f"expected numbers on line {line} of {str(path)!r}, got {' '.join(fields)!r}"
-            raise ValueError(msg) from None
-        if not np.isfinite(values[r]).all():
-            msg = f"expected finite numbers on line {line} of {str(path)!r}, got {' '.join(fields)!r}"
-            raise ValueError(msg)
-    k, h, q, p = values[:, 3], values[:, 4], values[:, 5], values[:, 6]
-    sin_half = np.hypot(p, q)
-    if np.any(sin_half > 1.0) or np.any(np.hypot(k, h) >= 1.0):
-        line = rows[int(np.argmax(np.maximum(sin_half, np.hypot(k, h))))][0]
-        msg = f"expected e < 1 and sin(i/2) <= 1 on line {line} of {str(path)!r}"
-        raise ValueError(msg)
-    inc, node = 2.0 * np.arcsin(sin_half), np.arctan2(p, q)
-    normal = normal_from_elements(inc, node) @ R.T
-    ecc = eccentricity_from_elements(np.hypot(k, h), inc, node, np.arctan2(h, k)) @ R.T
-    return TableOrbit(values[:, 0] * 1000.0, normal, ecc, name=Path(path).name)
 
 
 def write_orbit_csv(path: str | os.PathLike[str], orbit: OrbitHistory, t: ArrayLike) -> None:

@@ -17,12 +17,14 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from andoyer import catalogue
 from andoyer.planetary.orbits.protocol import check_times
 
 __all__ = ["EPSILON_0", "VondrakEcliptic"]
 
-#: IAU 2006 obliquity of the ecliptic at J2000 (radians): 84381.406″.
-EPSILON_0 = np.radians(84381.406 / 3600.0)
+#: IAU 2006 obliquity of the ecliptic at J2000 (radians): 84381.406″, the catalogue's Earth
+#: ``obliquity`` (Capitaine et al. 2003).
+EPSILON_0 = catalogue.get("earth").obliquity.si()
 
 
 class VondrakEcliptic:

@@ -28,10 +28,11 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from andoyer import catalogue
 from andoyer._validation import as_finite, as_vectors
 from andoyer.planetary.orbits.protocol import OrbitHistory
 from andoyer.planetary.spin_axis.insolation import daily_insolation
-from andoyer.planetary.spin_axis.model import ARCSEC, DEFAULT_PRECESSION_RATE, SpinAxisModel
+from andoyer.planetary.spin_axis.model import DEFAULT_PRECESSION_RATE, SpinAxisModel
 from andoyer.planetary.spin_axis.stepping import rotate_stages, stage_times
 
 __all__ = [
@@ -60,7 +61,7 @@ __all__ = [
 Array = NDArray[np.float64]
 
 #: IAU 2006 obliquity of the ecliptic at J2000, radians (84381.406″).
-EPSILON_0 = 84381.406 * ARCSEC
+EPSILON_0 = catalogue.get("earth").obliquity.si()
 #: Default largest step (Julian years) of the order-8 composition. Measured against DOP853
 #: (rtol 1e-13) on the Earth and the Vondrák ecliptic over ±200 kyr: 7.4e-13 rad at 1000 years
 #: (DOP853's own level), 6.7e-12 at 2000. p_A is unwrapped between steps, so a step must stay
@@ -178,6 +179,7 @@ def general_precession(s: ArrayLike, n: ArrayLike, s0: ArrayLike, n0: ArrayLike)
     The IAU 2006 frame of date one century after J2000 (pyerfa): ``p_A`` = 5028.796″ + 1.105″.
 
     >>> import erfa
+    >>> from andoyer.catalogue.units import ARCSEC
     >>> rb, rp, rbp = erfa.bp06(2451545.0, 36525.0)
     >>> c, s = np.cos(EPSILON_0), np.sin(EPSILON_0)
     >>> ecl = np.array([[1, 0, 0], [0, c, s], [0, -s, c]])  # J2000 equator -> ecliptic

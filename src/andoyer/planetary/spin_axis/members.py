@@ -50,6 +50,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer._jit import jit
+from andoyer.catalogue.units import ARCSEC
 from andoyer.compositions import COMPOSITIONS, turn_about
 from andoyer.planetary.spin_axis.model import EARTH_DYNAMICAL_ELLIPTICITY, SpinAxisModel
 
@@ -179,7 +180,7 @@ def member_models(
             if key == "moonless-earth":
                 # ψ̇ = α_⊙ cos ε₀ (1−e²)^{−3/2} with the Sun alone.
                 model = SpinAxisModel.from_precession_rate(planet, rate, eps0, float(e0[i]))
-                alpha = rate * np.pi / 648000.0 / (np.cos(eps0) * (1.0 - e0[i] ** 2) ** -1.5)
+                alpha = rate * ARCSEC / (np.cos(eps0) * (1.0 - e0[i] ** 2) ** -1.5)
                 model = replace(model, alpha_sun=float(alpha), beta=0.0)
             else:
                 model = SpinAxisModel.from_precession_rate(planet, rate, eps0, float(e0[i]))

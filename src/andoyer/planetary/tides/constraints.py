@@ -23,6 +23,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from andoyer import catalogue
+
 __all__ = ["CONSTRAINTS", "Constraint"]
 
 
@@ -54,7 +56,7 @@ class Constraint:
     source: str
 
 
-_R_E = 6378.1366  # km: Williams (2000) gives distances in equatorial Earth radii
+_R_E = catalogue.get("earth").radius.to("km")  # Williams (2000) gives distances in equatorial Earth radii
 _A0 = 60.27 * _R_E  # his present mean distance, 60.27 R_E
 
 #: The constraints, oldest last within each quantity.

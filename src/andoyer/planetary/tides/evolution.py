@@ -35,7 +35,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer._validation import as_finite
-from andoyer.catalogue.units import ARCSEC, JULIAN_YEAR
+from andoyer.catalogue.units import ARCSEC, HOUR, JULIAN_YEAR
 from andoyer.planetary.parameters import check
 from andoyer.planetary.tides import equations
 from andoyer.planetary.tides.response import ConstantTimeLag, OceanTides, TidalResponse
@@ -279,7 +279,7 @@ def _describe(states: Array, system: EarthMoonSystem) -> dict[str, Array]:
     alpha = 1.5 * ellipticity / omega * (sun + moon)
     return {
         "lunar_distance": a / 1e3,
-        "day_length": 2 * math.pi / (omega - s.solar_mean_motion) / 3600.0,
+        "day_length": 2 * math.pi / (omega - s.solar_mean_motion) / HOUR,
         "spin_rate": omega,
         "obliquity": eps,
         "dynamical_ellipticity": ellipticity,

@@ -2,9 +2,9 @@ r"""The Earth–Moon–Sun numbers of the tidal model: one dataclass, its defaul
 
 Every body number the tidal evolution needs is a field of :class:`EarthMoonSystem`. The defaults
 are read from the project's catalogue (:func:`andoyer.catalogue.get`, where each value carries
-its source); four are cited here: the gravitational constant, the Earth's mean radius, its fluid
-Love number (the catalogue does not hold them) and its inertial spin rate (the catalogue's
-rotation rate is the prime meridian's, precession included). Derived quantities (masses, the
+its source); three are cited here: the gravitational constant, the Earth's mean radius and its
+fluid Love number (the catalogue does not hold them). The inertial spin rate is the catalogue's
+``spin_rate``, not its ``rotation_rate`` (the IAU prime meridian's). Derived quantities (masses, the
 polar moment ``C``, the lunar mean motion) are properties computed from the fields, so that
 changing a field changes everything that depends on it.
 
@@ -25,7 +25,7 @@ import math
 from dataclasses import dataclass, field, fields
 
 from andoyer import catalogue
-from andoyer.catalogue.units import DAY
+from andoyer.catalogue.units import DAY, HOUR
 from andoyer.planetary.parameters import check
 
 __all__ = ["EarthMoonSystem"]
@@ -40,7 +40,7 @@ def _catalogue(body: str, key: str):
 class EarthMoonSystem:
     """The Earth, the Moon and the Sun as the tidal model sees them (present-day values).
 
-    Every default but four is the catalogue's (``andoyer bodies earth``, ``moon``, ``sun``
+    Every default but three is the catalogue's (``andoyer bodies earth``, ``moon``, ``sun``
     print each value with its source): the Earth's ``GM``, equatorial radius ``a_E``, ``J2``,
     ``C/(M a_E²)``, ``H``, obliquity, orbit (``a``, ``e``, sidereal year); the Moon's ``GM``
     and mean orbit (``a``, ``e``, ``i``); the Sun's ``GM``.
@@ -62,9 +62,9 @@ class EarthMoonSystem:
     dynamical_ellipticity : float
         ``H = (C − (A+B)/2)/C`` (catalogue).
     spin_rate : float
-        ``ω0`` = 7.292115e-5 rad s⁻¹, the Earth's inertial spin (IERS Conventions 2010, Table
-        1.1). Not the catalogue's ``rotation_rate``: that is the rate of the IAU prime meridian,
-        360.9856235°/d, which counts the precession of the equinox as well (1.5e-8 more).
+        ``ω0`` = 7.292115e-5 rad s⁻¹, the Earth's inertial spin (catalogue ``spin_rate``: GRS80,
+        IERS Conventions 2010, Table 1.2). Not the catalogue's ``rotation_rate``: that is the rate
+        of the IAU prime meridian, 360.9856235°/d (5.1e-8 more).
     obliquity : float
         ``ε0``, radians (catalogue, IAU 2006).
     fluid_love_number : float
@@ -97,7 +97,7 @@ class EarthMoonSystem:
     j2: float = field(default_factory=_catalogue("earth", "j2"))
     moment_factor: float = field(default_factory=_catalogue("earth", "moment_of_inertia"))
     dynamical_ellipticity: float = field(default_factory=_catalogue("earth", "dynamical_ellipticity"))
-    spin_rate: float = 7.292115e-5
+    spin_rate: float = field(default_factory=_catalogue("earth", "spin_rate"))
     obliquity: float = field(default_factory=_catalogue("earth", "obliquity"))
     fluid_love_number: float = 0.93
     lunar_semi_major_axis: float = field(default_factory=_catalogue("moon", "semi_major_axis"))
@@ -161,7 +161,7 @@ class EarthMoonSystem:
     @property
     def day_length_hours(self) -> float:
         """``2π/ω0`` in hours (the sidereal day)."""
-        return 2.0 * math.pi / self.spin_rate / 3600.0
+        return 2.0 * math.pi / self.spin_rate / HOUR
 
     def lunar_mean_motion(self, semi_major_axis: float) -> float:
         """``n = √(G(M_E + M_M)/a³)``, rad s⁻¹, the Kepler mean motion of the relative orbit.
