@@ -9,11 +9,13 @@ distributed at https://vo.imcce.fr/insola/earth/online/ (``INSOLN.LA2004.BTL.ASC
 ``%`` comment lines are read.
 
 For each file given, the script integrates the body's axis along the ``nbody`` orbit (with
-the settings given) on the file's 1-kyr grid within ``--span`` and prints the largest
-differences in obliquity, ``e`` and ``e sin ϖ`` over |t| ≤ 20 kyr, 250 kyr and the span, the
-values at J2000, the Mars obliquity range, and (``--fit-rate``) the precession rate that best
-fits La2004's obliquity over 250 kyr. ``--vondrak`` adds the Earth's obliquity against the
-``vondrak`` source and the VCW 2011 equator (``erfa.ltpequ``/``ltpecl``) over ±200 kyr;
+the settings given; ``--orbit secular`` for the secular model; for the Earth ``--earth-td``
+or ``--earth-tides MODEL``) on the file's 1-kyr grid within
+``--span`` and prints the largest differences in obliquity, ``e`` and ``e sin ϖ`` over
+|t| ≤ 20 kyr, 250 kyr, 1 Myr and the span, the values at J2000, the Mars obliquity range, and
+(``--fit-rate``) the precession rate that best fits La2004's obliquity over 250 kyr.
+``--vondrak`` adds the Earth's obliquity against the ``vondrak`` source and the VCW 2011
+equator (``erfa.ltpequ``/``ltpecl``) over ±200 kyr;
 ``--secular`` the ``secular`` source against ``nbody``; ``--reference-cache DIR`` a second
 ``nbody`` run (its cache folder, e.g. one without GR or with half the step) against this one.
 
@@ -40,6 +42,7 @@ sys.path.insert(0, str(ROOT / "src"))
 
 from andoyer.planetary.orbits import NBodyOrbit, SecularOrbit, VondrakEcliptic  # noqa: E402
 from andoyer.planetary.spin_axis import DEFAULT_PRECESSION_RATE, spin_axis_history  # noqa: E402
+from andoyer.planetary.tides import tidal_spin_axis_history  # noqa: E402
 
 WINDOWS = (20000.0, 250000.0, 1.0e6)
 
@@ -60,9 +63,10 @@ def read_la2004(paths: list[str]) -> np.ndarray:
 
 
 def windows(t: np.ndarray, diff: np.ndarray) -> dict[str, float]:
-    """Largest ``|diff|`` over |t| ≤ each window (past and future separately)."""
+    """Largest ``|diff|`` over |t| ≤ each window and over the span (past and future separately)."""
     out = {}
-    for w in WINDOWS:
+    span = max(float(np.abs(t).max(initial=0.0)), WINDOWS[-1])
+    for w in sorted({*WINDOWS, span}):
         for side, mask in (("past", (t <= 0) & (t >= -w)), ("future", (t >= 0) & (t <= w))):
             if np.count_nonzero(mask) > 1 and (np.abs(t[mask]).max() >= w - 1.0):
                 out[f"{side} {w / 1000:g} kyr"] = float(np.abs(diff[mask]).max())
@@ -74,13 +78,22 @@ def nbody(body: str, args: argparse.Namespace) -> NBodyOrbit:
     return NBodyOrbit(body, step_days=args.step_days, gr=not args.no_gr, progress=True)
 
 
+def compared_orbit(body: str, args: argparse.Namespace) -> NBodyOrbit | SecularOrbit:
+    """The orbit compared with La2004: ``nbody`` (:func:`nbody`) or ``secular`` (``--orbit``)."""
+    return SecularOrbit(body) if args.orbit == "secular" else nbody(body, args)
+
+
 def compare(body: str, paths: list[str], args: argparse.Namespace, rate: float, td: float) -> dict:
     """``body``'s history on ``nbody`` against the La2004 files ``paths``, on their grid within the span."""
     data = read_la2004(paths)
     lo, hi = args.span
     data = data[(data[:, 0] >= lo) & (data[:, 0] <= hi)]
     t = data[:, 0]
-    h = spin_axis_history(nbody(body, args), body, t, precession_rate=rate, tidal_dissipation=td)
+    orbit = compared_orbit(body, args)
+    if body == "earth" and args.earth_tides:  # α(t) from the Earth–Moon tidal history instead of T_d
+        h = tidal_spin_axis_history(orbit, body, t, args.earth_tides, precession_rate=rate)
+    else:
+        h = spin_axis_history(orbit, body, t, precession_rate=rate, tidal_dissipation=td)
     obl = np.degrees(h.obliquity)
     ref_obl = np.degrees(data[:, 2])
     cp, ref_cp = h.climatic_precession, data[:, 1] * np.sin(data[:, 3])
@@ -89,6 +102,8 @@ def compare(body: str, paths: list[str], args: argparse.Namespace, rate: float, 
         "body": body,
         "precession_rate": rate,
         "tidal_dissipation": td,
+        "orbit": args.orbit,
+        "tides": args.earth_tides if body == "earth" else None,
         "gr": not args.no_gr,
         "step_days": args.step_days,
         "at J2000": {
@@ -110,7 +125,9 @@ def compare(body: str, paths: list[str], args: argparse.Namespace, rate: float, 
         rates = rate * (1.0 + np.linspace(-0.02, 0.02, 161))  # ±2 %
         misfit = []
         for r in rates:
-            hr = spin_axis_history(nbody(body, args), body, t[near], precession_rate=r, tidal_dissipation=td)
+            hr = spin_axis_history(
+                compared_orbit(body, args), body, t[near], precession_rate=r, tidal_dissipation=td
+            )
             misfit.append(np.abs(np.degrees(hr.obliquity) - ref_obl[near]).max())
         best = int(np.argmin(misfit))
         result["best rate over 250 kyr"] = {"rate": float(rates[best]), "obliquity diff deg": misfit[best]}
@@ -187,6 +204,8 @@ def main(argv: list[str] | None = None) -> None:
     parser.add_argument("--mars-rate", type=float, default=DEFAULT_PRECESSION_RATE["mars"], help="″/yr")
     parser.add_argument("--earth-rate", type=float, default=DEFAULT_PRECESSION_RATE["earth"], help="″/yr")
     parser.add_argument("--earth-td", type=float, default=0.0, help="tidal dissipation T_d (Earth)")
+    parser.add_argument("--earth-tides", choices=("ocean", "constant-lag"), help="Earth: tides, not T_d")
+    parser.add_argument("--orbit", choices=("nbody", "secular"), default="nbody", help="orbit against La2004")
     parser.add_argument("--step-days", type=float, default=4.0)
     parser.add_argument("--no-gr", action="store_true", help="leave out general relativity")
     parser.add_argument("--fit-rate", action="store_true", help="best-fitting precession rate over 250 kyr")

@@ -120,6 +120,7 @@ VALID: dict[str, Valid] = {
             "obliquity earth --span -1000 1000 --step 100 --precession-rate 500 --output {out}",
             "obliquity saturn --span -100000 100000 --step 10000 --drift-timescale 4e9 --output {out}",
             "obliquity earth --span -1000 1000 --step 500 --tolerance 0.001 --format json --output {out}",
+            "obliquity earth --span -2000 0 --step 1000 --tides constant-lag --format json --output {out}",
             (
                 "obliquity mars --ensemble 2 --span -20000 0 --step 10000 --seed 1 --perturbation 1e-7 "
                 "--thresholds 30 --scheduler synchronous --format json --output {out}"
@@ -220,6 +221,26 @@ REFUSALS = (
     ("portrait precession", "points", "portrait precession --moments 1 1 1.5 --steps 100000000 --out {out}"),
 )
 
+#: Options that contradict each other, refused before any work: (command, case, argument line).
+CONFLICTS = (
+    ("obliquity", "tides-mars", "obliquity mars --tides ocean --span -2000 0 --step 1000 --output {out}"),
+    (
+        "obliquity",
+        "tides-dissipation",
+        "obliquity earth --tides ocean --tidal-dissipation 0 --span -2000 0 --step 1000 --output {out}",
+    ),
+    (
+        "obliquity",
+        "tides-ensemble",
+        "obliquity mars --ensemble 2 --tides ocean --span -2e4 0 --step 1e4 --output {out}",
+    ),
+    (
+        "obliquity",
+        "tides-ellipticity",
+        "obliquity earth --tides ocean --dynamical-ellipticity 0.003 --span -2e3 0 --step 1e3 --output {out}",
+    ),
+)
+
 INPUT_CSV = "phi,theta,psi,Phi,Theta,Psi\n0.3,0.8,1.2,0.5,0.2,0.9\n1.0,0.41,0.0,0.9,0.0,0.98\n"
 BAD_NUMBERS = ("nan", "inf", "-inf", "-1e300", "1e300")
 PATH_FLAGS = ("--out", "--output", "--input")
@@ -307,6 +328,8 @@ def mutations() -> list:
     # any work with what they would need.
     for name, case, line in REFUSALS:
         add(name, "size", case, tuple(line.split()))
+    for name, case, line in CONFLICTS:
+        add(name, "conflict", case, tuple(line.split()))
     for case, line in ENSEMBLE_BAD:
         add("obliquity", "ensemble", case, tuple(line.split()))
     # Positional choices (precession's body) and an unknown sub-command.

@@ -96,6 +96,11 @@ SLOW_CASES = {
             "--format csv --output bigger.csv"
         ),
     ),
+    "obliquity-tides-json": (  # the tidal history's columns (obliquity --tides), a million rows
+        "obliquity earth --tides ocean --span -1000 0 --step 100 --format json --output w.json",
+        "obliquity earth --tides ocean --span -20000 0 --step 0.02 --format json --output big.json",
+        "obliquity earth --tides ocean --span -190000 0 --step 0.02 --format json --output bigger.json",
+    ),
     "nutation-json-plot": (
         "nutation earth --span 0 1 --step 0.5 --format json --output w.json --plot w.png",
         "nutation earth --span 0 19 --step 0.00002 --format json --output big.json --plot big.png",

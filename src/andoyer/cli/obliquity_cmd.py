@@ -10,6 +10,7 @@ from andoyer.catalogue.units import ARCSEC
 from andoyer.cli import obliquity_ensemble
 from andoyer.cli.numbers import finite_number, physical
 from andoyer.cli.obliquity_body import add_body_arguments, resolve_body, resonance_fields
+from andoyer.cli.obliquity_tides import add_tides_argument, obliquity_tides
 from andoyer.cli.output import CliError, add_output_argument, atomic_output
 
 EXAMPLES = """examples:
@@ -22,6 +23,7 @@ then secular), or --body-file PATH (a body named after a planet takes that plane
 other needs --orbit PATH). The other planets' precession constant is their catalogued figure
 with their satellites (andoyer precession BODY); --drift-timescale TAU drifts it,
 alpha(t) = alpha0 (1 + t/TAU) (satellite migration: docs/spin-axis.md).
+  andoyer obliquity earth --orbit secular --tides ocean --span -1e8 0 --step 1000 --format csv
 T0, T1 and DT are Julian years from J2000 (negative = past); output at T0, T0+DT, ..., T1.
 --precession-rate P is the rate of the luni-solar precession psi_A at J2000 in arcsec per Julian
 year (default: Earth 50.38481507, IAU 2006; Mars 7.597); --dynamical-ellipticity H sets
@@ -32,10 +34,18 @@ of the fastest angle printed (the precession, or the perihelion from the equinox
 table would alias it: such a request is refused. Orbit sources: vondrak (the Earth's ecliptic of
 Vondrak et al. 2011, +-200 kyr, no eccentricity), nbody (+-50 Myr), secular (the long secular model,
 +-1 Gyr), laplace-lagrange (the linear theory), or a table file PATH.
+Tides: TD defaults to the present-day dissipation, 1, for the Earth (the real Earth dissipates:
+over 5 Myr on the nbody orbit the obliquity is 0.21 deg from La2004 with it, 1.73 deg with 0) and
+to 0 for bodies without a measured dissipation (Mars); --tidal-dissipation 0 leaves the tides out.
+--tides MODEL (Earth only; ocean, the reference after Farhat et al. 2022, or constant-lag) couples
+the axis to the tidal evolution of the Earth-Moon system (andoyer tides) instead; the tidal model
+sets the dissipation and H, so --tidal-dissipation and --dynamical-ellipticity are refused with it.
 JSON keys: t (years), obliquity (deg), precession (deg, p_A accumulated since J2000), axis (N x 3),
 orbit_normal (N x 3, J2000 ecliptic frame), eccentricity and climatic_precession (e sin varpi,
 varpi heliocentric from the moving equinox; null without eccentricity), precession_rate (arcsec/yr),
-resonances (mode, frequency, distance = precession_rate + s_k, arcsec/yr, nearest first).
+resonances (mode, frequency, distance = precession_rate + s_k, arcsec/yr, nearest first),
+error_estimate (arcsec) and integration_step (years); with --tides also day_length (hours),
+lunar_distance (km) and precession_constant (arcsec/yr) per row.
 """
 
 DEFAULT_SPAN = (-200000.0, 0.0)
@@ -95,8 +105,8 @@ def register(commands: argparse._SubParsersAction) -> None:
         "--tidal-dissipation",
         type=physical("tidal_dissipation"),
         metavar="TD",
-        default=0.0,
-        help="modern tidal rates times TD, Earth only (default 0: none; 0 <= TD <= 1.2)",
+        help="modern tidal rates times TD, Earth only (default: the present-day dissipation, 1, for the "
+        "Earth; 0, none, for bodies without a measured one; 0 <= TD <= 1.2)",
     )
     parser.add_argument(
         "--tolerance",
@@ -104,6 +114,7 @@ def register(commands: argparse._SubParsersAction) -> None:
         metavar="ARCSEC",
         help="largest error of the axis wanted, arcsec (default 0.01; the JSON's error_estimate)",
     )
+    add_tides_argument(parser)
     parser.add_argument("--format", choices=("json", "csv", "table"), default="table", help="default table")
     add_output_argument(parser)
     add_output_argument(parser, "--plot", "PNG of obliquity and climatic precession")
@@ -175,7 +186,7 @@ TABLE_BYTES_PER_BYTE = 48
 PLOT_POINT_BYTES = 200
 
 
-def _costs(args: argparse.Namespace, orbit, stream_csv: bool) -> dict:
+def _costs(args: argparse.Namespace, orbit, stream_csv: bool, tides=None) -> dict:  # type: ignore[no-untyped-def]
     """What the command adds to the integration's cost (:func:`~andoyer.planetary.spin_axis.check_run`)."""
     from andoyer.cli.output import BLOCK_ROWS, FORMAT_SECONDS
     from andoyer.planetary.spin_axis.history import HISTORY_ROW_BYTES
@@ -188,9 +199,14 @@ def _costs(args: argparse.Namespace, orbit, stream_csv: bool) -> dict:
         row_bytes, fixed = HISTORY_ROW_BYTES + 16.0, BLOCK_ROWS * 40 * width
     if args.plot is not None:
         row_bytes += PLOT_POINT_BYTES
+    extra_bytes, extra_seconds = (0.0, 0.0) if tides is None else (tides.row_bytes, tides.row_seconds)
+    if stream_csv:  # the tidal columns of a block at a time
+        fixed += BLOCK_ROWS * extra_bytes
+    else:
+        row_bytes += extra_bytes
     return {
         "row_bytes": row_bytes,
-        "row_seconds": width * FORMAT_SECONDS * passes,
+        "row_seconds": width * FORMAT_SECONDS * passes + extra_seconds,
         "fixed_bytes": fixed,
     }
 
@@ -250,6 +266,7 @@ def run(args: argparse.Namespace) -> int:
     from andoyer.cli.output import write_json, write_rows
     from andoyer.planetary.spin_axis import SpinAxisHistory, output_times, spin_axis_blocks
 
+    tides = obliquity_tides(args)
     if obliquity_ensemble.check(args):
         return obliquity_ensemble.run(args)
     if args.step is None:
@@ -277,10 +294,11 @@ def run(args: argparse.Namespace) -> int:
         times,
         precession_rate=args.precession_rate,
         dynamical_ellipticity=args.dynamical_ellipticity,
-        tidal_dissipation=args.tidal_dissipation,
+        tidal_dissipation=tides.tidal_dissipation,
+        coupling=tides.coupling,
         ellipticity_drift=drift,
         tolerance=None if args.tolerance is None else args.tolerance * ARCSEC,
-        **_costs(args, orbit, stream_csv),
+        **_costs(args, orbit, stream_csv, tides),
         what=f"an obliquity run of {times.size} output times",
     )
     first = next(blocks)  # the integration, before anything is written
@@ -289,9 +307,10 @@ def run(args: argparse.Namespace) -> int:
         # Rows are written as they are described: a refusal or an interruption during the
         # integration leaves no output.
         with atomic_output(args.output) as stream:
-            write_rows(stream, _header(orbit.has_eccentricity), _columns(first), "csv")
+            header = _header(orbit.has_eccentricity) + tides.header
+            write_rows(stream, header, _columns(first) + tides.columns(first.t), "csv")
             for block in blocks:
-                write_rows(stream, None, _columns(block), "csv")
+                write_rows(stream, None, _columns(block) + tides.columns(block.t), "csv")
         return 0
     h = SpinAxisHistory.concatenate([first, *blocks])
     figure = None
@@ -301,9 +320,10 @@ def run(args: argparse.Namespace) -> int:
         figure = obliquity_history(h)
     with atomic_output(args.output) as stream:
         if args.format == "json":
-            write_json(stream, _fields(h))
+            write_json(stream, _fields(h) | tides.fields(h.t))
         else:
-            write_rows(stream, _header(orbit.has_eccentricity), _columns(h), args.format)
+            header = _header(orbit.has_eccentricity) + tides.header
+            write_rows(stream, header, _columns(h) + tides.columns(h.t), args.format)
     if figure is not None:
         with atomic_output(args.plot, binary=True) as stream:
             figure.savefig(stream, format="png", dpi=120)

@@ -222,7 +222,7 @@ def advance(x, w, e, times, c, solar, rtol, out):
     step ends on an output time it would pass, so the outputs are step ends (no interpolation).
     Returns ``(count, status, t_stop)``: ``status`` 0 (done), 1 (the Moon fell below the
     Laplace-plane transition at ``t_stop``, interpolated), 2 (a non-finite state) or 3 (too many
-    steps); ``count`` outputs are filled.
+    steps: a million beyond one per output time); ``count`` outputs are filled.
     """
     t = 0.0
     end = times[times.shape[0] - 1]
@@ -230,7 +230,8 @@ def advance(x, w, e, times, c, solar, rtol, out):
     step = direction * min(abs(end), 1.0e6)  # the controller's step; a landing may shorten one
     k = 0
     g = _above_floor(x, w, c)
-    for _ in range(1000000):
+    # every output time ends a step of its own: the budget is a million steps beyond those
+    for _ in range(1000000 + 2 * times.shape[0]):
         if k == times.shape[0]:
             return k, 0, t
         target = times[k]
