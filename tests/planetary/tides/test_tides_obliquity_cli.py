@@ -28,7 +28,7 @@ from andoyer.planetary.tides import (
 )
 
 PLAIN_KEYS = {"t", "obliquity", "precession", "axis", "orbit_normal", "eccentricity", "climatic_precession",
-              "precession_rate"}
+              "precession_rate", "resonances", "error_estimate", "integration_step"}
 TIDAL_KEYS = {"day_length", "lunar_distance", "precession_constant"}
 
 

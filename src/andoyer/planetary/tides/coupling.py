@@ -29,7 +29,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from andoyer._validation import as_finite
 from andoyer.planetary.orbits.protocol import OrbitHistory
-from andoyer.planetary.spin_axis.history import DEFAULT_STEP, SpinAxisHistory
+from andoyer.planetary.spin_axis.history import SpinAxisHistory
 from andoyer.planetary.spin_axis.model import SpinAxisModel
 from andoyer.planetary.tides import equations
 from andoyer.planetary.tides.evolution import (
@@ -197,8 +197,9 @@ def tidal_spin_axis_history(
     dynamical_ellipticity: float | None = None,
     axis: ArrayLike | None = None,
     system: EarthMoonSystem | None = None,
-    step: float = DEFAULT_STEP,
-    order: int = 8,
+    step: float | None = None,
+    order: int | None = None,
+    tolerance: float | None = None,
 ) -> SpinAxisHistory:
     """The Earth's spin axis along ``orbit`` with ``α(t)`` from a tidal history.
 
@@ -217,8 +218,10 @@ def tidal_spin_axis_history(
         At most one (default: the IAU 2006 rate).
     axis : array_like, shape (3,), optional
     system : EarthMoonSystem, optional
-    step : float
-    order : {2, 4, 6, 8}
+    step, order, tolerance : optional
+        As in :func:`andoyer.planetary.spin_axis.spin_axis_history`: by default the step is chosen
+        from the requested accuracy (``tolerance``, radians; default 0.01″) and reported in
+        ``error_estimate``; a ``step`` given alone runs at that step (order 8).
 
     Returns
     -------
@@ -249,5 +252,6 @@ def tidal_spin_axis_history(
         axis=axis,
         step=step,
         order=order,
+        tolerance=tolerance,
         coupling=coupled,
     )
