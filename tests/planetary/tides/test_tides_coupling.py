@@ -40,7 +40,9 @@ def test_coupling_at_j2000_alone_is_the_calibration():
 def test_coupling_without_dissipation_is_the_plain_model():
     times = np.linspace(-2e5, 0.0, 9)
     plain = spin_axis_history(VondrakEcliptic(), "earth", times, step=1000.0, order=8)
-    tidal = tidal_spin_axis_history(VondrakEcliptic(), "earth", times, ConstantTimeLag(0.0), step=1000.0, order=8)
+    tidal = tidal_spin_axis_history(
+        VondrakEcliptic(), "earth", times, ConstantTimeLag(0.0), step=1000.0, order=8
+    )
     assert np.abs(tidal.axis - plain.axis).max() < 1e-14
 
 
