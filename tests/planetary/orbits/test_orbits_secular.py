@@ -11,6 +11,8 @@ invariants of the averaged system); the orbit against the N-body integration (RE
 
 from __future__ import annotations
 
+import importlib
+
 import numpy as np
 import pytest
 from scipy.linalg import expm
@@ -344,10 +346,22 @@ def test_obliquity_command_takes_both_secular_sources(capsys, source):
     assert angle.max() < (1e-9 if source == "secular" else 0.2)
 
 
+def _secular_module():
+    """The module of the long secular model, from ``sys.modules``.
+
+    Not ``from andoyer.planetary.orbits import secular``: once the old name
+    ``andoyer.orbits.secular`` has been imported (``tests/core/test_moved.py`` imports every old
+    name), the import system sets the package's attribute ``secular`` to what that old name
+    stands for, the Laplace–Lagrange module (``andoyer._moved``; the package object is shared
+    with ``andoyer.orbits``), and the monkeypatching would miss the model.
+    """
+    return importlib.import_module("andoyer.planetary.orbits.secular")
+
+
 def test_secular_orbit_extends_in_chunks_bit_for_bit(monkeypatch):
     # A run extended in small chunks (the unit of interruption), or by successive requests, is the
     # same run as one made at once.
-    from andoyer.planetary.orbits import secular as secular_module
+    secular_module = _secular_module()
 
     t = np.linspace(-3e5, 3e5, 61)
     whole = SecularOrbit("venus").normal(t)
@@ -362,7 +376,7 @@ def test_secular_orbit_warns_then_refuses_beyond_its_expansion(monkeypatch):
     # Beyond e = 0.35 or i = 20° the degree-4 expansion loses accuracy (a warning, once per planet);
     # beyond e = 0.6 or i = 40° the run stops with a clear message (the bounds are lowered here,
     # below Mercury's e = 0.21, to see both).
-    from andoyer.planetary.orbits import secular as secular_module
+    secular_module = _secular_module()
 
     monkeypatch.setattr(secular_module, "E_WARN", 0.1)
     with pytest.warns(RuntimeWarning, match=r"mercury reached e = 0\.2.*beyond e = 0\.1"):
