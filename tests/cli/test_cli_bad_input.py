@@ -111,6 +111,10 @@ VALID: dict[str, Valid] = {
                 "--tidal-dissipation 0.5 --output {out}"
             ),
             "obliquity earth --span -1000 1000 --step 100 --precession-rate 500 --output {out}",
+            (
+                "obliquity mars --ensemble 2 --span -20000 0 --step 10000 --seed 1 --perturbation 1e-7 "
+                "--thresholds 30 --scheduler synchronous --format json --output {out}"
+            ),
         ),
         "--output",
     ),
@@ -167,6 +171,24 @@ VALID: dict[str, Valid] = {
 #: (issue 18 item 11): the command either refuses it in one line (a chart that needs the
 #: triangle inequality) or runs, with one warning line naming the triangle inequality.
 WARNS = {("--moments", "1e300")}
+
+#: The chaotic-obliquity ensemble's options out of place or out of range (issue 22 item 3).
+ENSEMBLE = "obliquity mars --span -20000 0 --scheduler synchronous --output {out}"
+ENSEMBLE_BAD = (
+    ("members", f"{ENSEMBLE} --ensemble 0"),
+    ("span", "obliquity mars --ensemble 2 --span -20000 20000 --scheduler synchronous --output {out}"),
+    ("seed-alone", "obliquity mars --seed 3 --span -2000 0 --output {out}"),
+    ("seed", f"{ENSEMBLE} --ensemble 2 --seed -1"),
+    ("no-moon-mars", f"{ENSEMBLE} --ensemble 2 --no-moon"),
+    ("orbit", f"{ENSEMBLE} --ensemble 2 --orbit nbody"),
+    ("tides", f"{ENSEMBLE} --ensemble 2 --tidal-dissipation 0.5"),
+    ("perturbation", f"{ENSEMBLE} --ensemble 2 --perturbation 1"),
+    ("out-suffix", f"{ENSEMBLE} --ensemble 2 --out members.txt"),
+    ("thresholds", f"{ENSEMBLE} --ensemble 2 --thresholds 200"),
+    ("workers", "obliquity mars --span -20000 0 --ensemble 2 --workers 0 --output {out}"),
+    ("step", f"{ENSEMBLE} --ensemble 2 --step 1e6"),
+    ("size", "obliquity mars --span -1e9 0 --step 1 --ensemble 100000 --output {out}"),
+)
 
 #: Requests refused for their size (issue 26): (command, case, argument line).
 REFUSALS = (
@@ -267,6 +289,8 @@ def mutations() -> list:
     # any work with what they would need.
     for name, case, line in REFUSALS:
         add(name, "size", case, tuple(line.split()))
+    for case, line in ENSEMBLE_BAD:
+        add("obliquity", "ensemble", case, tuple(line.split()))
     # Positional choices (precession's body) and an unknown sub-command.
     add("precession", "choice", "body", ("precession", "pluto"))
     add("bodies", "choice", "name", ("bodies", "vulcan"))

@@ -88,10 +88,13 @@ SLOW_CASES = {
         "obliquity earth --span -20000 0 --step 0.02 --format json --output big.json --plot big.png",
         "obliquity earth --span -190000 0 --step 0.02 --format json --output bigger.json",
     ),
-    "obliquity-secular-csv": (  # streamed: the memory of the output times only
-        "obliquity earth --orbit secular --span -1000 0 --step 100 --format csv --output w.csv",
-        "obliquity earth --orbit secular --span -1e8 0 --step 500 --format csv --output big.csv",
-        "obliquity earth --orbit secular --span -4.9e9 0 --step 500 --format csv --output bigger.csv",
+    "obliquity-laplace-lagrange-csv": (  # streamed: the memory of the output times only (an unbounded orbit)
+        "obliquity earth --orbit laplace-lagrange --span -1000 0 --step 100 --format csv --output w.csv",
+        "obliquity earth --orbit laplace-lagrange --span -1e8 0 --step 500 --format csv --output big.csv",
+        (
+            "obliquity earth --orbit laplace-lagrange --span -4.9e9 0 --step 500 "
+            "--format csv --output bigger.csv"
+        ),
     ),
     "nutation-json-plot": (
         "nutation earth --span 0 1 --step 0.5 --format json --output w.json --plot w.png",

@@ -95,7 +95,12 @@ from andoyer.planetary.spin_axis import (
     equinox,
     evolve_axes,
     general_precession,
+    member_cost,
+    member_obliquities,
+    member_times,
+    obliquity_statistics,
     output_times,
+    perturbed_states,
     run_cost,
     spin_axis_blocks,
     spin_axis_history,
@@ -117,6 +122,7 @@ from andoyer.planetary.tides import (
 from andoyer.theories import SAMRotation, beta_polynomial_value, sam_tables, sam_theory
 
 P = functools.partial
+AXIS = np.array([0.0, 0.4, 0.9])
 NAN, INF, HUGE = float("nan"), float("inf"), 1e300
 BODY = RigidBody(1.0, 2.0, 3.0)
 EROS = bodies.get("eros")
@@ -356,8 +362,13 @@ CASES = [
     (LaplaceLagrangeOrbit, P(LaplaceLagrangeOrbit, frequencies="bvw"), ("earth",), ValueError, "expected"),
     (spectral_lines, spectral_lines, ([0j] * 10, 1.0), ValueError, "expected a finite 1-d signal"),
     (spectral_lines, spectral_lines, ([NAN] * 100, 1.0), ValueError, "expected a finite 1-d signal"),
-    (fundamental_frequencies, fundamental_frequencies, ([[0j] * 10], [[0j] * 10], 1.0, [1.0], [-1.0]),
-     ValueError, "expected"),
+    (
+        fundamental_frequencies,
+        fundamental_frequencies,
+        ([[0j] * 10], [[0j] * 10], 1.0, [1.0], [-1.0]),
+        ValueError,
+        "expected",
+    ),
     (lyapunov_exponent, P(lyapunov_exponent, span=NAN), (), ValueError, "expected a nonzero span"),
     (lyapunov_exponent, P(lyapunov_exponent, separation=1.0), (), ValueError, "expected 0 < separation"),
     (TableOrbit, TableOrbit, ([0.0, 1.0], [[0, 0, 1], [0, 0, 1]]), ValueError, "expected at least 4 rows"),
@@ -571,6 +582,75 @@ CASES = [
     (SAMRotation, SAMRotation, (BODY, 0), ValueError, "expected"),
     (SAMRotation, SAMRotation, (BODY, 4, "XAM"), ValueError, "expected"),
     (beta_polynomial_value, beta_polynomial_value, ((1, 2), NAN), ValueError, "expected"),
+    # -- chaotic-obliquity members and statistics (issue 22 item 3)
+    (perturbed_states, perturbed_states, (-1, 1e-6, np.random.default_rng(0)), ValueError, "expected a non"),
+    (perturbed_states, perturbed_states, (2, NAN, np.random.default_rng(0)), ValueError, "perturbation size"),
+    (perturbed_states, perturbed_states, (2, 0.5, np.random.default_rng(0)), ValueError, "perturbation size"),
+    (member_times, member_times, (0.0, 1e3), ValueError, "expected a nonzero end"),
+    (member_times, member_times, (-2e9, 1e3), ValueError, "expected a nonzero end"),
+    (member_times, member_times, (-1e5, NAN), ValueError, "expected an output step"),
+    (member_times, member_times, (-1e5, 2e5), ValueError, "expected an output step"),
+    (member_times, member_times, (-1e9, 1e-3), ValueError, "at most 10 million"),
+    (member_cost, member_cost, (10, -1e5, 1e4, -5.0), ValueError, "spin-axis step"),
+    (
+        member_obliquities,
+        member_obliquities,
+        ("pluto", -1e5, 1e4, np.zeros((1, 16)), AXIS),
+        ValueError,
+        "body",
+    ),
+    (
+        member_obliquities,
+        member_obliquities,
+        ("mars", -1e5, 1e4, np.zeros((1, 15)), AXIS),
+        ValueError,
+        "shape",
+    ),
+    (
+        member_obliquities,
+        member_obliquities,
+        ("mars", -1e5, 1e4, np.full((1, 16), NAN), AXIS),
+        ValueError,
+        "finite",
+    ),
+    (
+        member_obliquities,
+        P(member_obliquities, precession_rate=NAN),
+        ("mars", -1e5, 1e4, np.zeros((1, 16)), AXIS),
+        ValueError,
+        "expected",
+    ),
+    (
+        member_obliquities,
+        P(member_obliquities, precession_rate=7.6, dynamical_ellipticity=0.005),
+        ("mars", -1e5, 1e4, np.zeros((1, 16)), AXIS),
+        ValueError,
+        "got both",
+    ),
+    (
+        member_obliquities,
+        member_obliquities,
+        ("mars", -1e5, 1e4, np.zeros((1, 16)), [0.0, 0.0, 0.0]),
+        ValueError,
+        "non-zero axis",
+    ),
+    (obliquity_statistics, obliquity_statistics, ([0.0, 1.0], np.zeros((2, 3))), ValueError, "shape"),
+    (obliquity_statistics, obliquity_statistics, ([0.0, NAN], np.zeros((2, 2))), ValueError, "finite times"),
+    (obliquity_statistics, obliquity_statistics, ([0.0], np.full((1, 1), INF)), ValueError, "finite obliq"),
+    (
+        obliquity_statistics,
+        P(obliquity_statistics, bins=[1.0, 0.0]),
+        ([0.0], np.zeros((1, 1))),
+        ValueError,
+        "bin",
+    ),
+    (
+        obliquity_statistics,
+        P(obliquity_statistics, thresholds=[NAN]),
+        ([0.0], np.zeros((1, 1))),
+        ValueError,
+        "thresholds",
+    ),
 ]
 
 # Public names without bad numeric input of their own, and why.
@@ -582,6 +662,8 @@ EXEMPT = {
     "NonPhysicalInertiaWarning": "a warning class",
     "OrbitHistory": "a protocol",
     "SpinAxisHistory": "a record of results",
+    "MemberRun": "a record of results",
+    "ObliquityStatistics": "a record of results (its to_dataset has no numeric input)",
     "TidalHistory": "a record of results",
     "NutationSeries": "a record of results",
     "CassiniState": "a record of results",

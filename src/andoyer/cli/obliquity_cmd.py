@@ -6,6 +6,7 @@ import argparse
 
 import numpy as np
 
+from andoyer.cli import obliquity_ensemble
 from andoyer.cli.numbers import finite_number, physical
 from andoyer.cli.output import CliError, add_output_argument, atomic_output
 
@@ -61,8 +62,8 @@ def register(commands: argparse._SubParsersAction) -> None:
         "--step",
         type=finite_number,
         metavar="DT",
-        default=DEFAULT_STEP,
-        help="output step, years (default 1000); below half the period of the fastest angle printed",
+        help="output step, years (default 1000; with --ensemble |span|/1000); below half the period of "
+        "the fastest angle printed",
     )
     strength = parser.add_mutually_exclusive_group()
     strength.add_argument(
@@ -87,6 +88,8 @@ def register(commands: argparse._SubParsersAction) -> None:
     parser.add_argument("--format", choices=("json", "csv", "table"), default="table", help="default table")
     add_output_argument(parser)
     add_output_argument(parser, "--plot", "PNG of obliquity and climatic precession")
+    obliquity_ensemble.add_arguments(parser)
+    parser.epilog += obliquity_ensemble.HELP
     parser.set_defaults(run=run)
 
 
@@ -223,6 +226,10 @@ def run(args: argparse.Namespace) -> int:
     from andoyer.cli.output import write_json, write_rows
     from andoyer.planetary.spin_axis import SpinAxisHistory, output_times, spin_axis_blocks
 
+    if obliquity_ensemble.check(args):
+        return obliquity_ensemble.run(args)
+    if args.step is None:
+        args.step = DEFAULT_STEP
     t0, t1 = args.span
     if not args.step > 0:
         msg = f"expected --step DT > 0 years, got {args.step!r}"

@@ -26,6 +26,7 @@ Examples
 """
 
 from andoyer.ensemble.layout import OUTPUTS, EnsembleSpec
+from andoyer.ensemble.obliquity import MemberPropagator, MemberSampler, obliquity_ensemble
 from andoyer.ensemble.propagators import FreePropagator, Propagator
 from andoyer.ensemble.runner import local_client, run_ensemble
 from andoyer.ensemble.sampling import (
@@ -47,6 +48,8 @@ __all__ = [
     "EnsembleSpec",
     "FreePropagator",
     "InertiaSampler",
+    "MemberPropagator",
+    "MemberSampler",
     "MomentumSampler",
     "Propagator",
     "Sampler",
@@ -55,5 +58,6 @@ __all__ = [
     "chunk_rng",
     "completed_chunks",
     "local_client",
+    "obliquity_ensemble",
     "run_ensemble",
 ]

@@ -6,7 +6,9 @@ Dataset layout (dimensions ``sample``, ``time``, ``component``/``axis``):
 * output ``"state"``: ``quaternion`` (sample, time, quaternion_component = x, y, z, w, scalar
   last, body → reference) and ``m_body`` (sample, time, axis = b1, b2, b3);
   output ``"andoyer"``: ``l, g, h, L, G, H`` (sample, time); output ``"euler"``:
-  ``phi, theta, psi, Phi, Theta, Psi`` (sample, time);
+  ``phi, theta, psi, Phi, Theta, Psi`` (sample, time); output ``"obliquity"``: ``obliquity``
+  (sample, time, radians), from a propagator that returns it by name (a mapping, not a State:
+  a member that stopped has ``NaN`` there, which no State holds);
 * the initial states ``quaternion0`` (sample, quaternion_component) and ``m_body0`` (sample, axis);
 * the sampler's per-sample parameters under their own names (sample, ...), e.g. ``moments``
   (sample, axis);
@@ -50,11 +52,13 @@ OUTPUTS: dict[str, Callable[[State], Arrays]] = {
     "state": lambda s: {"quaternion": s.quaternion, "m_body": s.m_body},
     "andoyer": lambda s: dict(s.as_andoyer()._asdict()),
     "euler": lambda s: dict(s.as_euler()._asdict()),
+    "obliquity": lambda s: {"obliquity": s.as_euler().theta},
 }
 OUTPUT_VARIABLES: dict[str, tuple[str, ...]] = {
     "state": ("quaternion", "m_body"),
     "andoyer": ("l", "g", "h", "L", "G", "H"),
     "euler": ("phi", "theta", "psi", "Phi", "Theta", "Psi"),
+    "obliquity": ("obliquity",),
 }
 
 # ~15 MB of output and ~0.25 s of free-flow work per chunk: enough chunks for a few workers to
@@ -105,7 +109,7 @@ class EnsembleSpec:
     chunk : int
         Samples per chunk.
     seed : int
-    output : {"state", "andoyer", "euler"}
+    output : {"state", "andoyer", "euler", "obliquity"}
     """
 
     sampler: Sampler
@@ -202,11 +206,19 @@ def compute_chunk(spec: EnsembleSpec, index: int) -> Arrays:
         raise ValueError(msg)
     out = spec.propagator(state, spec.times, **parameters)
     want = (n, spec.times.size)
-    if not isinstance(out, State) or out.shape != want:
+    if isinstance(out, Mapping) and set(out) == set(OUTPUT_VARIABLES[spec.output]):
+        # The output's variables by name (values a State cannot hold, such as NaN).
+        arrays: Arrays = {k: np.asarray(v, dtype=np.float64) for k, v in out.items()}
+        if any(a.shape[:2] != want for a in arrays.values()):
+            shapes = {k: a.shape for k, a in arrays.items()}
+            msg = f"expected the propagator's arrays with leading shape {want}, got {shapes}"
+            raise ValueError(msg)
+    elif not isinstance(out, State) or out.shape != want:
         got = out.shape if isinstance(out, State) else type(out).__name__
         msg = f"expected the propagator to return a State of shape {want}, got {got}"
         raise ValueError(msg)
-    arrays: Arrays = {k: np.asarray(v, dtype=np.float64) for k, v in OUTPUTS[spec.output](out).items()}
+    else:
+        arrays = {k: np.asarray(v, dtype=np.float64) for k, v in OUTPUTS[spec.output](out).items()}
     arrays["quaternion0"] = state.quaternion
     arrays["m_body0"] = state.m_body
     for name, given in parameters.items():

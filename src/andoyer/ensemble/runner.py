@@ -203,7 +203,7 @@ def run_ensemble(
         numbers' identity: the same ``(seed, chunk)`` gives the same samples.
     seed : int
         Non-negative seed.
-    output : {"state", "andoyer", "euler"}
+    output : {"state", "andoyer", "euler", "obliquity"}
         Variables written: ``quaternion``/``m_body``, or the chart's six fields.
     scheduler : None, "synchronous", str or distributed.Client
         ``None``: a ``distributed.LocalCluster`` of ``n_workers`` single-threaded workers

@@ -13,6 +13,7 @@ of Colombo's top, whose separatrix is exact).
 * :func:`precession` — precession, obliquity and nutation series of a propagation;
 * :func:`cassini_portrait`, :func:`cassini_geometry` — Colombo's top and its Cassini states.
 * :func:`obliquity_history` — obliquity and climatic precession of spin-axis histories;
+* :func:`obliquity_ensemble_figure` — a chaotic-obliquity ensemble: a few histories and the density;
 * :func:`nutation_plot` — the nutation in longitude and obliquity;
 * :func:`tidal_history_plot` — the Earth–Moon tidal history against the geological constraints.
 
@@ -28,6 +29,7 @@ from andoyer.plot.cassini import CassiniPortrait, cassini_geometry, cassini_port
 from andoyer.plot.contours import default_energies, energy_contour, separatrix_contour
 from andoyer.plot.lara import LARA_LEVELS, LaraPortrait, lara_portrait, lara_portrait_data
 from andoyer.plot.nutation import nutation_plot
+from andoyer.plot.obliquity_ensemble import obliquity_ensemble_figure
 from andoyer.plot.phase import PhasePortrait, phase_portrait, phase_portrait_data
 from andoyer.plot.poinsot import (
     Herpolhode,
@@ -64,6 +66,7 @@ __all__ = [
     "momentum_sphere",
     "momentum_sphere_data",
     "nutation_plot",
+    "obliquity_ensemble_figure",
     "obliquity_history",
     "phase_portrait",
     "phase_portrait_data",

@@ -48,17 +48,27 @@ from andoyer.planetary.spin_axis.history import (
     run_cost,
 )
 from andoyer.planetary.spin_axis.insolation import daily_insolation
+from andoyer.planetary.spin_axis.members import (
+    MemberRun,
+    member_cost,
+    member_obliquities,
+    member_times,
+    perturbed_states,
+)
 from andoyer.planetary.spin_axis.model import (
     ARCSEC,  # noqa: F401 - the doctests use it
     DEFAULT_PRECESSION_RATE,
     EARTH_DYNAMICAL_ELLIPTICITY,
     SpinAxisModel,
 )
+from andoyer.planetary.spin_axis.statistics import ObliquityStatistics, obliquity_statistics
 
 __all__ = [
     "DEFAULT_PRECESSION_RATE",
     "EARTH_DYNAMICAL_ELLIPTICITY",
     "EPSILON_0",
+    "MemberRun",
+    "ObliquityStatistics",
     "SpinAxisHistory",
     "SpinAxisModel",
     "build_model",
@@ -69,7 +79,12 @@ __all__ = [
     "evolve_axes",
     "general_precession",
     "mean_pole_j2000",
+    "member_cost",
+    "member_obliquities",
+    "member_times",
+    "obliquity_statistics",
     "output_times",
+    "perturbed_states",
     "run_cost",
     "spin_axis_blocks",
     "spin_axis_history",

@@ -1,0 +1,72 @@
+"""Spin axes on perturbed secular orbits against the library's own path on the same orbit."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from andoyer.planetary.orbits import SecularOrbit
+from andoyer.planetary.spin_axis import (
+    default_axis,
+    member_obliquities,
+    member_times,
+    perturbed_states,
+    spin_axis_history,
+)
+from andoyer.planetary.spin_axis.members import member_models
+
+
+def test_member_unperturbed_matches_spin_axis_history_on_secular_orbit():
+    """The compiled pass against SecularOrbit + spin_axis_history (numpy interpolation, rotate_stages)."""
+    end, dt = -2e6, 2e4
+    run = member_obliquities("mars", end, dt, np.zeros((1, 16), complex), default_axis("mars"))
+    assert run.orbit_step == pytest.approx(5000.0)
+    assert run.spin_step == pytest.approx(1000.0)
+    orbit = SecularOrbit("mars", step=run.orbit_step)
+    history = spin_axis_history(orbit, "mars", run.t[::-1], step=run.spin_step)
+    assert np.abs(history.obliquity[::-1] - run.obliquity[0]).max() < 1e-11
+
+
+def test_member_seeds_reproduce_and_differ():
+    a = perturbed_states(2, 1e-6, np.random.default_rng(5))
+    b = perturbed_states(2, 1e-6, np.random.default_rng(5))
+    c = perturbed_states(2, 1e-6, np.random.default_rng(6))
+    assert np.array_equal(a, b)
+    assert not np.array_equal(a, c)
+    ra = member_obliquities("mars", -2e5, 5e4, a, default_axis("mars"))
+    rb = member_obliquities("mars", -2e5, 5e4, b, default_axis("mars"))
+    assert np.array_equal(ra.obliquity, rb.obliquity)
+    assert ra.obliquity.shape == (2, 5)
+    assert np.all(np.isfinite(ra.obliquity))
+
+
+def test_member_perturbation_size_in_dimensionless_variables():
+    """Δw/√Λ has the requested RMS size (each complex component: E|z|² = size²)."""
+    from andoyer.planetary.orbits.secular import secular_model
+
+    size = 1e-6
+    d = perturbed_states(4000, size, np.random.default_rng(0))
+    lam = secular_model().Lambda
+    u = d / np.sqrt(np.concatenate([lam, lam]))
+    assert np.sqrt(np.mean(np.abs(u) ** 2)) == pytest.approx(size, rel=0.02)
+
+
+def test_member_moonless_earth_precession_rate_from_first_principles():
+    """ψ̇ = (3/2) (n²/ω) H cos ε (1−e²)^{-3/2}: the Sun alone, today's spin and H (IERS 2010)."""
+    H = 0.0032737949
+    year = 365.25636  # sidereal year, days
+    day = 86164.0905 / 86400.0  # sidereal day, days
+    n, omega = 2 * np.pi / year, 2 * np.pi / day  # rad/day
+    eps, e = np.radians(23.4393), 0.0167
+    normal = np.array([0.0, 0.0, 1.0])
+    axis = np.array([0.0, np.sin(eps), np.cos(eps)])
+    (model,) = member_models("moonless-earth", normal[None], np.array([e]), axis)
+    expected = 1.5 * n**2 / omega * H * 365.25 * np.cos(eps) * (1 - e**2) ** -1.5 * 206264.806
+    assert model.beta == 0.0
+    assert model.precession_rate(eps, e) == pytest.approx(expected, rel=2e-3)
+    (full,) = member_models("earth", normal[None], np.array([e]), axis)
+    assert full.beta > 2.0  # the Moon's torque is the larger part with the Moon
+
+
+def test_member_times_grid():
+    assert member_times(3e5, 1e5).tolist() == [0.0, 1e5, 2e5, 3e5]
