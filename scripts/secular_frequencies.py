@@ -9,7 +9,9 @@ strong line to La2004's values. The N-body run (:class:`~andoyer.planetary.orbit
 4-day step) is cached on disk: 20 Myr cost about 30 CPU minutes once.
 
 Run from the repository root:
-``python3 scripts/secular_frequencies.py [--samples 65536 --every 300] [--json out.json]``.
+``python3 scripts/secular_frequencies.py [--samples 65536 --every 300] [--json out.json]``;
+``--nbody-samples PATH`` reads a stored backward run (an ``.npz`` of the N-body cache's
+``t``, ``normal``, ``ecc``) instead of integrating one.
 """
 
 from __future__ import annotations
@@ -39,6 +41,37 @@ def signals(orbit_of, t: np.ndarray, rotation: np.ndarray) -> tuple[np.ndarray, 
     return z, zeta
 
 
+class _Stored:
+    """One planet's samples of a stored N-body run, read at the sample times only."""
+
+    def __init__(self, t: np.ndarray, normal: np.ndarray, ecc: np.ndarray) -> None:
+        self.t, self._normal, self._ecc = t, normal, ecc
+
+    def _index(self, t: np.ndarray) -> np.ndarray:
+        index = np.clip(np.rint(-np.asarray(t) / self.sample).astype(int), 0, self.t.size - 1)
+        if not np.allclose(self.t[index], t, atol=1e-3 * self.sample):
+            msg = f"expected times on the stored run's {self.sample:g}-yr samples, got others"
+            raise ValueError(msg)
+        return index
+
+    @property
+    def sample(self) -> float:
+        return float(abs(self.t[1] - self.t[0]))
+
+    def normal(self, t: np.ndarray) -> np.ndarray:
+        return self._normal[self._index(t)]
+
+    def eccentricity_vector(self, t: np.ndarray) -> np.ndarray:
+        return self._ecc[self._index(t)]
+
+
+def stored_samples(path: str):
+    """A factory body → orbit over the samples of a stored N-body run (no interpolation)."""
+    with np.load(path) as f:
+        t, normal, ecc = f["t"], f["normal"], f["ecc"]
+    return lambda body: _Stored(t, normal[:, PLANETS.index(body)], ecc[:, PLANETS.index(body)])
+
+
 def distances() -> None:
     """Largest angle between the normals and difference of the e vectors, secular − nbody, for t ≤ 0."""
     for body in ("earth", "mars"):
@@ -62,6 +95,14 @@ def main() -> None:
     parser.add_argument(
         "--distances", action="store_true", help="also the Earth's and Mars' distances from nbody"
     )
+    parser.add_argument(
+        "--nbody-samples",
+        help=(
+            "read the N-body solution from this .npz (arrays t, years from J2000 going back every "
+            "100 yr; normal and ecc, shape (len(t), 8, 3)), e.g. a backward run saved by an "
+            "earlier cache format, instead of integrating it"
+        ),
+    )
     args = parser.parse_args()
     if args.distances:
         distances()
@@ -69,7 +110,9 @@ def main() -> None:
     rotation = secular_model().rotation
     results = {}
     sources = {"secular": SecularOrbit}
-    if not args.no_nbody:
+    if args.nbody_samples:
+        sources["nbody"] = stored_samples(args.nbody_samples)
+    elif not args.no_nbody:
         span = float(-t[0]) + 1000.0
         sources["nbody"] = lambda body: NBodyOrbit(body, max_span=max(span, 5e7), progress=True)
     for name, factory in sources.items():

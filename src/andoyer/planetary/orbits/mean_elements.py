@@ -85,10 +85,16 @@ def poincare_elements(
 
     Examples
     --------
+    A circular orbit of radius 1 about ``m_0 = 1``, ``m_j = 10⁻³``: the relative speed is
+    ``√(m_0 + m_j)``, the planet's barycentric speed ``m_0/(m_0 + m_j)`` of it, so
+    ``p_j = m_j √(m_0 + m_j) m_0/(m_0 + m_j) = β_j √μ_j``:
+
     >>> L, x, y, lam = poincare_elements(1.0, np.array([1e-3]), np.array([[1.0, 0.0, 0.0]]),
-    ...                                  np.array([[0.0, 1e-3 * np.sqrt(1.001), 0.0]]))
+    ...                                  np.array([[0.0, 1e-3 / np.sqrt(1.001), 0.0]]))
     >>> abs(complex(x[0])) < 1e-12, abs(complex(y[0])) < 1e-12
     (True, True)
+    >>> round(float(L[0] / (1e-3 / 1.001 * np.sqrt(1.001))), 12)     # Λ = β √(μ a), a = 1
+    1.0
     """
     beta = sun * gm / (sun + gm)
     mu = sun + gm

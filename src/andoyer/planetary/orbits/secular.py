@@ -25,12 +25,12 @@ step, 13 MB per Gyr); between steps a cubic Hermite interpolant (up to 1″ for 
 normal, 4″ for Mars').
 
 **Validity** (``docs/orbits.md`` has the measurements): the fundamental frequencies ``g_1…g_8``,
-``s_1…s_8`` are within 0.03″/yr of the N-body solution's but ``g_6`` (−0.16″/yr), ``s_6``
-(+0.06″/yr); the Lyapunov time of the inner planets is 4–9 Myr. Beyond a few tens of Myr a
-single solution is one possible history, not a prediction; over 10⁸–10⁹ years the model serves
-statistics. ``span`` is ±1 Gyr. A planet beyond ``e = 0.35`` or ``i = 20°`` (Mercury, in some
-histories of a few hundred Myr) gives a :class:`RuntimeWarning`: the expansion loses accuracy
-there; beyond ``e = 0.6`` or ``i = 40°`` the run stops with a :class:`ValueError`.
+``s_1…s_8`` are within 0.03″/yr of the N-body solution's over 9.8 Myr but ``g_6`` (−0.16″/yr),
+``s_6`` (+0.06″/yr), ``s_2`` (+0.05″/yr); the Lyapunov time of the inner planets is 4–9 Myr. Beyond
+a few tens of Myr a single solution is one possible history, not a prediction; over 10⁸–10⁹ years
+the model serves statistics. ``span`` is ±1 Gyr. A planet beyond ``e = 0.35`` or ``i = 20°``
+(Mercury, in some histories of a few hundred Myr) gives a :class:`RuntimeWarning`: the expansion
+loses accuracy there; beyond ``e = 0.6`` or ``i = 40°`` the run stops with a :class:`ValueError`.
 """
 
 from __future__ import annotations

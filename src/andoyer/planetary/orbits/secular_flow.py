@@ -23,7 +23,7 @@ them gives ``w`` at any time (:func:`hermite`).
 
 Examples
 --------
->>> terms = FlowTerms.from_polynomial(np.array([[1, 0, 1, 0]]), np.array([-0.5 + 0j]), 1)
+>>> terms = FlowTerms.from_polynomial(np.array([[1, 1, 0, 0]]), np.array([-0.5 + 0j]), 1)
 >>> terms.linear.round(12).tolist()      # H = −½ x x̄: ẋ = i x (a frequency of 1)
 [[1j, 0j], [0j, 0j]]
 """
@@ -135,6 +135,12 @@ class FlowTerms:
         for m, c in zip(exponents, coefficients, strict=True):
             if m.sum() == 2:
                 # c w_a w̄_b: ∂H/∂w̄_b gets c w_a, ẇ_b = −2i c w_a.
+                if m[bars].sum() != 1 or m[plain].sum() != 1:
+                    msg = (
+                        "expected quadratic terms of the form w_a w̄_b (one plain and one barred "
+                        f"variable over x, x̄, y, ȳ), got exponents {m.tolist()}"
+                    )
+                    raise ValueError(msg)
                 (b,) = np.nonzero(m[bars])[0]
                 (a,) = np.nonzero(m[plain])[0]
                 linear[b, a] += -2j * c
@@ -435,7 +441,7 @@ def energy(terms: FlowTerms, w: CArray) -> float:
 
     Examples
     --------
-    >>> terms = FlowTerms.from_polynomial(np.array([[1, 0, 1, 0]]), np.array([-0.5 + 0j]), 1)
+    >>> terms = FlowTerms.from_polynomial(np.array([[1, 1, 0, 0]]), np.array([-0.5 + 0j]), 1)
     >>> energy(terms, np.array([2.0 + 0j, 0j]))
     -2.0
     """
