@@ -46,6 +46,10 @@ def add_body_arguments(parser: argparse.ArgumentParser) -> None:
     )
 
 
+#: Longest drift timescale taken (years): over the longest orbit (1 Gyr) it moves alpha by 1e-6.
+MAX_DRIFT_TIMESCALE = 1e15
+
+
 def resolve_body(args: argparse.Namespace) -> tuple[Any, str | None, str, float]:
     """``(body, planet, default orbit source, drift per year)`` of the command line.
 
@@ -61,8 +65,12 @@ def resolve_body(args: argparse.Namespace) -> tuple[Any, str | None, str, float]
         raise CliError(msg)
     drift = 0.0
     if args.drift_timescale is not None:
-        if args.drift_timescale == 0:
-            msg = "expected --drift-timescale TAU nonzero (years; alpha = alpha0 (1 + t/TAU)), got 0"
+        if not 0 < abs(args.drift_timescale) <= MAX_DRIFT_TIMESCALE:
+            msg = (
+                f"expected 0 < |--drift-timescale TAU| <= {MAX_DRIFT_TIMESCALE:g} years "
+                "(alpha = alpha0 (1 + t/TAU); a longer TAU drifts alpha by under 1e-6 over the "
+                f"secular orbit's 1 Gyr), got {args.drift_timescale:g}"
+            )
             raise CliError(msg)
         drift = 1.0 / args.drift_timescale
     if args.body_file is None:

@@ -90,6 +90,9 @@ DEFAULT_TOLERANCE = 0.01 * ARCSEC
 #: The smallest tolerance taken, radians: the round-off of the axis over a run. Measured: runs at
 #: 1 and 2 years (order 8, Mars on the N-body orbit over 1 Myr, 10⁶ steps) differ by 3e-13 rad.
 SMALLEST_TOLERANCE = 1e-12
+#: The largest tolerance taken, radians (one degree): an axis known no better is no answer, and
+#: the step doubling starts from steps that already meet it.
+LARGEST_TOLERANCE = float(np.pi / 180.0)
 #: Halvings of the step tried before a tolerance is given up (with a ToleranceWarning):
 #: 1000 years down to a quarter of a year.
 MAX_HALVINGS = 12
@@ -874,7 +877,7 @@ def _evolve_outputs(
 
 
 def check_tolerance(tolerance: float) -> float:
-    """``tolerance`` (radians) as a float, refused unless finite and at least :data:`SMALLEST_TOLERANCE`.
+    """``tolerance`` (radians) as a float, refused outside [SMALLEST_TOLERANCE, LARGEST_TOLERANCE].
 
     Examples
     --------
@@ -897,6 +900,9 @@ def check_tolerance(tolerance: float) -> float:
             f"expected a tolerance of at least {SMALLEST_TOLERANCE:g} rad (the axis' round-off over a run), "
             f"got {tolerance!r}"
         )
+        raise ValueError(msg)
+    if value > LARGEST_TOLERANCE:
+        msg = f"expected a tolerance of at most {LARGEST_TOLERANCE:.6g} rad (one degree), got {tolerance!r}"
         raise ValueError(msg)
     return value
 
