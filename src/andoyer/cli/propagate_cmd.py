@@ -20,6 +20,7 @@ from andoyer.cli.named_models import MODELS, add_model_arguments, model_from_arg
 from andoyer.cli.output import CliError, add_output_argument, atomic_output, format_rows
 from andoyer.free_rotation import FreeRotation
 from andoyer.integrate.propagation import propagate
+from andoyer.integrate.splitting import LARGEST_RTOL, SMALLEST_RTOL
 
 EXAMPLES = """examples:
   andoyer propagate --body eros --from andoyer --values 0.1 0.2 0.3 0.99 1.0 0.5 --times 0 10 100
@@ -136,8 +137,8 @@ def _method_options(args: argparse.Namespace, method: str) -> dict[str, float]:
             raise CliError(msg)
         return {}
     if args.rtol is not None:
-        if not (np.isfinite(args.rtol) and args.rtol > 0):
-            msg = f"expected a positive finite --rtol, got {args.rtol!r}"
+        if not (np.isfinite(args.rtol) and SMALLEST_RTOL <= args.rtol <= LARGEST_RTOL):
+            msg = f"expected an --rtol from {SMALLEST_RTOL:g} to {LARGEST_RTOL:g}, got {args.rtol!r}"
             raise CliError(msg)
         options = {"rtol": args.rtol, "order": args.order or 4}
         return options if args.step is None else {**options, "step": args.step}

@@ -278,6 +278,9 @@ def _count_steps(unique: Array, t0: float, step: float) -> float:
 
 #: The smallest ``rtol`` taken: the round-off of the momentum over a long run of substeps.
 SMALLEST_RTOL = 1e-13
+#: The largest ``rtol`` taken: step doubling estimates the error only while it is small, and a
+#: relative error of ten per cent leaves no digit of the momentum.
+LARGEST_RTOL = 0.1
 #: Halvings of the step tried before an ``rtol`` is given up (with a ToleranceWarning).
 MAX_HALVINGS = 24
 
@@ -310,6 +313,9 @@ def _check_rtol(rtol: float) -> float:
         raise ValueError(msg)
     if value < SMALLEST_RTOL:
         msg = f"expected an rtol of at least {SMALLEST_RTOL:g} (the momentum's round-off), got {rtol!r}"
+        raise ValueError(msg)
+    if value > LARGEST_RTOL:
+        msg = f"expected an rtol of at most {LARGEST_RTOL:g} (a relative error of the momentum), got {rtol!r}"
         raise ValueError(msg)
     return value
 
@@ -401,7 +407,7 @@ def integrate_splitting(
     t0 : float
     rtol : float, optional
         The relative error wanted in the reference-frame angular momentum ``M`` over the
-        outputs (at least 1e-13). Runs at ``h`` and ``h/2`` are compared and the step
+        outputs (from 1e-13 to 0.1). Runs at ``h`` and ``h/2`` are compared and the step
         halved until ``max |M_h − M_{h/2}| / |M| ≤ rtol``; the fine run is returned as a
         :class:`SplittingState` whose ``error_estimate`` is that distance (conservative:
         the fine run's error is below it whenever halving the step at least halves the
