@@ -93,7 +93,8 @@ def new_name(fullname: str) -> str | None:
 class _Alias(importlib.abc.Loader):
     """Loads an old name as the module at its new place."""
 
-    def __init__(self, target: str) -> None:
+    def __init__(self, old_name: str, target: str) -> None:
+        self.old_name = old_name
         self.target = target
 
     def create_module(self, spec: importlib.machinery.ModuleSpec) -> ModuleType:
@@ -113,6 +114,31 @@ class _Alias(importlib.abc.Loader):
         spec; the module must keep its own (``importlib.resources`` reads it).
         """
         module.__spec__ = self.spec
+        parent = sys.modules.get(self.old_name.rpartition(".")[0])
+        old_leaf = self.old_name.rpartition(".")[2]
+        if parent is not None and old_leaf != self.target.rpartition(".")[2] and type(parent) is ModuleType:
+            parent.__class__ = _KeepsOwnChildren
+
+
+class _KeepsOwnChildren(ModuleType):
+    """A package whose children an old name's import cannot hide.
+
+    After ``exec_module`` the import system binds the old leaf on the old parent, which is the
+    new package itself. Where the leaf was renamed (``andoyer.orbits.secular`` is
+    ``andoyer.planetary.orbits.laplace_lagrange``) that binding would replace the package's own
+    child of that name (the long secular model, ``andoyer.planetary.orbits.secular``): a sibling
+    module bound under another name than its own is not taken. The old name still imports its
+    module (``from andoyer.orbits.secular import LaplaceLagrangeOrbit``, ``sys.modules``).
+    """
+
+    def __setattr__(self, name: str, value: object) -> None:
+        if (
+            isinstance(value, ModuleType)
+            and value.__name__.rpartition(".")[0] == self.__name__
+            and value.__name__ != f"{self.__name__}.{name}"
+        ):
+            return
+        super().__setattr__(name, value)
 
 
 class _Finder(importlib.abc.MetaPathFinder):
@@ -124,7 +150,7 @@ class _Finder(importlib.abc.MetaPathFinder):
         new = new_name(fullname)
         if new is None:
             return None
-        return importlib.util.spec_from_loader(fullname, _Alias(new))
+        return importlib.util.spec_from_loader(fullname, _Alias(fullname, new))
 
 
 def install() -> None:

@@ -51,6 +51,27 @@ def test_moved_submodule_and_attribute_access():
     ]
 
 
+def test_moved_renamed_leaf_keeps_the_new_child():
+    # andoyer.orbits.secular (the Laplace-Lagrange theory) must not hide the package's own
+    # andoyer.planetary.orbits.secular (the long model) once imported
+    code = (
+        "import warnings\n"
+        "warnings.simplefilter('ignore')\n"
+        "from andoyer.orbits.secular import LaplaceLagrangeOrbit\n"
+        "import andoyer.planetary.orbits as package\n"
+        "from andoyer.planetary.orbits import secular\n"
+        "import sys\n"
+        "print(package.secular.__name__, secular.__name__, LaplaceLagrangeOrbit.__module__)\n"
+        "print(sys.modules['andoyer.orbits.secular'].__name__)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.splitlines() == [
+        ("andoyer.planetary.orbits.secular andoyer.planetary.orbits.secular "
+         "andoyer.planetary.orbits.laplace_lagrange"),
+        "andoyer.planetary.orbits.laplace_lagrange",
+    ]
+
+
 def test_moved_new_name_cases():
     assert new_name("andoyer.cassini") == "andoyer.planetary.cassini"
     assert new_name("andoyer.spin_axis.model") == "andoyer.planetary.spin_axis.model"

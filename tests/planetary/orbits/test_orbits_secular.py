@@ -350,14 +350,7 @@ def test_obliquity_command_takes_both_secular_sources(capsys, source):
 
 
 def _secular_module():
-    """The module of the long secular model, from ``sys.modules``.
-
-    Not ``from andoyer.planetary.orbits import secular``: once the old name
-    ``andoyer.orbits.secular`` has been imported (``tests/core/test_moved.py`` imports every old
-    name), the import system sets the package's attribute ``secular`` to what that old name
-    stands for, the Laplace–Lagrange module (``andoyer._moved``; the package object is shared
-    with ``andoyer.orbits``), and the monkeypatching would miss the model.
-    """
+    """The module of the long secular model (monkeypatched below), from ``sys.modules``."""
     return importlib.import_module("andoyer.planetary.orbits.secular")
 
 
