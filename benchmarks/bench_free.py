@@ -31,8 +31,9 @@ kept from the run before it (measured: the periodic momentum 5.7 ms after itself
 after heyoka's attitude run, 1287 page faults a call), so the in-process figures depend on
 the order of the runs.
 
-Run: ``python3 benchmarks/bench_free.py [--quick] [--epochs [--fresh] | --setup]``  (pins numpy to one
-thread; rates are per CPU second of the timed process, so they do not depend on other load on the machine).
+Run: ``python3 benchmarks/bench_free.py [--quick] [--epochs [--fresh] | --setup | --breakdown]``
+(pins numpy to one thread; rates are per CPU second of the timed process, so they do not depend on other
+load on the machine).
 """
 
 from __future__ import annotations
@@ -358,11 +359,61 @@ def setup_scaling(sizes, repeat):
               f" ratio to {sizes[0]}: {min(times[n]) / min(times[sizes[0]]):.2f}x")
 
 
+def breakdown(n_bodies, n_epochs, repeat):
+    """Issue 25 item 2: where the time of ``n_bodies`` x ``n_epochs`` with the set-up included goes.
+
+    The set-up alone, the set-up with the periodic representation built (what the many-epoch
+    path would pay before its first epoch), the direct evaluation (the automatic choice below
+    :attr:`FreeMotion.periodic_epochs`) with and without the attitude, and the numba loop of
+    one ``sin`` and one ``cos`` per pair as the machine's yardstick, interleaved in this process.
+    """
+    moments, m0, q0, t = workload(n_bodies, n_epochs)
+    big = (moments[:, None], m0[:, None], q0[:, None])
+
+    def built():
+        fm = FreeMotion(*big)
+        fm._periodic_groups(True)
+
+    runs = {
+        "momentum + attitude (set-up included)": lambda: FreeMotion(*big).propagate(t),
+        "momentum (set-up included)": lambda: FreeMotion(*big[:2]).momentum(t),
+        "set-up alone (with q0)": lambda: FreeMotion(*big),
+        "set-up + periodic build (attitude)": built,
+    }
+    if NUMBA:
+        loop = sincos_yardstick()
+        out = np.empty((*t.shape, 2))
+        w = 1.0 / FreeMotion(moments, m0).periods.period
+        loop(w, t[:1], out[:1])  # compile
+        runs[SINCOS] = lambda: loop(w, t, out)
+    for fn in runs.values():
+        fn()  # compile and warm
+    times = {k: [] for k in runs}
+    for _ in range(repeat):
+        for k, fn in runs.items():
+            t0 = time.process_time()
+            fn()
+            times[k].append(time.process_time() - t0)
+    auto = "periodic" if n_epochs >= FreeMotion.periodic_epochs else "direct"
+    print(f"{n_bodies} bodies x {n_epochs} sorted random epochs in [0, 100 periods], {repeat} runs"
+          " interleaved"
+          f" (CPU time, one core); automatic choice: {auto}")
+    print(f"{'run':46s} {'best ms':>9s} {'median ms':>10s} {'pairs/s':>10s}")
+    for k, ts in times.items():
+        print(f"{k:46s} {min(ts) * 1e3:9.1f} {np.median(ts) * 1e3:10.1f} {t.size / min(ts):10.3e}")
+    if SINCOS in times:
+        for k in ("momentum + attitude (set-up included)", "momentum (set-up included)"):
+            print(f"{k}: rate / sin+cos loop {min(times[SINCOS]) / min(times[k]):.3f}"
+                  f" (median {np.median(times[SINCOS]) / np.median(times[k]):.3f})")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="small sizes (smoke run)")
     ap.add_argument("--epochs", action="store_true", help="many epochs per body (10 x 1e5)")
     ap.add_argument("--setup", action="store_true", help="set-up per body from 1e4 to 1e6 bodies")
+    ap.add_argument("--breakdown", action="store_true",
+                    help="1000 x 2000 with the set-up included: where the time goes")
     ap.add_argument("--repeat", type=int, default=5, help="interleaved runs of --epochs/--setup")
     ap.add_argument("--fresh", action="store_true",
                     help="--epochs: time each run in a fresh process of its own (interleaved)")
@@ -372,6 +423,9 @@ def main():
     args = ap.parse_args()
     if args.time_one:
         time_one(args.time_one, args.bodies, args.epochs_per_body)
+        return
+    if args.breakdown:
+        breakdown(200 if args.quick else 1000, 500 if args.quick else 2000, args.repeat)
         return
     if args.epochs:
         many_epochs(10, 5000 if args.quick else 100_000, args.repeat, fresh=args.fresh)
