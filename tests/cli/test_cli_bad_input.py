@@ -206,6 +206,10 @@ ENSEMBLE_BAD = (
     ("workers", "obliquity mars --span -20000 0 --ensemble 2 --workers 0 --output {out}"),
     ("step", f"{ENSEMBLE} --ensemble 2 --step 1e6"),
     ("size", "obliquity mars --span -1e9 0 --step 1 --ensemble 100000 --output {out}"),
+    ("body-file", "obliquity --body-file saturn.json --ensemble 2 --span -20000 0 --output {out}"),
+    ("no-body", "obliquity --ensemble 2 --span -20000 0 --output {out}"),
+    ("planet", f"{ENSEMBLE.replace('mars', 'saturn')} --ensemble 2"),
+    ("drift", f"{ENSEMBLE} --ensemble 2 --drift-timescale 1e9"),
 )
 
 #: Requests refused for their size (issue 26): (command, case, argument line).

@@ -151,7 +151,7 @@ def test_cli_obliquity_body_file(run_cli, tmp_path):
     [
         ([], "expected a BODY or a --body-file PATH, got neither"),
         (["saturn", "--body-file", "x.json"], "expected a BODY or a --body-file PATH, got both"),
-        (["saturn", "--drift-timescale", "0"], "expected --drift-timescale TAU nonzero"),
+        (["saturn", "--drift-timescale", "0"], "expected 0 < |--drift-timescale TAU| <= 1e+15 years"),
         (["saturn", "--drift-timescale", "nan"], "expected a finite number"),
         (["jupiter", "--tidal-dissipation", "1"], "expected tidal dissipation 0 for a planet without a moon"),
         (
@@ -176,3 +176,19 @@ def test_cli_obliquity_body_file_of_another_name_needs_a_table(run_cli, tmp_path
     code, _, err = run_cli("obliquity", "--body-file", str(path))
     assert code == 2
     assert "expected --orbit PATH (an orbit table) for the body file's 'Exo b'" in err
+
+
+def test_cli_obliquity_body_file_ensemble_refused_in_one_line(run_cli, tmp_path):
+    """The ensemble's members are Mars' and the Earth's: a body file is refused naming both sides."""
+    path = tmp_path / "saturn.json"
+    path.write_text(json.dumps(catalogue.get("saturn").to_dict()))
+    code, out, err = run_cli(
+        "obliquity", "--body-file", str(path), "--ensemble", "3", "--output", str(tmp_path / "out.json")
+    )
+    assert (code, out) == (2, "")
+    line = (
+        "andoyer obliquity: error: expected a BODY in mars, earth with --ensemble (its members are those "
+        f"bodies' spin axes), got --body-file {str(path)!r}"
+    )
+    assert err.strip().splitlines() == [line]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["saturn.json"]
