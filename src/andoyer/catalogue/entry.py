@@ -135,6 +135,8 @@ class Body:
     pole_ra_rate: Q = None
     pole_dec: Q = None
     pole_dec_rate: Q = None
+    pole_ra_periodic: Q = None
+    pole_dec_periodic: Q = None
     obliquity: Q = None
     precession_rate: Q = None
     resonance: Q = None

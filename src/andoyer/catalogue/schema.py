@@ -12,7 +12,10 @@ Conventions (radians inside the code, the units below in the files):
   moments over the largest, ``A ≤ B ≤ C``.
 * ``pole_ra``, ``pole_dec``, ``prime_meridian``, ``rotation_rate``: the IAU WGCCRE model
   ``α = α₀ + α̇ T``, ``δ = δ₀ + δ̇ T``, ``W = W₀ + Ẇ d`` (``T`` Julian centuries and ``d`` days
-  from J2000 TDB), ICRF; a negative ``Ẇ`` is a retrograde rotation.
+  from J2000 TDB), ICRF; a negative ``Ẇ`` is a retrograde rotation. Where the model has periodic
+  terms (``Σ a_k sin M_k`` in ``α``, ``Σ b_k cos M_k`` in ``δ``), ``pole_ra_periodic`` and
+  ``pole_dec_periodic`` are their sums at J2000 (each entry's note lists the terms): the pole at
+  J2000 is ``(pole_ra + pole_ra_periodic, pole_dec + pole_dec_periodic)``.
 * ``precession_rate`` ``ψ̇``: the measured rate of the spin axis about the orbit normal
   (luni-solar precession of the equator for the Earth), positive westward.
 * orbit: about ``primary``, in ``orbit_frame`` at ``orbit_epoch``; ``node_period`` and
@@ -142,6 +145,28 @@ _TABLE = (
     _f("pole_ra_rate", "angular rate", "deg/cy", -INF, INF, True, True, "spin", "IAU alpha0 rate"),
     _f("pole_dec", "angle", "deg", -90, 90, False, False, "spin", "IAU pole declination delta0, ICRF"),
     _f("pole_dec_rate", "angular rate", "deg/cy", -INF, INF, True, True, "spin", "IAU delta0 rate"),
+    _f(
+        "pole_ra_periodic",
+        "angle",
+        "deg",
+        -INF,
+        INF,
+        True,
+        True,
+        "spin",
+        "IAU periodic terms of alpha0 summed at J2000 (the J2000 pole is pole_ra + this)",
+    ),
+    _f(
+        "pole_dec_periodic",
+        "angle",
+        "deg",
+        -INF,
+        INF,
+        True,
+        True,
+        "spin",
+        "IAU periodic terms of delta0 summed at J2000 (the J2000 pole is pole_dec + this)",
+    ),
     _f("obliquity", "angle", "deg", 0, 180, False, False, "spin", "obliquity: spin axis to orbit normal"),
     _f(
         "precession_rate",
