@@ -119,6 +119,10 @@ VALID: dict[str, Valid] = {
             ),
             "obliquity earth --span -1000 1000 --step 100 --precession-rate 500 --output {out}",
             "obliquity saturn --span -100000 100000 --step 10000 --drift-timescale 4e9 --output {out}",
+            (
+                "obliquity saturn --span -20000 20000 --step 10000 --migration titan --migration-index 0.5 "
+                "--migration-age 4e9 --output {out}"
+            ),
             "obliquity earth --span -1000 1000 --step 500 --tolerance 0.001 --format json --output {out}",
             "obliquity earth --span -2000 0 --step 1000 --tides constant-lag --format json --output {out}",
             (

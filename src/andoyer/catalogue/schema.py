@@ -167,6 +167,7 @@ _TABLE = (
         "spin",
         "IAU periodic terms of delta0 summed at J2000 (the J2000 pole is pole_dec + this)",
     ),
+    _f("age", "time", "Gyr", 0, INF, True, True, "physical", "age at J2000 (the Sun: the solar system's)"),
     _f("obliquity", "angle", "deg", 0, 180, False, False, "spin", "obliquity: spin axis to orbit normal"),
     _f(
         "precession_rate",
@@ -193,6 +194,17 @@ _TABLE = (
     _f("orbital_period", "time", "d", 0, INF, True, True, "orbit", "sidereal orbital period"),
     _f("node_period", "time", "yr", 0, INF, True, True, "orbit", "period of the node's regression"),
     _f("apsis_period", "time", "yr", 0, INF, True, True, "orbit", "period of the apsis's advance"),
+    _f(
+        "migration_rate",
+        "speed",
+        "cm/yr",
+        -INF,
+        INF,
+        True,
+        True,
+        "orbit",
+        "measured present rate da/dt of the semi-major axis (tidal migration)",
+    ),
     _f(
         "laplace_inclination",
         "angle",
