@@ -15,7 +15,8 @@ raise the obliquity: Saturn and ``s8`` as Titan migrates (Saillenfest, Lari & Bo
 Nature Astron. 5, 345; Saillenfest, Lari, Boué & Courtot 2021, A&A 647, A92), Jupiter and
 ``s7`` as the Galilean satellites do (Saillenfest, Lari & Courtot 2020, A&A 640, A11).
 
-**The migration law** is the power law of those papers,
+**The migration law** is a power law in the time since the satellites formed (the form
+Saillenfest et al. 2021 give Titan's migration),
 
 .. math:: a_k(t) = a_k(0) \Big(1 + \frac{t}{T_0}\Big)^{b},
 
