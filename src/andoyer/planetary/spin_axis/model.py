@@ -386,9 +386,15 @@ class SpinAxisModel:
                 raise ValueError(msg)
             factors = (1 + self.tide_spin * t, 1 + self.tide_moon * t)
             if not min(factors) > 0:
+                # 1 + k t vanishes at t = -1/k: the model's horizon on that side of J2000
+                edge = min(
+                    (-1 / k for k in (self.tide_spin, self.tide_moon) if k != 0 and -1 / k * t > 0),
+                    key=abs,
+                )
                 msg = (
-                    f"expected a span over which the linear tidal model stays positive, got the factor "
-                    f"{min(factors):.4g} at t = {t:g} years"
+                    f"expected a span within the linear tidal model's range (its factors 1 + k t reach "
+                    f"zero at t = {edge:.4g} years), got t = {t:g} years; a smaller tidal dissipation "
+                    f"(0: none) or the Earth-Moon tidal model (obliquity --tides) reaches further"
                 )
                 raise ValueError(msg)
 
