@@ -25,7 +25,7 @@ with their satellites (andoyer precession BODY); --drift-timescale TAU drifts it
 alpha(t) = alpha0 (1 + t/TAU), or --migration SATELLITE moves that satellite out as
 a(t) = a0 (1 + t/T0)^B (--migration-index B, default from its measured rate: Titan 11.3 cm/yr;
 --migration-age T0, default the solar system's 4.5673e9 years; docs/spin-axis.md):
-  andoyer obliquity saturn --migration titan --span -1e9 0 --step 1e5 --format csv
+  andoyer obliquity saturn --migration titan --span -1e9 0 --step 1e4 --format csv
   andoyer obliquity earth --orbit secular --tides ocean --span -1e8 0 --step 1000 --format csv
 T0, T1 and DT are Julian years from J2000 (negative = past); output at T0, T0+DT, ..., T1.
 --precession-rate P is the rate of the luni-solar precession psi_A at J2000 in arcsec per Julian
