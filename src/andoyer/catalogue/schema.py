@@ -26,7 +26,7 @@ Examples
 >>> FIELDS["moment_of_inertia"].describe_bounds()
 'in (0, 2/3]'
 >>> sorted(FIELDS)[:3]
-['a_over_c', 'apsis_period', 'argument_of_periapsis']
+['a_over_c', 'age', 'apsis_period']
 """
 
 from __future__ import annotations
