@@ -54,6 +54,7 @@ from numpy.typing import ArrayLike, NDArray
 from andoyer import catalogue
 from andoyer.catalogue import Body
 from andoyer.catalogue.units import JULIAN_YEAR
+from andoyer.planetary.parameters import check
 from andoyer.planetary.precession_constant import precession_constant
 from andoyer.planetary.spin_axis.model import SpinAxisModel
 
@@ -220,7 +221,8 @@ def satellite_migration(
         ``b``, finite (negative: an inward migration). Default: from the satellite's catalogued
         ``migration_rate``, ``b = ȧ T0 / a``.
     age : float, optional
-        ``T0`` in years, > 0. Default: the Sun's catalogued ``age`` (Connelly et al. 2012).
+        ``T0`` in years, ``0 < T0 ≤`` 13.787 Gyr (:mod:`andoyer.planetary.parameters`). Default: the
+        Sun's catalogued ``age`` (Connelly et al. 2012).
 
     Returns
     -------
@@ -258,10 +260,7 @@ def satellite_migration(
     moon = catalogue.get(wanted)
     if age is None:
         age = catalogue.get("sun").require("age", "the migration's age").to("yr")
-    age = _finite("age T0 (years)", age)
-    if not age > 0:
-        msg = f"expected an age T0 > 0 years, got {age!r}"
-        raise ValueError(msg)
+    age = check("migration_age", age)
     if index is None:
         rate = moon.require("migration_rate", "the index b of its migration").si()
         a = moon.require("semi_major_axis", "the index b of its migration").si()

@@ -124,7 +124,7 @@ def test_migration_resonance_crossing_matches_dop853():
         (("venus", "titan"), "among none"),
         (("saturn", "enceladus"), "expected Enceladus to have migration_rate"),
         (("saturn", "titan", math.nan), "expected a finite real index b"),
-        (("saturn", "titan", 0.4, -1.0), "expected an age T0 > 0 years"),
+        (("saturn", "titan", 0.4, -1.0), "expected a migration age 0 < T0 <= "),
     ],
 )
 def test_migration_bad_input(args, message):
@@ -171,7 +171,7 @@ def test_cli_obliquity_migration_runs_and_grows_the_precession(run_cli):
             ["saturn", "--migration", "titan", "--migration-age", "5e8", "--span", "-6e8", "0"],
             "expected a span after the satellites formed",
         ),
-        (["saturn", "--migration", "titan", "--migration-age", "-1"], "expected an age T0 > 0 years"),
+        (["saturn", "--migration", "titan", "--migration-age", "-1"], "expected a migration age 0 < T0 <= "),
         (
             ["saturn", "--migration", "titan", "--precession-rate", "0.7"],
             "expected the planet's figure and satellites with --migration",
