@@ -90,12 +90,13 @@ def main() -> None:
     ours_error = np.abs(ours - reference).max() / np.abs(reference).max()
 
     powers = np.empty(4 * terms.count * terms.width, complex)
+    node = np.empty(terms.parent.size, complex)
     nonlinear = np.empty(16, complex)
     arrays = terms.arrays()
 
     def rhs(_t, y):
         w = y[:16] + 1j * y[16:]
-        flow._nonlinear(w, 8, *arrays, powers, nonlinear)
+        flow._nonlinear(w, 8, *arrays, powers, node, nonlinear)
         dw = terms.linear @ w + nonlinear
         return np.concatenate([dw.real, dw.imag])
 

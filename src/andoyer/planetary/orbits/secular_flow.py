@@ -37,7 +37,9 @@ from numpy.typing import NDArray
 
 from andoyer._jit import jit
 
-__all__ = ["FlowTerms", "default_step", "energy", "hermite", "integrate", "lawson_matrices"]
+__all__ = [
+    "FlowTerms", "default_step", "energy", "hermite", "integrate", "lawson_matrices", "product_tree",
+]  # fmt: skip
 
 CArray = NDArray[np.complex128]
 IArray = NDArray[np.int64]
@@ -55,18 +57,19 @@ class FlowTerms:
         ``L``: ``ẇ = L w`` from the quadratic terms and relativity's quadratic part.
     width : int
         One more than the highest power of a variable in a monomial.
-    target : numpy.ndarray of int32, shape (T,)
-        Component ``b`` of ``∂H/∂w̄_b`` each derivative monomial adds to.
-    coefficient : numpy.ndarray, shape (T,)
-        Real coefficients (the secular Hamiltonian's are real in these variables: it is even
-        under ``(x, y) → (x̄, ȳ)``, the mirror image of the system with time reversed).
-    factors : numpy.ndarray of int32, shape (T, F)
-        Row ``d`` is ``coefficient[d] Π_f powers[factors[d, f]]`` with
-        ``powers[v·width + p] = w_v^p`` (variables ``0…4P−1`` = ``x, x̄, y, ȳ``); unused
-        slots hold 0 (``w_0^0 = 1``).
-    groups : numpy.ndarray of int, shape (F + 1,)
-        Rows ``groups[n−1]`` to ``groups[n]`` have ``n`` factors (the kernel's inner loop
-        is as long as needed).
+    parent, factor : numpy.ndarray of int32, shape (M,)
+        The distinct derivative monomials as a product tree: ``node[0] = 1`` and
+        ``node[k] = node[parent[k]] · powers[factor[k]]`` (``parent[k] < k``), with
+        ``powers[v·width + p] = w_v^p`` (variables ``0…4P−1`` = ``x, x̄, y, ȳ``). A monomial's
+        factors are sorted by variable, so monomials that share their leading factors share
+        the nodes of those partial products: one complex multiplication per node.
+    row_start : numpy.ndarray of int64, shape (2P + 1,)
+    row_node : numpy.ndarray of int32, shape (T,)
+    row_coefficient : numpy.ndarray, shape (T,)
+        ``∂H/∂w̄_b = Σ row_coefficient[d] node[row_node[d]]`` over ``d`` from ``row_start[b]``
+        to ``row_start[b+1]`` (a sparse matrix by rows). The coefficients are real (the
+        secular Hamiltonian's are in these variables: it is even under ``(x, y) → (x̄, ȳ)``,
+        the mirror image of the system with time reversed).
     energy_coefficient : numpy.ndarray, shape (E,)
     energy_factors : numpy.ndarray of int32, shape (E, F + 1)
         The polynomial itself, in the same layout (for :func:`energy`).
@@ -77,10 +80,11 @@ class FlowTerms:
     count: int
     linear: CArray
     width: int
-    target: NDArray[np.int32]
-    coefficient: NDArray[np.float64]
-    factors: NDArray[np.int32]
-    groups: IArray
+    parent: NDArray[np.int32]
+    factor: NDArray[np.int32]
+    row_start: IArray
+    row_node: NDArray[np.int32]
+    row_coefficient: NDArray[np.float64]
     energy_coefficient: NDArray[np.float64]
     energy_factors: NDArray[np.int32]
     gr_constant: NDArray[np.float64]
@@ -173,9 +177,9 @@ class FlowTerms:
                 reduced[column] -= 1
                 nz = np.nonzero(reduced)[0]
                 rows.append((b, c * m[column], (nz * width + reduced[nz]).tolist()))
-        rows.sort(key=lambda row: (len(row[2]), row[0]))
-        most = max([len(f) for _, _, f in rows], default=1)
-        sizes = np.bincount([len(f) for _, _, f in rows], minlength=most + 1)[1:]
+        parent, factor, node_of = product_tree([f for _, _, f in rows])
+        order = sorted(range(len(rows)), key=lambda d: (rows[d][0], node_of[d]))
+        row_start = np.searchsorted([rows[d][0] for d in order], np.arange(2 * P + 1)).astype(np.int64)
         energy = [
             (c, (np.nonzero(m)[0] * width + m[np.nonzero(m)[0]]).tolist())
             for m, c, k in zip(exponents, coefficients, kept, strict=True)
@@ -186,12 +190,11 @@ class FlowTerms:
             count=P,
             linear=linear,
             width=width,
-            target=np.array([b for b, _, _ in rows], dtype=np.int32),
-            coefficient=np.array([c for _, c, _ in rows], dtype=float),
-            factors=np.array([f + [0] * (most - len(f)) for _, _, f in rows], dtype=np.int32).reshape(
-                -1, most
-            ),
-            groups=np.concatenate([[0], np.cumsum(sizes)]).astype(np.int64),
+            parent=parent,
+            factor=factor,
+            row_start=row_start,
+            row_node=np.array([node_of[d] for d in order], dtype=np.int32),
+            row_coefficient=np.array([rows[d][1] for d in order], dtype=float),
             energy_coefficient=np.array([c for c, _ in energy], dtype=float),
             energy_factors=np.array([f + [0] * (wide - len(f)) for _, f in energy], dtype=np.int32).reshape(
                 -1, wide
@@ -204,10 +207,11 @@ class FlowTerms:
         """The arrays the compiled kernels take, in their order."""
         return (
             self.width,
-            self.target,
-            self.coefficient,
-            self.factors,
-            self.groups,
+            self.parent,
+            self.factor,
+            self.row_start,
+            self.row_node,
+            self.row_coefficient,
             self.gr_constant,
             self.gr_lambda,
         )
@@ -234,23 +238,58 @@ def _powers(w, P, width, out) -> None:
 
 
 @jit
-def _nonlinear(w, P, width, target, coefficient, factors, groups, gr_constant, gr_lambda, powers, out):
+def _nonlinear(
+    w, P, width, parent, factor, row_start, row_node, row_coefficient, gr_constant, gr_lambda, powers, node,
+    out,
+) -> None:  # fmt: skip
     """``N(w)``: the flow of the terms of degree ≥ 4 and of relativity beyond its quadratic part."""
     _powers(w, P, width, powers)
+    node[0] = 1.0
+    for k in range(1, parent.size):
+        node[k] = node[parent[k]] * powers[factor[k]]
     for b in range(2 * P):
-        out[b] = 0.0
-    for n in range(1, groups.size):
-        for d in range(groups[n - 1], groups[n]):
-            value = powers[factors[d, 0]]
-            for f in range(1, n):
-                value = value * powers[factors[d, f]]
-            out[target[d]] += coefficient[d] * value
-    for b in range(2 * P):
-        out[b] = -2j * out[b]
+        acc = 0.0 + 0.0j
+        for d in range(row_start[b], row_start[b + 1]):
+            acc += row_coefficient[d] * node[row_node[d]]
+        out[b] = -2j * acc
     for j in range(P):
         if gr_constant[j] != 0.0:
             s = (w[j].real * w[j].real + w[j].imag * w[j].imag) / (2.0 * gr_lambda[j])
             out[j] += 1j * gr_constant[j] / gr_lambda[j] * w[j] * (1.0 / ((1.0 - s) * (1.0 - s)) - 1.0)
+
+
+def product_tree(monomials: list[list[int]]) -> tuple[NDArray[np.int32], NDArray[np.int32], list[int]]:
+    """Arrange monomials (lists of factor indices) as a product tree sharing their common prefixes.
+
+    Parameters
+    ----------
+    monomials : list of list of int
+        Each the indices (into the power table) of its factors, in any order.
+
+    Returns
+    -------
+    parent, factor : numpy.ndarray of int32, shape (M,)
+        ``node[0] = 1``, ``node[k] = node[parent[k]] · powers[factor[k]]`` (``parent[k] < k``).
+    node_of : list of int
+        The node whose value is each monomial.
+
+    Examples
+    --------
+    >>> parent, factor, node_of = product_tree([[3, 1], [1, 3, 5], [1, 3]])
+    >>> parent.tolist(), factor.tolist(), node_of
+    ([0, 0, 1, 2], [0, 1, 3, 5], [2, 3, 2])
+    """
+    index: dict[tuple[int, ...], int] = {(): 0}
+    parent, factor = [0], [0]
+    # Sorted keys put every prefix before its extensions (and neighbours in the tree near each other).
+    keys = [tuple(sorted(m)) for m in monomials]
+    for key in sorted(set(keys)):
+        for n in range(1, len(key) + 1):
+            if key[:n] not in index:
+                index[key[:n]] = len(parent)
+                parent.append(index[key[: n - 1]])
+                factor.append(key[n - 1])
+    return np.array(parent, dtype=np.int32), np.array(factor, dtype=np.int32), [index[k] for k in keys]
 
 
 @jit
@@ -267,8 +306,8 @@ def _matvec(M, v, out, block) -> None:
 
 @jit
 def integrate(
-    w0, steps, h, a_matrix, b_weights, forward, backward, width, target, coefficient, factors, groups,
-    gr_constant, gr_lambda, linear, keep, out_w, out_dw, extreme,
+    w0, steps, h, a_matrix, b_weights, forward, backward, width, parent, factor, row_start, row_node,
+    row_coefficient, gr_constant, gr_lambda, linear, keep, out_w, out_dw, extreme,
 ) -> None:  # fmt: skip
     """Take ``steps`` Lawson–DOP853 steps of size ``h`` from ``w0``; store ``keep`` components every step.
 
@@ -285,7 +324,7 @@ def integrate(
     forward, backward : numpy.ndarray of complex, shape (S, 2P, 2P)
         ``e^{L c_i h}`` and ``e^{−L c_i h}`` per stage; ``forward[S−1]`` must be ``e^{Lh}``
         (``c_S = 1``).
-    width, target, coefficient, factors, groups, gr_constant, gr_lambda
+    width, parent, factor, row_start, row_node, row_coefficient, gr_constant, gr_lambda
         :meth:`FlowTerms.arrays`.
     linear : numpy.ndarray of complex, shape (2P, 2P)
         ``L``.
@@ -307,6 +346,7 @@ def integrate(
             if linear[i, P + k] != 0.0 or linear[P + i, k] != 0.0:
                 block = n
     powers = np.empty(2 * n * width, dtype=np.complex128)
+    node = np.empty(parent.size, dtype=np.complex128)
     K = np.empty((S, n), dtype=np.complex128)
     v = np.empty(n, dtype=np.complex128)
     x = np.empty(n, dtype=np.complex128)
@@ -318,7 +358,10 @@ def integrate(
             size = w[b].real * w[b].real + w[b].imag * w[b].imag
             extreme[b] = max(extreme[b], size)
         # Stage 1 (c = 0): N(w), which with L w is also the derivative stored at this step.
-        _nonlinear(w, P, width, target, coefficient, factors, groups, gr_constant, gr_lambda, powers, tmp)
+        _nonlinear(
+            w, P, width, parent, factor, row_start, row_node, row_coefficient, gr_constant, gr_lambda, powers,
+            node, tmp,
+        )  # fmt: skip
         for b in range(n):
             K[0, b] = tmp[b]
         _matvec(linear, w, lin, block)
@@ -335,7 +378,10 @@ def integrate(
                         acc += a_matrix[i, j] * K[j, b]
                 v[b] = w[b] + h * acc
             _matvec(forward[i], v, x, block)
-            _nonlinear(x, P, width, target, coefficient, factors, groups, gr_constant, gr_lambda, powers, tmp)
+            _nonlinear(
+                x, P, width, parent, factor, row_start, row_node, row_coefficient, gr_constant, gr_lambda,
+                powers, node, tmp,
+            )  # fmt: skip
             _matvec(backward[i], tmp, x, block)
             for b in range(n):
                 K[i, b] = x[b]
