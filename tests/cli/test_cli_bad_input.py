@@ -210,7 +210,11 @@ ENSEMBLE_BAD = (
 
 #: Requests refused for their size (issue 26): (command, case, argument line).
 REFUSALS = (
-    ("obliquity", "steps", "obliquity earth --orbit laplace-lagrange --span -1e12 0 --step 1e10 --output {out}"),
+    (
+        "obliquity",
+        "steps",
+        "obliquity earth --orbit laplace-lagrange --span -1e12 0 --step 1e10 --output {out}",
+    ),
     ("obliquity", "rows", "obliquity earth --span -190000 0 --step 0.0001 --format table --output {out}"),
     ("orbit", "rows", "orbit laplace-lagrange --span -1e9 0 --step 1 --output {out}"),
     ("nutation", "time", "nutation earth --span 0 200000 --step 1000 --output {out}"),

@@ -70,6 +70,7 @@ def _functions() -> tuple[tuple[str, ast.FunctionDef], ...]:
     return tuple((path, node) for path, node in found if isinstance(node, ast.FunctionDef))
 
 
+@pytest.mark.slow
 def test_one_source_hamilton_product():
     found = [(path, f.name) for path, f in _functions() if _four_product_sums(f) >= 4]
     assert found == [PRODUCT_HOME]

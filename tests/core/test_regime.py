@@ -185,6 +185,7 @@ def states(draw):
     return moments, m
 
 
+@pytest.mark.slow
 @settings(max_examples=300, deadline=None)
 @given(state=states())
 def test_regime_matches_fraction_arithmetic_everywhere(state):

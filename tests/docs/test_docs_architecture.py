@@ -71,6 +71,7 @@ def test_docs_architecture_summary_reads_roles_as_sphinx_shows_them(tmp_path):
     assert ARCHITECTURE.summary(path) == r"See `c` and `x.y`: `|u|` \| bar."
 
 
+@pytest.mark.slow
 def test_docs_architecture_check_says_the_command(tmp_path, capsys):
     page = tmp_path / "architecture.md"
     text = PAGE.read_text(encoding="utf-8")

@@ -17,7 +17,7 @@ from andoyer.cli import main
 ROOT = Path(__file__).resolve().parents[2]
 
 #: Commands too slow for the default run (a local Dask cluster of worker processes).
-SLOW = ("ensemble",)
+SLOW = ("ensemble", "nutation")
 
 
 def readme_commands() -> list[list[str]]:

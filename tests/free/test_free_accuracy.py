@@ -40,6 +40,7 @@ def test_cases_cover_every_regime():
     assert len(CASES) >= 20
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(("name", "free_backend"), pairs(FAST), indirect=["free_backend"])
 def test_accuracy_over_a_few_periods(name, free_backend, reference):
     _check(free_backend, name, (0.37, 2.3), reference)

@@ -195,6 +195,7 @@ def test_propagate_rejects_bad_model_state_and_rest(states):
         propagate(Model(TRIAXIAL), at_rest, 1.0, method="secular")
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("t0", [0.0, 3.0e9])
 def test_propagate_secular_compiled_rotations_match_dop853(t0):
     """The public secular path (compiled exact rotations, forwards) against its DOP853 fallback.

@@ -319,6 +319,7 @@ def test_andoyer_form_gradient_matches_finite_differences(rng, name):
         assert np.abs(full - free - expected).max() <= 1e-8 * max(1.0, np.abs(expected).max())
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", list(ANDOYER_MODELS))
 def test_andoyer_form_integration_agrees_with_hub(name):
     from andoyer import State

@@ -46,6 +46,7 @@ def test_trig_product_to_sum_matches_sympy(kind_a, kind_b, ka, kb):
     assert _zero_by_sympy(diff)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("seed", range(3))
 def test_trig_random_product_matches_sympy(seed):
     rng = np.random.default_rng(seed)

@@ -107,6 +107,7 @@ def check_time_averages(body, rng, regime, n, moment_scale=1.0, momentum_scale=1
         assert w.omega_g[k] == pytest.approx(omega_g, rel=1e-14 + conditioning[k])
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(("name", "regime"), REPRESENTATIVE)
 def test_frequencies_equal_time_averages_along_the_orbit(name, regime, rng):
     check_time_averages(BODIES[name], rng, regime, 1)

@@ -105,6 +105,7 @@ def test_incomplete_quadrature_of_L_ends_with_F_not_K():
     assert abs(printed / direct - 1) > 1e-3
 
 
+@pytest.mark.slow
 def test_eq143_for_libration_is_the_real_part_in_reciprocal_modulus_form():
     """For λ > 1, K(λ) and Π(κ², λ) are complex; the libration action is the real part,
     ``(2G√(1+κ²))/(πκλ√(κ²+λ²)) [(κ²+λ²) Π(−κ²/λ²|1/λ²) − λ² K(1/λ²)]``."""

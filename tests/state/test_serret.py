@@ -141,6 +141,7 @@ def check_quadrature(name, regime, rng, n):
         assert g_err <= (1e-14 * k[i] + 1e-14) * (1 + abs(w.omega_g[i]) * period)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(("name", "regime"), QUADRATURE_CASES)
 def test_t0_and_g0_match_quadrature(name, regime, rng):
     """``t − t0`` and ``g(t) − g0`` against an mpmath quadrature along the level set."""

@@ -51,6 +51,7 @@ def _random_states(n, seed):
     return moments, m0, q0
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", REGIMES)
 def test_periodic_matches_reference_in_every_regime(name, motion_backend, reference):
     _, moments, m0, q0, t_unit = BY_NAME[name]

@@ -61,6 +61,7 @@ def worst_relative_drift(name, periods, method):
     return drift
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", ["lagrange", "kovalevskaya", "generic"])
 @pytest.mark.parametrize(
     ("method", "periods"), [("dop853", 300), *([("heyoka", 10_000)] if HAVE_HEYOKA else [])]

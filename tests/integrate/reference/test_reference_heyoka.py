@@ -95,6 +95,7 @@ def distance(a, b):
     return max(dm, float(np.linalg.norm(a.quaternion - sign * b.quaternion, axis=-1).max()))
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", list(CASES))
 def test_heyoka_agrees_with_dop853(name):
     model, start, t, tol = CASES[name]

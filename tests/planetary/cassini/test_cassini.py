@@ -69,6 +69,7 @@ def test_eccentricity_function_peale_series(e):
     assert float(eccentricity_function(e, 1.5)) == pytest.approx(series, abs=3 * e**7 + 1e-16)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(("e", "p"), [(0.20563, 1.5), (0.5, 1.0), (0.7, 1.5), (0.3, 2.0)])
 def test_eccentricity_function_mpmath_quadrature(e, p):
     mpmath.mp.dps = 30

@@ -211,6 +211,7 @@ def test_iau2000a_differs_from_rigid_as_the_transfer_function():
     assert 1.1 < ratio["l′"] < 1.25
 
 
+@pytest.mark.slow
 def test_iau2000a_table_matches_erfa_nut00a_fit():
     """A fit of erfa.nut00a over 18.7 years recovers the tabulated IAU 2000A amplitudes (checks fit_terms)."""
     t = np.arange(0.0, 18.7, 1.5 / 365.25)
@@ -235,6 +236,7 @@ def test_iau2000a_table_matches_erfa_nut00a_fit():
 # ---------------------------------------------------------------- analytic vs numeric
 
 
+@pytest.mark.slow
 def test_numeric_matches_analytic_series():
     """The integrated torque vs the second-order series: same Δψ(t), Δε(t) to 0.5 mas, up to the mean
     pole's constant and trend (terms slower than the span cannot be told from the mean pole)."""
@@ -345,6 +347,7 @@ def _cli(*args, cwd=None):
     return subprocess.run(command, capture_output=True, text=True, cwd=cwd, timeout=600, check=False)
 
 
+@pytest.mark.slow
 def test_cli_nutation_json_keys(tmp_path):
     out = tmp_path / "nut.json"
     argv = ["nutation", "earth", "--span", "0", "1", "--step", "0.25", "--format", "json"]

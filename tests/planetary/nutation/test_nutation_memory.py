@@ -47,6 +47,7 @@ def test_nutation_memory_does_not_grow_with_the_span(axis):
     assert long < short + 16 * 2**10, (short, long)
 
 
+@pytest.mark.slow
 def test_nutation_blocks_give_the_unblocked_integration(monkeypatch):
     # Blocks of 1000 steps (the m̈ of the figure axis across their joints, the fits' rows, the
     # spline windows) against a single block; the times in any order.

@@ -125,6 +125,7 @@ def pair():
     return sun, masses, axes, pair_expansion(sun, masses, axes, degree=4, max_harmonic=6)
 
 
+@pytest.mark.slow
 def test_pair_quadratic_terms_are_laplace_coefficients(pair):
     # ⟨H_1⟩ = −(m_j m_k/a_k)[½ b_{1/2}^(0) + ⅛ α b_{3/2}^(1)(e_j² + e_k² − I_j² − I_k²)
     #          − ¼ α b_{3/2}^(2) e_j e_k cos Δϖ + ¼ α b_{3/2}^(1) I_j I_k cos ΔΩ] (M&D §7.2).
@@ -157,6 +158,7 @@ def direct_average(sun, masses, axes, elements, nodes=96):
     return -mj * mk * np.mean(1.0 / distance)
 
 
+@pytest.mark.slow
 def test_pair_coefficients_match_direct_quadrature(pair):
     # Fit the directly averaged interaction at 600 random small eccentricities and inclinations
     # (≤ 0.015) with every monomial the secular part may hold to degree 6 (d'Alembert: zero total

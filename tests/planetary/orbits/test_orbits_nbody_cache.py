@@ -54,6 +54,7 @@ def _pieces(cache: Path, direction: str = "backward") -> dict[str, int]:
 OBLIQUITY = ("obliquity", "mars", "--span", "-20000", "0", "--step", "500", "--format", "csv")
 
 
+@pytest.mark.slow
 def test_nbody_cache_interrupted_run_resumes_bit_for_bit(tmp_path):
     cache, output = tmp_path / "cache", tmp_path / "mars.csv"
     child = _child(cache, 2000.0, *OBLIQUITY, "--output", str(output))
@@ -115,6 +116,7 @@ DAMAGE = {
 }
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("kind", sorted(DAMAGE))
 def test_nbody_cache_damaged_piece_removed_and_recomputed(tmp_path, monkeypatch, kind):
     monkeypatch.setenv("ANDOYER_CACHE_DIR", str(tmp_path))
@@ -176,6 +178,7 @@ NBodyOrbit("earth", gr=False, progress=False).normal(-float(sys.argv[1]))
 """
 
 
+@pytest.mark.slow
 def test_nbody_cache_concurrent_runs_never_shrink(tmp_path, monkeypatch):
     env = {**os.environ, "ANDOYER_CACHE_DIR": str(tmp_path), "PYTHONPATH": SRC}
     long = subprocess.Popen([sys.executable, "-c", RUN, "8000"], env=env)

@@ -99,6 +99,7 @@ def check_pair_linear_part(model, j: int, k: int, second: np.ndarray) -> None:
             assert abs(first.imag) <= 1e-12 * abs(M[row, col])
 
 
+@pytest.mark.slow
 def test_secular_linear_part_reproduces_laplace_lagrange_jupiter_saturn():
     # The quadratic part of the model is the Laplace–Lagrange theory in Poincaré variables plus
     # the quadratic terms of the second-order Hamiltonian K₂ (for Jupiter and Saturn 6.7 % of the
@@ -332,6 +333,7 @@ def test_secular_orbit_j2000_is_the_invariable_frame_turned_back():
     assert np.linalg.norm(earth.eccentricity_vector(0.0)) == pytest.approx(0.0167, abs=2e-4)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(("body", "normal_deg", "ecc"), [("earth", 0.003, 1.5e-4), ("mars", 0.008, 5e-4)])
 def test_secular_orbit_follows_nbody_over_20_kyr(cache_dir, body, normal_deg, ecc):
     # Against the REBOUND integration of the Sun and the eight planets (osculating: its
@@ -344,6 +346,7 @@ def test_secular_orbit_follows_nbody_over_20_kyr(cache_dir, body, normal_deg, ec
     assert np.abs(secular.eccentricity_vector(t) - nbody.eccentricity_vector(t)).max() < ecc
 
 
+@pytest.mark.slow
 def test_secular_orbit_step_convergence_and_interpolation():
     # Halving the step moves the Earth's and Mars' orbits over ±2 Myr, at the coarse run's steps,
     # by far less than the model's distance from the N-body solution (0.1°-0.3° over 1 Myr):

@@ -94,6 +94,7 @@ def test_obliquity_tides_frozen_is_the_plain_axis(tmp_path, monkeypatch):
         assert frozen[key] == plain[key], key
 
 
+@pytest.mark.slow
 def test_obliquity_tides_precession_drift_follows_the_present_rates(tmp_path):
     """Over 2 Myr the change of ``p_A`` the tides make is the linear model's times the ratio of ``α̇/α``.
 
@@ -177,6 +178,7 @@ LA2004_EARTH_5MYR = {
 }
 
 
+@pytest.mark.slow
 def test_obliquity_default_dissipation_is_closer_to_la2004_over_5_myr(tmp_path):
     """Issue 22 item 5: the Earth's default is its present-day dissipation, nearer La2004 than none.
 
