@@ -41,17 +41,15 @@ def cache_dir(tmp_path, monkeypatch):
     return tmp_path
 
 
-def run(terms: FlowTerms, w0: np.ndarray, h: float, steps: int, keep=None):
-    """The state after ``steps`` steps of ``h``, and the kept samples."""
+def run(terms: FlowTerms, w0: np.ndarray, h: float, steps: int, keep=None, samples: int = 1):
+    """The state after ``steps`` steps of ``h``, and the kept samples (``samples`` per step)."""
     keep = np.arange(w0.size) if keep is None else np.asarray(keep)
-    a, b, forward, backward = lawson_matrices(terms.linear, h)
+    tableau = lawson_matrices(terms.linear, h, samples)
     w = np.array(w0, dtype=complex)
-    out_w = np.empty((steps + 1, keep.size), dtype=complex)
+    out_w = np.empty((steps * samples + 1, keep.size), dtype=complex)
     out_dw = np.empty_like(out_w)
     extreme = np.zeros(w0.size)
-    integrate(
-        w, steps, h, a, b, forward, backward, *terms.arrays(), terms.linear, keep, out_w, out_dw, extreme
-    )
+    integrate(w, steps, h, *tableau, *terms.arrays(), terms.linear, keep, out_w, out_dw, extreme)
     return w, out_w, out_dw
 
 
@@ -277,6 +275,40 @@ def test_secular_flow_linear_part_is_exact():
     linear = FlowTerms(**{**linear.__dict__, "linear": terms.linear})
     w, _, _ = run(linear, w0, 3.0, 4)
     np.testing.assert_allclose(w, expm(12.0 * terms.linear) @ w0, atol=1e-14)
+
+
+def test_secular_flow_samples_within_a_step_follow_the_linear_flow_exactly():
+    # With only quadratic terms v is constant: the samples within a step are e^{Lτ} w0 and L e^{Lτ} w0.
+    terms, w0 = synthetic_terms()
+    linear = FlowTerms.from_polynomial(np.zeros((0, 8), dtype=np.int64), np.zeros(0), 2)
+    linear = FlowTerms(**{**linear.__dict__, "linear": terms.linear})
+    _, out_w, out_dw = run(linear, w0, 3.0, 2, samples=3)
+    expected = np.array([expm(t * terms.linear) @ w0 for t in np.arange(7.0)])
+    np.testing.assert_allclose(out_w, expected, atol=1e-14)
+    np.testing.assert_allclose(out_dw, expected @ terms.linear.T, atol=1e-14)
+
+
+def test_secular_flow_samples_within_a_step_match_a_finer_run():
+    # The samples between the steps (from the stages) against a run at a third of the step, whose
+    # steps fall on them: the model over 100 kyr at twice the default step, three samples per step.
+    # The steps themselves are those of a run without samples, bit for bit.
+    model = secular_model()
+    terms = model.terms
+    h = default_step(terms.linear, 1.0 / 5.0)
+    steps = 10
+    w, out_w, out_dw = run(terms, model.w0, h, steps, samples=3)
+    w1, plain, _ = run(terms, model.w0, h, steps)
+    assert np.array_equal(out_w[::3], plain)
+    assert np.array_equal(w, w1)
+    _, fine, fine_dw = run(terms, model.w0, h / 6, steps * 6)
+    error = np.abs(out_w - fine[::2]).max(axis=1)
+    at_steps, within = error[::3].max(), np.delete(error, np.s_[::3]).max()
+    # The samples within the steps are as good as the steps themselves (measured 4.1e-7 against
+    # 5.0e-7, i.e. 1.4e-5 of the largest |w|, at this twice-default step).
+    assert at_steps < 2e-5 * np.abs(model.w0).max()
+    assert within < 1.2 * at_steps
+    rate = np.abs(terms.linear) @ np.abs(model.w0)
+    assert np.all(np.abs(out_dw - fine_dw[::2]).max(axis=0) < 1e-4 * rate)  # measured 6.7e-5
 
 
 def test_secular_flow_conserves_energy_and_amd():
