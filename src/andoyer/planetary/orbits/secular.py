@@ -17,12 +17,12 @@ and these elements ship in ``data/secular_model.json`` (``scripts/make_secular_m
 
 **Integration.** Lawson's method with the 8th-order Dormand–Prince tableau, the quadratic
 (Laplace–Lagrange) part exact (:mod:`andoyer.planetary.orbits.secular_flow`), a fixed step of
-1/10 of the shortest period of the linear flow (5.0 kyr), compiled; terms too small to matter
-(:data:`PRUNE`) are left out of the flow. Halving the step moves the orbits over ±2 Myr by
-0.014″ at most. The orbit is integrated from J2000 as far as it is asked for, forwards and
-backwards, and kept at every step (the chosen planet's ``x, y`` and their rates: 64 bytes per
-step, 13 MB per Gyr); between steps a cubic Hermite interpolant (up to 1″ for the Earth's
-normal, 4″ for Mars').
+1/5 of the shortest period of the linear flow (10.1 kyr), compiled; terms too small to matter
+(:data:`PRUNE`) are left out of the flow. A run at an eighth of that step moves the orbits over
+±2 Myr by 1.6″ at most. The orbit is integrated from J2000 as far as it is asked for, forwards
+and backwards, and kept every half step (the chosen planet's ``x, y`` and their rates: 64 bytes
+per sample, 13 MB per Gyr; the samples within a step from its stages, the linear flow exact);
+between samples a cubic Hermite interpolant (up to 1″ for the Earth's normal, 5″ for Mars').
 
 **Validity** (``docs/orbits.md`` has the measurements): the fundamental frequencies ``g_1…g_8``,
 ``s_1…s_8`` are within 0.03″/yr of the N-body solution's over 9.8 Myr but ``g_6`` (−0.16″/yr),
@@ -295,8 +295,8 @@ class SecularOrbit:
         One of :data:`~andoyer.planetary.orbits.planets.PLANETS` (``"earth"`` = Earth–Moon
         barycentre).
     step : float, optional
-        Integration step, years (default: :data:`STEP_FRACTION` of the shortest linear period,
-        5.0 kyr).
+        Integration step, years (default: :data:`LONG_STEP_FRACTION` of the shortest linear
+        period, 10.1 kyr); the samples kept are at most :data:`STEP_FRACTION` of it apart.
     max_span : float
         The largest ``|t|`` that may be asked for (at most :data:`MAX_SPAN`).
     progress : bool or None
