@@ -254,10 +254,14 @@ def _nonlinear(
     for k in range(1, parent.size):
         node[k] = node[parent[k]] * powers[factor[k]]
     for b in range(2 * P):
-        acc = 0.0 + 0.0j
+        # Real arithmetic: a real coefficient times a complex node is two multiplications, not four.
+        re = 0.0
+        im = 0.0
         for d in range(row_start[b], row_start[b + 1]):
-            acc += row_coefficient[d] * node[row_node[d]]
-        out[b] = -2j * acc
+            value = node[row_node[d]]
+            re += row_coefficient[d] * value.real
+            im += row_coefficient[d] * value.imag
+        out[b] = 2.0 * im - 2j * re
     for j in range(P):
         if gr_constant[j] != 0.0:
             s = (w[j].real * w[j].real + w[j].imag * w[j].imag) / (2.0 * gr_lambda[j])
