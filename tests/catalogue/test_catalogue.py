@@ -240,14 +240,47 @@ def test_catalogue_mars_surface_gravity():
     assert mars.gm.si() / mars.radius.si() ** 2 == pytest.approx(3.71, abs=0.005)
 
 
-def test_catalogue_mars_pole_at_j2000_with_the_slow_terms():
-    """The 2015 constants plus the slow periodic terms at J2000 give the 2009 report's J2000 pole
-    (317.68143°, 52.88650°, the values andoyer.planetary.spin_axis uses)."""
+#: The IAU WGCCRE 2015 periodic terms of the pole at J2000 (Archinal et al. 2018, as transcribed in
+#: NAIF's pck00011.tpc): (amplitude in deg, angle at J2000 in deg) of the sin terms of alpha0 and
+#: the cos terms of delta0.
+IAU2015_PERIODIC = {
+    "mars": (
+        [(0.000068, 198.991226), (0.000238, 226.292679), (0.000052, 249.663391), (0.000009, 266.183510),
+         (0.419057, 79.398797)],
+        [(0.000051, 122.433576), (0.000141, 43.058401), (0.000031, 57.663379), (0.000005, 79.476401),
+         (1.591274, 166.325722)],
+    ),
+    "jupiter": (
+        [(0.000117, 99.360714), (0.000938, 175.895369), (0.001432, 300.323162), (0.000030, 114.012305),
+         (0.002150, 49.511251)],
+        [(0.000050, 99.360714), (0.000404, 175.895369), (0.000617, 300.323162), (-0.000013, 114.012305),
+         (0.000926, 49.511251)],
+    ),
+    "neptune": ([(0.70, 357.85)], [(-0.51, 357.85)]),
+}
+
+
+@pytest.mark.parametrize("body", sorted(IAU2015_PERIODIC))
+def test_catalogue_pole_periodic_terms_are_the_iau_series_at_j2000(body):
+    """``pole_ra_periodic``, ``pole_dec_periodic``: the 2015 series summed at T = 0 (to the 1e-6° printed)."""
+    ra_terms, dec_terms = IAU2015_PERIODIC[body]
+    entry = catalogue.get(body)
+    ra = sum(a * math.sin(math.radians(m)) for a, m in ra_terms)
+    dec = sum(b * math.cos(math.radians(m)) for b, m in dec_terms)
+    assert entry.pole_ra_periodic.value == pytest.approx(ra, abs=1e-6)
+    assert entry.pole_dec_periodic.value == pytest.approx(dec, abs=1e-6)
+
+
+def test_catalogue_mars_pole_at_j2000_agrees_with_the_2009_report():
+    """The 2015 model with its periodic terms at J2000 (317.680854°, 52.886439°) and the 2009 report's
+    J2000 pole (317.68143°, 52.88650°; Archinal et al. 2011) are one pole, 0.0006° apart: the terms
+    carry the displaced 2015 constants (317.269202°, 54.432516°) back."""
     mars = catalogue.get("mars")
-    ra = mars.pole_ra.value + 0.419057 * math.sin(math.radians(79.398797))
-    dec = mars.pole_dec.value + 1.591274 * math.cos(math.radians(166.325722))
-    assert ra == pytest.approx(317.68143, abs=2e-3)
-    assert dec == pytest.approx(52.88650, abs=2e-3)
+    ra = mars.pole_ra.value + mars.pole_ra_periodic.value
+    dec = mars.pole_dec.value + mars.pole_dec_periodic.value
+    assert (ra, dec) == (pytest.approx(317.680854, abs=1e-6), pytest.approx(52.886439, abs=1e-6))
+    assert ra == pytest.approx(317.68143, abs=1e-3)
+    assert dec == pytest.approx(52.88650, abs=1e-3)
 
 
 # -- units ----------------------------------------------------------------------------------------

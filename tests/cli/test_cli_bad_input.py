@@ -119,6 +119,10 @@ VALID: dict[str, Valid] = {
             ),
             "obliquity earth --span -1000 1000 --step 100 --precession-rate 500 --output {out}",
             "obliquity saturn --span -100000 100000 --step 10000 --drift-timescale 4e9 --output {out}",
+            (
+                "obliquity saturn --span -20000 20000 --step 10000 --migration titan --migration-index 0.5 "
+                "--migration-age 4e9 --output {out}"
+            ),
             "obliquity earth --span -1000 1000 --step 500 --tolerance 0.001 --format json --output {out}",
             "obliquity earth --span -2000 0 --step 1000 --tides constant-lag --format json --output {out}",
             (
@@ -206,6 +210,10 @@ ENSEMBLE_BAD = (
     ("workers", "obliquity mars --span -20000 0 --ensemble 2 --workers 0 --output {out}"),
     ("step", f"{ENSEMBLE} --ensemble 2 --step 1e6"),
     ("size", "obliquity mars --span -1e9 0 --step 1 --ensemble 100000 --output {out}"),
+    ("body-file", "obliquity --body-file saturn.json --ensemble 2 --span -20000 0 --output {out}"),
+    ("no-body", "obliquity --ensemble 2 --span -20000 0 --output {out}"),
+    ("planet", f"{ENSEMBLE.replace('mars', 'saturn')} --ensemble 2"),
+    ("drift", f"{ENSEMBLE} --ensemble 2 --drift-timescale 1e9"),
 )
 
 #: Requests refused for their size (issue 26): (command, case, argument line).

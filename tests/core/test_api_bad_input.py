@@ -52,6 +52,7 @@ from andoyer.perturbations import (
     solve_kepler,
 )
 from andoyer.planetary.cassini import CassiniBody, ColomboTop, eccentricity_function
+from andoyer.planetary.migration import MigratingSpinAxisModel, SatelliteMigration, satellite_migration
 from andoyer.planetary.nutation import (
     fit_terms,
     luni_solar_precession,
@@ -530,6 +531,13 @@ CASES = [
     (present_rates, present_rates, ("darwin",), ValueError, "expected a tidal model"),
     (TidalSpinAxisModel, TidalSpinAxisModel, ("earth", 1e-4, 2.0, 0.01), ValueError, "expected the tidal"),
     (tidal_spin_axis_model, tidal_spin_axis_model, (MODEL_EARTH, (NAN, 0.0)), ValueError, "expected finite"),
+    (satellite_migration, satellite_migration, ("saturn", "titan", NAN), ValueError, "expected a finite"),
+    (satellite_migration, satellite_migration, ("saturn", "titan", 0.4, INF), ValueError, "expected"),
+    (satellite_migration, satellite_migration, ("saturn", "rhea"), ValueError, "expected a satellite of"),
+    (SatelliteMigration, P(satellite_migration("saturn", "titan")), (MODEL_EARTH, (0.0, 1.0)), ValueError,
+     "expected the model of Saturn from its figure"),
+    (MigratingSpinAxisModel, MigratingSpinAxisModel, ("saturn", 1e-4, 0.0, 0.05), ValueError,
+     "expected a SatelliteMigration"),
     (
         tidal_spin_axis_history,
         tidal_spin_axis_history,

@@ -135,6 +135,9 @@ class Body:
     pole_ra_rate: Q = None
     pole_dec: Q = None
     pole_dec_rate: Q = None
+    pole_ra_periodic: Q = None
+    pole_dec_periodic: Q = None
+    age: Q = None
     obliquity: Q = None
     precession_rate: Q = None
     resonance: Q = None
@@ -149,6 +152,7 @@ class Body:
     orbital_period: Q = None
     node_period: Q = None
     apsis_period: Q = None
+    migration_rate: Q = None
     laplace_inclination: Q = None
     laplace_pole_ra: Q = None
     laplace_pole_dec: Q = None

@@ -12,7 +12,10 @@ Conventions (radians inside the code, the units below in the files):
   moments over the largest, ``A ≤ B ≤ C``.
 * ``pole_ra``, ``pole_dec``, ``prime_meridian``, ``rotation_rate``: the IAU WGCCRE model
   ``α = α₀ + α̇ T``, ``δ = δ₀ + δ̇ T``, ``W = W₀ + Ẇ d`` (``T`` Julian centuries and ``d`` days
-  from J2000 TDB), ICRF; a negative ``Ẇ`` is a retrograde rotation.
+  from J2000 TDB), ICRF; a negative ``Ẇ`` is a retrograde rotation. Where the model has periodic
+  terms (``Σ a_k sin M_k`` in ``α``, ``Σ b_k cos M_k`` in ``δ``), ``pole_ra_periodic`` and
+  ``pole_dec_periodic`` are their sums at J2000 (each entry's note lists the terms): the pole at
+  J2000 is ``(pole_ra + pole_ra_periodic, pole_dec + pole_dec_periodic)``.
 * ``precession_rate`` ``ψ̇``: the measured rate of the spin axis about the orbit normal
   (luni-solar precession of the equator for the Earth), positive westward.
 * orbit: about ``primary``, in ``orbit_frame`` at ``orbit_epoch``; ``node_period`` and
@@ -23,7 +26,7 @@ Examples
 >>> FIELDS["moment_of_inertia"].describe_bounds()
 'in (0, 2/3]'
 >>> sorted(FIELDS)[:3]
-['a_over_c', 'apsis_period', 'argument_of_periapsis']
+['a_over_c', 'age', 'apsis_period']
 """
 
 from __future__ import annotations
@@ -142,6 +145,29 @@ _TABLE = (
     _f("pole_ra_rate", "angular rate", "deg/cy", -INF, INF, True, True, "spin", "IAU alpha0 rate"),
     _f("pole_dec", "angle", "deg", -90, 90, False, False, "spin", "IAU pole declination delta0, ICRF"),
     _f("pole_dec_rate", "angular rate", "deg/cy", -INF, INF, True, True, "spin", "IAU delta0 rate"),
+    _f(
+        "pole_ra_periodic",
+        "angle",
+        "deg",
+        -INF,
+        INF,
+        True,
+        True,
+        "spin",
+        "IAU periodic terms of alpha0 summed at J2000 (the J2000 pole is pole_ra + this)",
+    ),
+    _f(
+        "pole_dec_periodic",
+        "angle",
+        "deg",
+        -INF,
+        INF,
+        True,
+        True,
+        "spin",
+        "IAU periodic terms of delta0 summed at J2000 (the J2000 pole is pole_dec + this)",
+    ),
+    _f("age", "time", "Gyr", 0, INF, True, True, "physical", "age at J2000 (the Sun: the solar system's)"),
     _f("obliquity", "angle", "deg", 0, 180, False, False, "spin", "obliquity: spin axis to orbit normal"),
     _f(
         "precession_rate",
@@ -168,6 +194,17 @@ _TABLE = (
     _f("orbital_period", "time", "d", 0, INF, True, True, "orbit", "sidereal orbital period"),
     _f("node_period", "time", "yr", 0, INF, True, True, "orbit", "period of the node's regression"),
     _f("apsis_period", "time", "yr", 0, INF, True, True, "orbit", "period of the apsis's advance"),
+    _f(
+        "migration_rate",
+        "speed",
+        "cm/yr",
+        -INF,
+        INF,
+        True,
+        True,
+        "orbit",
+        "measured present rate da/dt of the semi-major axis (tidal migration)",
+    ),
     _f(
         "laplace_inclination",
         "angle",

@@ -77,7 +77,7 @@ GAUSSIAN_GRAVITATIONAL_CONSTANT = 0.01720209895
 J2000_JD = 2451545.0
 
 #: Unit -> (dimension, factor to SI). Dimensions: "1" (a pure number), "length", "time",
-#: "angle", "angular rate", "angular acceleration", "gm" (m³/s²).
+#: "angle", "angular rate", "angular acceleration", "gm" (m³/s²), "speed".
 UNITS: dict[str, tuple[str, float]] = {
     "1": ("1", 1.0),
     "m": ("length", 1.0),
@@ -104,6 +104,9 @@ UNITS: dict[str, tuple[str, float]] = {
     "km3/s2": ("gm", 1e9),
     "au3/d2": ("gm", AU**3 / DAY**2),
     "au3/yr2": ("gm", AU**3 / JULIAN_YEAR**2),
+    "m/s": ("speed", 1.0),
+    "cm/yr": ("speed", 0.01 / JULIAN_YEAR),
+    "Gyr": ("time", 1e9 * JULIAN_YEAR),
 }
 
 

@@ -26,7 +26,7 @@ DEFAULT_ORBIT = {
 
 
 def add_body_arguments(parser: argparse.ArgumentParser) -> None:
-    """BODY (optional with ``--body-file``), ``--body-file PATH`` and ``--drift-timescale TAU``."""
+    """BODY (or ``--body-file PATH``) and the laws of α(t): ``--drift-timescale``, ``--migration``."""
     parser.add_argument(
         "body",
         nargs="?",
@@ -43,6 +43,24 @@ def add_body_arguments(parser: argparse.ArgumentParser) -> None:
         type=finite_number,
         metavar="TAU",
         help="precession constant alpha(t) = alpha0 (1 + t/TAU), t and TAU in years (satellite migration)",
+    )
+    parser.add_argument(
+        "--migration",
+        metavar="SATELLITE",
+        type=str.lower,
+        help="alpha(t) from SATELLITE's migration a(t) = a0 (1 + t/T0)^B (inside the Laplace radius)",
+    )
+    parser.add_argument(
+        "--migration-index",
+        type=finite_number,
+        metavar="B",
+        help="B of --migration (default: from the satellite's measured rate, B = (da/dt) T0 / a0)",
+    )
+    parser.add_argument(
+        "--migration-age",
+        type=finite_number,
+        metavar="T0",
+        help="T0 of --migration, years since the satellites formed (default: the solar system's age)",
     )
 
 
@@ -93,3 +111,46 @@ def resonance_fields(precession_rate: float) -> list[dict]:
     if not math.isfinite(precession_rate):
         return []
     return resonance_distances(precession_rate)
+
+
+def migration_coupling(args: argparse.Namespace, body: Any, coupling: Any) -> Any:
+    """The ``coupling`` of the spin axis: ``--migration``'s law, or ``coupling`` (the tides') without it.
+
+    The law is :func:`andoyer.planetary.migration.satellite_migration` of the planet (BODY; a body
+    file has no catalogued satellites) and ``--migration SATELLITE``; ``--migration-index`` and
+    ``--migration-age`` only with it, and neither ``--drift-timescale`` nor tides with it.
+    """
+    extra = [
+        flag
+        for flag, value in (
+            ("--migration-index", args.migration_index),
+            ("--migration-age", args.migration_age),
+        )
+        if value is not None
+    ]
+    if args.migration is None:
+        if extra:
+            msg = f"expected {', '.join(extra)} only with --migration SATELLITE, got no --migration"
+            raise CliError(msg)
+        return coupling
+    if args.drift_timescale is not None:
+        msg = "expected --drift-timescale or --migration (two laws of alpha(t)), got both"
+        raise CliError(msg)
+    if coupling is not None:
+        msg = "expected --migration without tides (the Earth-Moon tides drive alpha(t) themselves), got both"
+        raise CliError(msg)
+    if not isinstance(body, str):
+        msg = (
+            f"expected a catalogued planet with --migration (a body file has no catalogued satellites), "
+            f"got --body-file {args.body_file!r}"
+        )
+        raise CliError(msg)
+    if args.precession_rate is not None or args.dynamical_ellipticity is not None:
+        msg = (
+            "expected the planet's figure and satellites with --migration (alpha follows the satellite), "
+            "got --precession-rate or --dynamical-ellipticity"
+        )
+        raise CliError(msg)
+    from andoyer.planetary.migration import satellite_migration
+
+    return satellite_migration(body, args.migration, args.migration_index, args.migration_age)

@@ -9,7 +9,7 @@ import numpy as np
 from andoyer.catalogue.units import ARCSEC
 from andoyer.cli import obliquity_ensemble
 from andoyer.cli.numbers import finite_number, physical
-from andoyer.cli.obliquity_body import add_body_arguments, resolve_body, resonance_fields
+from andoyer.cli.obliquity_body import add_body_arguments, migration_coupling, resolve_body, resonance_fields
 from andoyer.cli.obliquity_tides import add_tides_argument, obliquity_tides
 from andoyer.cli.output import CliError, add_output_argument, atomic_output
 
@@ -22,7 +22,10 @@ BODY: earth, mars, venus, jupiter, saturn, uranus, neptune (default orbit: vondr
 then secular), or --body-file PATH (a body named after a planet takes that planet's orbit; any
 other needs --orbit PATH). The other planets' precession constant is their catalogued figure
 with their satellites (andoyer precession BODY); --drift-timescale TAU drifts it,
-alpha(t) = alpha0 (1 + t/TAU) (satellite migration: docs/spin-axis.md).
+alpha(t) = alpha0 (1 + t/TAU), or --migration SATELLITE moves that satellite out as
+a(t) = a0 (1 + t/T0)^B (--migration-index B, default from its measured rate: Titan 11.3 cm/yr;
+--migration-age T0, default the solar system's 4.5673e9 years; docs/spin-axis.md):
+  andoyer obliquity saturn --migration titan --span -1e9 0 --step 1e4 --format csv
   andoyer obliquity earth --orbit secular --tides ocean --span -1e8 0 --step 1000 --format csv
 T0, T1 and DT are Julian years from J2000 (negative = past); output at T0, T0+DT, ..., T1.
 --precession-rate P is the rate of the luni-solar precession psi_A at J2000 in arcsec per Julian
@@ -295,7 +298,7 @@ def run(args: argparse.Namespace) -> int:
         precession_rate=args.precession_rate,
         dynamical_ellipticity=args.dynamical_ellipticity,
         tidal_dissipation=tides.tidal_dissipation,
-        coupling=tides.coupling,
+        coupling=migration_coupling(args, body, tides.coupling),
         ellipticity_drift=drift,
         tolerance=None if args.tolerance is None else args.tolerance * ARCSEC,
         **_costs(args, orbit, stream_csv, tides),

@@ -67,6 +67,28 @@ def _refuse_without_ensemble(args: argparse.Namespace) -> None:
         raise CliError(msg)
 
 
+#: The bodies whose members the ensemble integrates (andoyer.planetary.spin_axis.members).
+ENSEMBLE_BODIES = ("mars", "earth")
+
+
+def _refuse_body(args: argparse.Namespace) -> None:
+    """One line for what the members cannot take: a body file, another planet, the alpha drift."""
+    if args.body_file is not None:
+        msg = (
+            f"expected a BODY in {', '.join(ENSEMBLE_BODIES)} with --ensemble (its members are those "
+            f"bodies' spin axes), got --body-file {args.body_file!r}"
+        )
+        raise CliError(msg)
+    if args.body not in ENSEMBLE_BODIES:
+        got = "none" if args.body is None else repr(args.body)
+        msg = f"expected a BODY in {', '.join(ENSEMBLE_BODIES)} with --ensemble, got {got}"
+        raise CliError(msg)
+    if getattr(args, "drift_timescale", None) is not None or getattr(args, "migration", None) is not None:
+        flag = "--drift-timescale" if args.drift_timescale is not None else "--migration"
+        msg = f"expected no precession-constant drift with --ensemble (members keep theirs), got {flag}"
+        raise CliError(msg)
+
+
 def check(args: argparse.Namespace) -> bool:
     """Whether the command is an ensemble; refuses the ensemble's options without ``--ensemble``."""
     if args.ensemble is None:
@@ -109,6 +131,7 @@ def run(args: argparse.Namespace) -> int:
     if members < 1:
         msg = f"expected --ensemble N with N >= 1 members, got {members}"
         raise CliError(msg)
+    _refuse_body(args)
     if args.orbit is not None and args.orbit != "secular":
         msg = f"expected --orbit secular (or none) with --ensemble (secular members), got {args.orbit!r}"
         raise CliError(msg)

@@ -11,6 +11,8 @@ disturbing terms of :mod:`andoyer.perturbations` and the propagators of
   satellites' share included;
 * :mod:`andoyer.planetary.spin_axis` -- the spin axis along a moving orbit: obliquity,
   general and climatic precession, insolation;
+* :mod:`andoyer.planetary.migration` -- a satellite's power-law migration driving its planet's
+  precession constant (resonance capture or crossing);
 * :mod:`andoyer.planetary.nutation` -- the rigid-Earth luni-solar nutation;
 * :mod:`andoyer.planetary.cassini` -- Cassini states (Colombo's top);
 * :mod:`andoyer.planetary.parameters` -- the range of every physical parameter, checked alike by
@@ -35,6 +37,7 @@ from typing import Any
 
 __all__ = [
     "cassini",
+    "migration",
     "nutation",
     "orbits",
     "parameters",

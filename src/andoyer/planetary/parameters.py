@@ -38,6 +38,9 @@ j2                                  J2 > 0                       ``C > (A+B)/2``
 c22                                 C22 ≥ 0                      ``B ≥ A`` (and ``C22 ≤ J2/2``, ``C`` the
                                                                  largest moment, checked with ``J2``)
 node_period             yr          T_node > 0                   the period of a regressing node
+migration_age           yr          0 < T_0 ≤ 1.3787e10          the satellites formed after the universe
+                                                                 did: 13.787 Gyr (Planck Collaboration
+                                                                 2020, A&A 641, A6)
 ======================  ==========  ===========================  ==========================================
 
 The spans of validity (an orbit source's ``span``, the lunar theory's, the output step against
@@ -209,6 +212,10 @@ PARAMETERS: dict[str, Parameter] = {
     ),
     "node_period": Parameter(
         "node period", "T_node", 0.0, math.inf, False, False, "yr", "the period of a regressing node"
+    ),
+    "migration_age": Parameter(
+        "migration age", "T0", 0.0, 1.3787e10, False, True, "yr",
+        "the time since the satellites formed: at most the age of the universe, 13.787 Gyr, Planck 2020",
     ),
 }  # fmt: skip
 

@@ -252,7 +252,7 @@ def obliquity(body: str | Body) -> float | None:
     Examples
     --------
     >>> [round(math.degrees(obliquity(b)), 2) for b in ("venus", "jupiter", "saturn", "uranus", "neptune")]
-    [177.36, 3.12, 26.73, 97.77, 27.85]
+    [177.36, 3.12, 26.73, 97.77, 28.32]
     """
     entry = catalogue.get(body)
     if entry.obliquity is not None:
@@ -270,7 +270,10 @@ def obliquity(body: str | Body) -> float | None:
 def spin_axis_ecliptic(body: str | Body) -> tuple[float, float, float]:
     """The unit spin angular momentum at J2000 in the J2000 ecliptic frame, from the IAU pole.
 
-    Opposite the IAU (north) pole for a retrograde rotator.
+    The pole at J2000 is ``(pole_ra + pole_ra_periodic, pole_dec + pole_dec_periodic)`` (the IAU
+    WGCCRE 2015 model with its periodic terms where the catalogue has them: Mars, Jupiter,
+    Neptune), turned from the ICRF equator to the ecliptic by ``ε₀``; opposite the IAU (north)
+    pole for a retrograde rotator.
 
     Examples
     --------
@@ -280,6 +283,10 @@ def spin_axis_ecliptic(body: str | Body) -> tuple[float, float, float]:
     entry = catalogue.get(body)
     ra = _si(entry, "pole_ra", "the spin axis")
     dec = _si(entry, "pole_dec", "the spin axis")
+    if entry.pole_ra_periodic is not None:  # the IAU model's periodic terms at J2000
+        ra += entry.pole_ra_periodic.si()
+    if entry.pole_dec_periodic is not None:
+        dec += entry.pole_dec_periodic.si()
     eps0 = catalogue.get("earth").require("obliquity", "the J2000 ecliptic").si()
     x, y, z = math.cos(dec) * math.cos(ra), math.cos(dec) * math.sin(ra), math.sin(dec)
     c, s = math.cos(eps0), math.sin(eps0)

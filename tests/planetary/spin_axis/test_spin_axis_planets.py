@@ -176,3 +176,34 @@ def test_cli_obliquity_body_file_of_another_name_needs_a_table(run_cli, tmp_path
     code, _, err = run_cli("obliquity", "--body-file", str(path))
     assert code == 2
     assert "expected --orbit PATH (an orbit table) for the body file's 'Exo b'" in err
+
+
+def test_cli_obliquity_body_file_ensemble_refused_in_one_line(run_cli, tmp_path):
+    """The ensemble's members are Mars' and the Earth's: a body file is refused naming both sides."""
+    path = tmp_path / "saturn.json"
+    path.write_text(json.dumps(catalogue.get("saturn").to_dict()))
+    code, out, err = run_cli(
+        "obliquity", "--body-file", str(path), "--ensemble", "3", "--output", str(tmp_path / "out.json")
+    )
+    assert (code, out) == (2, "")
+    line = (
+        "andoyer obliquity: error: expected a BODY in mars, earth with --ensemble (its members are those "
+        f"bodies' spin axes), got --body-file {str(path)!r}"
+    )
+    assert err.strip().splitlines() == [line]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["saturn.json"]
+
+
+def test_default_axis_mars_is_the_iau_2015_pole_turned_to_the_ecliptic():
+    """Mars' axis at J2000: the IAU WGCCRE 2015 pole with its periodic terms (317.680854°, 52.886439°,
+    Archinal et al. 2018) turned by ε₀ = 84381.406″ about the x axis, computed here apart."""
+    ra, dec, eps = np.radians(317.680854), np.radians(52.886439), np.radians(84381.406 / 3600)
+    x, y, z = np.cos(dec) * np.cos(ra), np.cos(dec) * np.sin(ra), np.sin(dec)
+    expected = [x, np.cos(eps) * y + np.sin(eps) * z, -np.sin(eps) * y + np.cos(eps) * z]
+    assert default_axis("mars") == pytest.approx(expected, abs=2e-8)
+
+
+def test_neptune_obliquity_with_the_iau_periodic_terms_is_the_fact_sheet_value():
+    """Neptune's pole moves by 0.70 sin N, −0.51 cos N (IAU 2015): with them its obliquity to the
+    Standish J2000 orbit is NASA's fact-sheet 28.32° (given to 0.01°); without, it was 27.85°."""
+    assert np.degrees(obliquity("neptune")) == pytest.approx(28.32, abs=0.005)

@@ -92,18 +92,14 @@ __all__ = [
     "spin_axis_history",
 ]
 
-#: Mars' north pole at J2000 in the ICRF, degrees: α₀ = 317.68143°, δ₀ = 52.88650° (IAU WGCCRE
-#: 2009, Archinal et al. 2011, Celest. Mech. Dyn. Astr. 109, 101).
-MARS_POLE_RA_DEC = (317.68143, 52.88650)
-
-
 def default_axis(body: str) -> np.ndarray:
     """The spin axis at J2000 in the J2000 ecliptic frame, shape (3,).
 
-    Earth: the IAU 2006 mean pole (:func:`mean_pole_j2000`). Mars: the IAU pole
-    (:data:`MARS_POLE_RA_DEC`) turned from the equator to the ecliptic of J2000 by ``ε₀``. Any
-    other catalogued body or a body of the user's own: its IAU pole the same way, reversed for a
-    retrograde rotator (:func:`andoyer.planetary.precession_constant.spin_axis_ecliptic`).
+    Earth: the IAU 2006 mean pole (:func:`mean_pole_j2000`). Any other catalogued body (Mars: the
+    IAU WGCCRE 2015 pole with its periodic terms, α = 317.680854°, δ = 52.886439° at J2000,
+    Archinal et al. 2018) or a body of the user's own: its IAU pole turned from the equator to the
+    ecliptic of J2000 by ``ε₀``, reversed for a retrograde rotator
+    (:func:`andoyer.planetary.precession_constant.spin_axis_ecliptic`).
 
     Parameters
     ----------
@@ -116,7 +112,7 @@ def default_axis(body: str) -> np.ndarray:
     Examples
     --------
     >>> np.round(default_axis("mars"), 6).tolist()
-    [0.446159, -0.055512, 0.893231]
+    [0.446155, -0.055517, 0.893232]
     >>> i, node = np.radians(1.85061), np.radians(49.57854)  # Mars' J2000 orbit (JPL mean elements)
     >>> n = [np.sin(i) * np.sin(node), -np.sin(i) * np.cos(node), np.cos(i)]
     >>> round(float(np.degrees(np.arccos(default_axis("mars") @ n))), 2)  # obliquity
@@ -127,14 +123,9 @@ def default_axis(body: str) -> np.ndarray:
     key = body.key if isinstance(body, Body) else str(body).strip().lower()
     if key == "earth" and not isinstance(body, Body):
         return mean_pole_j2000()
-    if key not in DEFAULT_PRECESSION_RATE or isinstance(body, Body):
-        from andoyer.planetary.precession_constant import spin_axis_ecliptic
+    from andoyer.planetary.precession_constant import spin_axis_ecliptic
 
-        return np.array(spin_axis_ecliptic(body))
-    ra, dec = np.radians(MARS_POLE_RA_DEC)  # Mars
-    v = np.array([np.cos(dec) * np.cos(ra), np.cos(dec) * np.sin(ra), np.sin(dec)])
-    c, s = np.cos(EPSILON_0), np.sin(EPSILON_0)
-    return np.array([v[0], c * v[1] + s * v[2], -s * v[1] + c * v[2]])
+    return np.array(spin_axis_ecliptic(body))
 
 
 def spin_axis_history(
