@@ -311,6 +311,38 @@ def test_secular_flow_samples_within_a_step_match_a_finer_run():
     assert np.all(np.abs(out_dw - fine_dw[::2]).max(axis=0) < 1e-4 * rate)  # measured 6.7e-5
 
 
+def test_secular_flow_interpreted_fallback_agrees_with_compiled(monkeypatch):
+    # ANDOYER_NUMBA=0 runs the same kernels as plain Python (fresh copies of _jit and the module).
+    import sys
+    from pathlib import Path
+
+    import andoyer._jit as andoyer_jit
+    from andoyer.planetary.orbits import secular_flow as flow_module
+
+    def fresh(module, name):
+        spec = importlib.util.spec_from_file_location(name, Path(module.__file__))
+        copy = importlib.util.module_from_spec(spec)
+        monkeypatch.setitem(sys.modules, name, copy)
+        spec.loader.exec_module(copy)
+        return copy
+
+    monkeypatch.setenv("ANDOYER_NUMBA", "0")
+    monkeypatch.setitem(sys.modules, "andoyer._jit", fresh(andoyer_jit, "andoyer_jit_interpreted"))
+    plain = fresh(flow_module, "andoyer_secular_flow_interpreted")
+    assert not hasattr(plain.integrate, "py_func")
+    terms, w0 = synthetic_terms()
+    tableau = lawson_matrices(terms.linear, 0.7, 2)
+    results = []
+    for kernel in (integrate, plain.integrate):
+        w = w0.astype(complex)
+        out_w = np.empty((7, 4), dtype=complex)
+        out_dw = np.empty_like(out_w)
+        kernel(w, 3, 0.7, *tableau, *terms.arrays(), terms.linear, np.arange(4), out_w, out_dw, np.zeros(4))
+        results.append((w, out_w, out_dw))
+    for compiled, interpreted in zip(*results, strict=True):
+        np.testing.assert_allclose(interpreted, compiled, rtol=0, atol=1e-15)
+
+
 def test_secular_flow_conserves_energy_and_amd():
     # The secular Hamiltonian and the angular momentum deficit Σ(|x|² + |y|²)/2 are invariants of
     # the averaged flow (d'Alembert: every term is invariant under a common rotation). Over 1 Myr
