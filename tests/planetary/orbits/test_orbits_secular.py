@@ -41,17 +41,15 @@ def cache_dir(tmp_path, monkeypatch):
     return tmp_path
 
 
-def run(terms: FlowTerms, w0: np.ndarray, h: float, steps: int, keep=None):
-    """The state after ``steps`` steps of ``h``, and the kept samples."""
+def run(terms: FlowTerms, w0: np.ndarray, h: float, steps: int, keep=None, samples: int = 1):
+    """The state after ``steps`` steps of ``h``, and the kept samples (``samples`` per step)."""
     keep = np.arange(w0.size) if keep is None else np.asarray(keep)
-    a, b, forward, backward = lawson_matrices(terms.linear, h)
+    tableau = lawson_matrices(terms.linear, h, samples)
     w = np.array(w0, dtype=complex)
-    out_w = np.empty((steps + 1, keep.size), dtype=complex)
+    out_w = np.empty((steps * samples + 1, keep.size), dtype=complex)
     out_dw = np.empty_like(out_w)
     extreme = np.zeros(w0.size)
-    integrate(
-        w, steps, h, a, b, forward, backward, *terms.arrays(), terms.linear, keep, out_w, out_dw, extreme
-    )
+    integrate(w, steps, h, *tableau, *terms.arrays(), terms.linear, keep, out_w, out_dw, extreme)
     return w, out_w, out_dw
 
 
@@ -179,6 +177,87 @@ def synthetic_terms():
     )
 
 
+def flow_mpmath(exponents, coefficients, P, w, gr=None, Lambda=None):
+    """``ẇ = −2i ∂H/∂w̄`` at ``w`` in 40-digit arithmetic, term by term from the exponents."""
+    import mpmath
+
+    with mpmath.workdps(40):
+        z = [mpmath.mpc(v.real, v.imag) for v in w]
+        values = z[:P] + [mpmath.conj(v) for v in z[:P]] + z[P:] + [mpmath.conj(v) for v in z[P:]]
+        bars = list(range(P, 2 * P)) + list(range(3 * P, 4 * P))
+        out = []
+        for column in bars:
+            total = mpmath.mpc(0)
+            for m, c in zip(exponents, coefficients, strict=True):
+                if m[column]:
+                    term = mpmath.mpf(float(c)) * int(m[column])
+                    for v, power in enumerate(m):
+                        term *= values[v] ** (int(power) - (v == column))
+                    total += term
+            out.append(-2j * total)
+        for j in range(P if gr is not None else 0):
+            # H ∋ −K/(1 − |x|²/(2Λ)): ẋ = −2i ∂H/∂x̄ = i (K/Λ) x / (1 − |x|²/(2Λ))².
+            s = abs(z[j]) ** 2 / (2 * mpmath.mpf(float(Lambda[j])))
+            out[j] += 1j * mpmath.mpf(float(gr[j])) / mpmath.mpf(float(Lambda[j])) * z[j] / (1 - s) ** 2
+        return np.array([complex(v) for v in out])
+
+
+def test_secular_flow_right_hand_side_matches_mpmath_on_random_terms():
+    # The product-tree kernel (shared partial products) against the derivative taken term by
+    # term in 40 digits: 3 planets, 60 random terms of degree 2 (w_a w̄_b) to 8, relativity on.
+    rng = np.random.default_rng(22)
+    P = 3
+    exponents = []
+    for a in range(2 * P):
+        m = np.zeros(4 * P, dtype=np.int64)
+        plain = a if a < P else P + a  # the column of x_a or y_(a−P) among x, x̄, y, ȳ
+        m[plain] += 1
+        m[plain + P] += 1
+        exponents.append(m)
+    while len(exponents) < 60:
+        m = np.zeros(4 * P, dtype=np.int64)
+        for v in rng.integers(0, 4 * P, size=rng.integers(3, 9)):
+            m[v] += 1
+        if m.sum() > 2:
+            exponents.append(m)
+    exponents = np.array(exponents)
+    coefficients = rng.normal(size=len(exponents))
+    gr, Lambda = np.array([0.3, 0.0, 0.1]), np.array([1.5, 2.0, 3.0])
+    terms = FlowTerms.from_polynomial(exponents, coefficients, P, gr, Lambda)
+    w0 = rng.normal(size=2 * P) * 0.4 + 1j * rng.normal(size=2 * P) * 0.4
+    _, _, out_dw = run(terms, w0, 1.0, 0)
+    expected = flow_mpmath(exponents, coefficients, P, w0, gr, Lambda)
+    np.testing.assert_allclose(out_dw[0], expected, rtol=0, atol=1e-13 * np.abs(expected).max())
+
+
+@pytest.mark.slow
+def test_secular_flow_right_hand_side_of_the_model_matches_mpmath():
+    # The shipped Hamiltonian, every term (no pruning), at the J2000 state: the kernel's ẇ against
+    # the term-by-term derivative in 40 digits.
+    import json
+    from importlib import resources
+
+    from andoyer.planetary.orbits.disturbing import relativity_constant
+    from andoyer.planetary.orbits.nbody import C_AU_PER_YEAR
+
+    raw = json.loads(
+        resources.files("andoyer.planetary.orbits").joinpath("data/secular_model.json").read_text("utf-8")
+    )
+    P = len(raw["planets"])
+    exponents = np.zeros((len(raw["terms"]), 4 * P), dtype=np.int64)
+    for row, (factors, _, _) in enumerate(raw["terms"]):
+        for var, power in factors:
+            exponents[row, var] = power
+    coefficients = np.array([re for _, re, _ in raw["terms"]])
+    Lambda = np.array(raw["Lambda"])
+    gr = relativity_constant(raw["sun_gm"], np.array(raw["gm"]), np.array(raw["a"]), C_AU_PER_YEAR)
+    terms = FlowTerms.from_polynomial(exponents, coefficients, P, gr, Lambda)
+    w0 = np.array([complex(*z) for z in raw["x0"] + raw["y0"]])
+    _, _, out_dw = run(terms, w0, 1.0, 0)
+    expected = flow_mpmath(exponents, coefficients, P, w0, gr, Lambda)
+    np.testing.assert_allclose(out_dw[0], expected, rtol=1e-12, atol=1e-15 * np.abs(expected).max())
+
+
 def test_secular_flow_is_of_order_eight():
     # Lawson–DOP853: halving the step divides the error at a fixed time by 2⁸.
     terms, w0 = synthetic_terms()
@@ -196,6 +275,72 @@ def test_secular_flow_linear_part_is_exact():
     linear = FlowTerms(**{**linear.__dict__, "linear": terms.linear})
     w, _, _ = run(linear, w0, 3.0, 4)
     np.testing.assert_allclose(w, expm(12.0 * terms.linear) @ w0, atol=1e-14)
+
+
+def test_secular_flow_samples_within_a_step_follow_the_linear_flow_exactly():
+    # With only quadratic terms v is constant: the samples within a step are e^{Lτ} w0 and L e^{Lτ} w0.
+    terms, w0 = synthetic_terms()
+    linear = FlowTerms.from_polynomial(np.zeros((0, 8), dtype=np.int64), np.zeros(0), 2)
+    linear = FlowTerms(**{**linear.__dict__, "linear": terms.linear})
+    _, out_w, out_dw = run(linear, w0, 3.0, 2, samples=3)
+    expected = np.array([expm(t * terms.linear) @ w0 for t in np.arange(7.0)])
+    np.testing.assert_allclose(out_w, expected, atol=1e-14)
+    np.testing.assert_allclose(out_dw, expected @ terms.linear.T, atol=1e-14)
+
+
+def test_secular_flow_samples_within_a_step_match_a_finer_run():
+    # The samples between the steps (from the stages) against a run at a third of the step, whose
+    # steps fall on them: the model over 100 kyr at twice the default step, three samples per step.
+    # The steps themselves are those of a run without samples, bit for bit.
+    model = secular_model()
+    terms = model.terms
+    h = default_step(terms.linear, 1.0 / 5.0)
+    steps = 10
+    w, out_w, out_dw = run(terms, model.w0, h, steps, samples=3)
+    w1, plain, _ = run(terms, model.w0, h, steps)
+    assert np.array_equal(out_w[::3], plain)
+    assert np.array_equal(w, w1)
+    _, fine, fine_dw = run(terms, model.w0, h / 6, steps * 6)
+    error = np.abs(out_w - fine[::2]).max(axis=1)
+    at_steps, within = error[::3].max(), np.delete(error, np.s_[::3]).max()
+    # The samples within the steps are as good as the steps themselves (measured 4.1e-7 against
+    # 5.0e-7, i.e. 1.4e-5 of the largest |w|, at this twice-default step).
+    assert at_steps < 2e-5 * np.abs(model.w0).max()
+    assert within < 1.2 * at_steps
+    rate = np.abs(terms.linear) @ np.abs(model.w0)
+    assert np.all(np.abs(out_dw - fine_dw[::2]).max(axis=0) < 1e-4 * rate)  # measured 6.7e-5
+
+
+def test_secular_flow_interpreted_fallback_agrees_with_compiled(monkeypatch):
+    # ANDOYER_NUMBA=0 runs the same kernels as plain Python (fresh copies of _jit and the module).
+    import sys
+    from pathlib import Path
+
+    import andoyer._jit as andoyer_jit
+    from andoyer.planetary.orbits import secular_flow as flow_module
+
+    def fresh(module, name):
+        spec = importlib.util.spec_from_file_location(name, Path(module.__file__))
+        copy = importlib.util.module_from_spec(spec)
+        monkeypatch.setitem(sys.modules, name, copy)
+        spec.loader.exec_module(copy)
+        return copy
+
+    monkeypatch.setenv("ANDOYER_NUMBA", "0")
+    monkeypatch.setitem(sys.modules, "andoyer._jit", fresh(andoyer_jit, "andoyer_jit_interpreted"))
+    plain = fresh(flow_module, "andoyer_secular_flow_interpreted")
+    assert not hasattr(plain.integrate, "py_func")
+    terms, w0 = synthetic_terms()
+    tableau = lawson_matrices(terms.linear, 0.7, 2)
+    results = []
+    for kernel in (integrate, plain.integrate):
+        w = w0.astype(complex)
+        out_w = np.empty((7, 4), dtype=complex)
+        out_dw = np.empty_like(out_w)
+        kernel(w, 3, 0.7, *tableau, *terms.arrays(), terms.linear, np.arange(4), out_w, out_dw, np.zeros(4))
+        results.append((w, out_w, out_dw))
+    for compiled, interpreted in zip(*results, strict=True):
+        np.testing.assert_allclose(interpreted, compiled, rtol=0, atol=1e-15)
 
 
 def test_secular_flow_conserves_energy_and_amd():
@@ -267,17 +412,19 @@ def test_secular_orbit_follows_nbody_over_20_kyr(cache_dir, body, normal_deg, ec
 
 @pytest.mark.slow
 def test_secular_orbit_step_convergence_and_interpolation():
-    # Halving the step moves the Earth's and Mars' orbits over ±2 Myr, at the coarse run's steps,
-    # by far less than the model's distance from the N-body solution (0.1°-0.3° over 1 Myr):
-    # measured 0.004″ and 0.014″ in the normal, 8e-8 and 3e-7 in e. Between steps the cubic
-    # Hermite interpolation adds up to 1″ (Earth) and 4″ (Mars), 2e-5 in e (measured at
-    # mid-steps against the half-step run, whose grid points they are).
+    # The default run (a 10-kyr step, two samples per step) against one at an eighth of its step
+    # (its samples on the default run's samples and midpoints), over ±2 Myr: at the samples the
+    # Earth's and Mars' normals differ by 0.47″ and 1.6″ (measured), e by 2e-6 and 1.1e-5 -- the
+    # integration error, far below the model's distance from the N-body solution (0.1°-0.3° over
+    # 1 Myr); midway between samples the cubic Hermite interpolation adds up to 1″ (Earth) and
+    # 5″ (Mars), 2e-5 in e.
     for body in ("earth", "mars"):
         coarse = SecularOrbit(body)
-        fine = SecularOrbit(body, step=coarse.step / 2)
+        assert coarse.samples == 2
+        fine = SecularOrbit(body, step=coarse.step / 8)
         for t, normal_arcsec, ecc in (
-            (coarse.step * np.arange(-400, 401), 0.1, 1e-6),
-            (coarse.step * (np.arange(-400, 400) + 0.5), 5.0, 3e-5),
+            (coarse.spacing * np.arange(-400, 401), 2.5, 2e-5),
+            (coarse.spacing * (np.arange(-400, 400) + 0.5), 6.0, 3e-5),
         ):
             angle = np.arccos(np.clip(np.sum(coarse.normal(t) * fine.normal(t), axis=-1), -1, 1))
             assert angle.max() < normal_arcsec * ARCSEC

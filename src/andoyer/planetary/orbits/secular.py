@@ -17,12 +17,12 @@ and these elements ship in ``data/secular_model.json`` (``scripts/make_secular_m
 
 **Integration.** Lawson's method with the 8th-order Dormand–Prince tableau, the quadratic
 (Laplace–Lagrange) part exact (:mod:`andoyer.planetary.orbits.secular_flow`), a fixed step of
-1/10 of the shortest period of the linear flow (5.0 kyr), compiled; terms too small to matter
-(:data:`PRUNE`) are left out of the flow. Halving the step moves the orbits over ±2 Myr by
-0.014″ at most. The orbit is integrated from J2000 as far as it is asked for, forwards and
-backwards, and kept at every step (the chosen planet's ``x, y`` and their rates: 64 bytes per
-step, 13 MB per Gyr); between steps a cubic Hermite interpolant (up to 1″ for the Earth's
-normal, 4″ for Mars').
+1/5 of the shortest period of the linear flow (10.1 kyr), compiled; terms too small to matter
+(:data:`PRUNE`) are left out of the flow. A run at an eighth of that step moves the orbits over
+±2 Myr by 1.6″ at most. The orbit is integrated from J2000 as far as it is asked for, forwards
+and backwards, and kept every half step (the chosen planet's ``x, y`` and their rates: 64 bytes
+per sample, 13 MB per Gyr; the samples within a step from its stages, the linear flow exact);
+between samples a cubic Hermite interpolant (up to 1″ for the Earth's normal, 5″ for Mars').
 
 **Validity** (``docs/orbits.md`` has the measurements): the fundamental frequencies ``g_1…g_8``,
 ``s_1…s_8`` are within 0.03″/yr of the N-body solution's over 9.8 Myr but ``g_6`` (−0.16″/yr),
@@ -65,8 +65,12 @@ E_WARN, I_WARN = 0.35, np.radians(20.0)
 E_MAX, I_MAX = 0.6, np.radians(40.0)
 #: Steps per extension of a run (the unit of progress and of interruption).
 CHUNK_STEPS = 1 << 15
-#: The default step, as a fraction of the shortest period of the linear flow (5.0 kyr).
+#: The samples kept are at most this fraction of the shortest period of the linear flow apart
+#: (5.0 kyr), and so is the step of a caller who keeps the state at every step only.
 STEP_FRACTION = 1.0 / 10.0
+#: :class:`SecularOrbit`'s default step, as a fraction of that period (10.1 kyr), with samples
+#: within each step from the interaction variable (:func:`~andoyer.planetary.orbits.secular_flow.integrate`).
+LONG_STEP_FRACTION = 1.0 / 5.0
 #: Derivative monomials smaller than this fraction of their component's linear rate are left out
 #: of the flow (at 1.5 times the largest amplitude the linear theory allows each variable).
 PRUNE = 1e-5
@@ -199,11 +203,15 @@ def vectors_from_poincare(
 class _Run:
     """The integration in one direction from J2000 (``sign = ±1``): every step's ``w`` and ``ẇ`` kept."""
 
-    def __init__(self, model: SecularModel, keep: NDArray[np.int64], sign: int, step: float) -> None:
+    def __init__(
+        self, model: SecularModel, keep: NDArray[np.int64], sign: int, step: float, samples: int
+    ) -> None:
         from andoyer.planetary.orbits.secular_flow import lawson_matrices
 
-        self.model, self.keep, self.sign, self.step = model, keep, sign, step
-        self.tableau = lawson_matrices(model.terms.linear, sign * step)
+        self.model, self.keep, self.sign, self.step, self.samples = model, keep, sign, step, samples
+        #: The spacing of the samples kept (years).
+        self.spacing = step / samples
+        self.tableau = lawson_matrices(model.terms.linear, sign * step, samples)
         self.state = model.w0.copy()
         self.w = np.zeros((0, keep.size), dtype=complex)
         self.dw = np.zeros((0, keep.size), dtype=complex)
@@ -213,7 +221,7 @@ class _Run:
     @property
     def reach(self) -> float:
         """How far from J2000 (years, ≥ 0) the samples go."""
-        return (len(self.w) - 1) * self.step if len(self.w) else -1.0
+        return (len(self.w) - 1) * self.spacing if len(self.w) else -1.0
 
     def extend(self, reach: float, progress: bool | None) -> None:
         """Integrate until the samples cover ``reach`` years (and one step beyond)."""
@@ -222,22 +230,21 @@ class _Run:
         from andoyer.planetary.orbits.secular_flow import integrate
 
         total = int(np.ceil(reach / self.step)) + 1
-        if len(self.w) > total:
+        if len(self.w) > total * self.samples:
             return
-        done = max(len(self.w) - 1, 0)
+        done = max(len(self.w) - 1, 0) // self.samples
         terms = self.model.terms
-        a_matrix, b_weights, forward, backward = self.tableau
         show = (sys.stderr.isatty() if progress is None else progress) and (total - done) * self.step > 2e8
         with tqdm(total=total - done, disable=not show, unit="step", desc="secular", file=sys.stderr) as bar:
             while done < total:
                 n = min(CHUNK_STEPS, total - done)
                 state = self.state.copy()
-                out_w = np.empty((n + 1, self.keep.size), dtype=complex)
+                out_w = np.empty((n * self.samples + 1, self.keep.size), dtype=complex)
                 out_dw = np.empty_like(out_w)
                 extreme = np.zeros_like(self.extreme)
                 integrate(
-                    state, n, self.sign * self.step, a_matrix, b_weights, forward, backward,
-                    *terms.arrays(), terms.linear, self.keep, out_w, out_dw, extreme,
+                    state, n, self.sign * self.step, *self.tableau, *terms.arrays(), terms.linear, self.keep,
+                    out_w, out_dw, extreme,
                 )  # fmt: skip
                 self._check_domain(extreme, done + n)
                 w = np.concatenate([self.w[:-1], out_w]) if len(self.w) else out_w
@@ -288,8 +295,8 @@ class SecularOrbit:
         One of :data:`~andoyer.planetary.orbits.planets.PLANETS` (``"earth"`` = Earth–Moon
         barycentre).
     step : float, optional
-        Integration step, years (default: :data:`STEP_FRACTION` of the shortest linear period,
-        5.0 kyr).
+        Integration step, years (default: :data:`LONG_STEP_FRACTION` of the shortest linear
+        period, 10.1 kyr); the samples kept are at most :data:`STEP_FRACTION` of it apart.
     max_span : float
         The largest ``|t|`` that may be asked for (at most :data:`MAX_SPAN`).
     progress : bool or None
@@ -324,16 +331,20 @@ class SecularOrbit:
             raise ValueError(msg)
         self.model = secular_model()
         if step is None:
-            step = default_step(self.model.terms.linear, STEP_FRACTION)
+            step = default_step(self.model.terms.linear, LONG_STEP_FRACTION)
         if not (np.isfinite(step) and 1.0 <= step <= 20000.0):
             msg = f"expected an integration step between 1 and 20000 years, got {step!r}"
             raise ValueError(msg)
         self.step = float(step)
+        shortest = default_step(self.model.terms.linear, STEP_FRACTION)
+        #: Samples kept per step, and their spacing (years).
+        self.samples = max(1, int(np.ceil(self.step / shortest - 1e-9)))
+        self.spacing = self.step / self.samples
         self.span = (-float(max_span), float(max_span))
         self.progress = progress
         P = self.model.terms.count
         keep = np.array([self._index, P + self._index], dtype=np.int64)
-        self._runs = {sign: _Run(self.model, keep, sign, self.step) for sign in (1, -1)}
+        self._runs = {sign: _Run(self.model, keep, sign, self.step, self.samples) for sign in (1, -1)}
         self._columns = np.array([0, 1])  # of x_j, y_j among the runs' kept variables
 
     @classmethod
@@ -366,7 +377,7 @@ class SecularOrbit:
         P = first.model.terms.count
         indices = [orbit._index for orbit in orbits.values()]
         keep = np.array(indices + [P + j for j in indices], dtype=np.int64)
-        runs = {sign: _Run(first.model, keep, sign, first.step) for sign in (1, -1)}
+        runs = {sign: _Run(first.model, keep, sign, first.step, first.samples) for sign in (1, -1)}
         for k, orbit in enumerate(orbits.values()):
             orbit._runs = runs
             orbit._columns = np.array([k, len(indices) + k])
@@ -383,7 +394,7 @@ class SecularOrbit:
             if not np.any(side):
                 continue
             run.extend(float(np.abs(flat[side]).max()), self.progress)
-            out[side] = hermite(flat[side], 0.0, sign * self.step, run.w, run.dw)[:, self._columns]
+            out[side] = hermite(flat[side], 0.0, sign * self.spacing, run.w, run.dw)[:, self._columns]
         return out[:, 0].reshape(times.shape), out[:, 1].reshape(times.shape)
 
     def poincare(self, t: ArrayLike) -> tuple[CArray, CArray]:
