@@ -26,7 +26,9 @@ with the cheapest peer tolerance that is at least as accurate.
 
 Run: ``python3 benchmarks/bench_precession.py [--years 1000] [--peer-years 2] [--steps 0.37,...]``
 ``[--order4-steps 3.7,6.7] [--rtols 1e-4,1e-5]`` (``--rtols``: rows of
-``propagate(..., method="splitting", rtol=R, order=2)``, the step chosen by step doubling)
+``propagate(..., method="splitting", rtol=R, order=2)``, the step chosen by step doubling);
+``--growth`` prints only the step-doubling distance ``|M_h − M_{h/2}| / |M|`` from one lunar
+month to 1000 years at orders 2 and 4 (the shape of the splitting's error in time)
 (pins numpy to one thread; CPU time of this process).
 
 The step of the splitting can be a sizable fraction of the day and even several days:
@@ -109,6 +111,32 @@ def controlled_h(years, rtol, order=2):
     return float(node(out.m_reference[0])), out.step / SIDEREAL_DAY, out.error_estimate
 
 
+#: Output times of the ``--growth`` table: 1, 2, 4, 8 lunar months, then 1 to 1000 years.
+GROWTH_TIMES = np.array(
+    [27.32 * DAY * k for k in (1, 2, 4, 8)] + [JULIAN_YEAR * y for y in (1, 10, 100, 1000)]
+)
+
+
+def growth_table(orders=(2, 4), steps=(13.7, 6.85, 3.43)):
+    """The step-doubling distance ``|M_h − M_{h/2}| / |M|`` against time: how the splitting error grows.
+
+    Shows the shape an error model fitted on a short probe must have (issue 25 item 3): whether
+    the distance grows linearly in time for the whole span or saturates (a bounded term).
+    """
+    scale = float(np.linalg.norm(START.m_reference))
+    print("step-doubling distance |M_h - M_h/2| / |M| at t (relative)")
+    heads = [f"{k} mo" for k in (1, 2, 4, 8)] + [f"{y} yr" for y in (1, 10, 100, 1000)]
+    print("  order  h (sid. d)  " + "  ".join(f"{h:>8}" for h in heads) + "   CPU s (both runs)")
+    for order in orders:
+        for step in steps:
+            t = time.process_time()
+            coarse = integrate_splitting(MODEL, START, GROWTH_TIMES, step * SIDEREAL_DAY, order).m_reference
+            fine = integrate_splitting(MODEL, START, GROWTH_TIMES, step * SIDEREAL_DAY / 2, order).m_reference
+            cost = time.process_time() - t
+            dist = np.linalg.norm(coarse - fine, axis=-1) / scale
+            print(f"  {order:5d}  {step:10.2f}  " + "  ".join(f"{d:8.1e}" for d in dist) + f"   {cost:.2f}")
+
+
 def cpu_mean(fn, least=0.5):
     """Mean CPU time of ``fn`` over as many calls as fill ``least`` seconds (at least one)."""
     out, spent = cpu(fn)
@@ -171,7 +199,14 @@ def main():
     parser.add_argument(
         "--rtols", default="", help="rows of propagate(method='splitting', rtol=R, order=2) at these R"
     )
+    parser.add_argument(
+        "--growth", action="store_true", help="only the table of the step-doubling distance against time"
+    )
     args = parser.parse_args()
+    if args.growth:
+        splitting_h(0.01, 1.0)  # compile / load the numba caches outside the timings
+        growth_table()
+        return
     S, Y = args.peer_years, args.years
     h0 = float(node(START.m_reference))
     steps = [float(x) for x in args.steps.split(",")]
