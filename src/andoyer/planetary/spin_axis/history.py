@@ -349,7 +349,7 @@ def _check_step(step: float) -> None:
 def _rate_terms(
     orbit: OrbitHistory, model: SpinAxisModel | Sequence[SpinAxisModel], t: Array, runs: int
 ) -> tuple[Array, Array]:
-    """The orbit's factor ``(1 − e²)^{−3/2}`` at ``t``, shape (T, 1) or (T, M), and the runs' (5, M) parameters.
+    """The orbit's factor ``(1 − e²)^{−3/2}`` at ``t``, (T, 1) or (T, M), and the runs' (5, M) parameters.
 
     The two halves of :meth:`SpinAxisModel.rate` that :func:`rotate_stages` joins: the orbit's
     is computed once for all runs where the orbit knows its eccentricity. A model with another
@@ -362,7 +362,8 @@ def _rate_terms(
         unit[0] = 1.0
         return np.ascontiguousarray(_alpha(orbit, model, t, runs).T), unit
     names = ("alpha_sun", "beta", "tide_spin", "tide_moon", "ellipticity_drift")
-    parameters = np.array([[getattr(m, name) for m in models] for name in names], dtype=float).reshape(5, runs)
+    parameters = np.array([[getattr(m, name) for m in models] for name in names], dtype=float)
+    parameters = parameters.reshape(5, runs)
     if orbit.has_eccentricity:
         e = np.linalg.norm(orbit.eccentricity_vector(t), axis=-1)
         return (((1 - e) * (1 + e)) ** -1.5)[:, None], parameters
