@@ -35,8 +35,16 @@ def _run(members: int, chunk: int, times, scheduler="synchronous"):  # type: ign
 
     sampler = SpinParameterSampler("earth", precession_rate=(45.0, 55.0), tidal_dissipation=(0.0, 1.2))
     propagator = SpinAxisPropagator(LaplaceLagrangeOrbit("earth"), "earth")
-    return run_ensemble(sampler, members, times, propagator=propagator, chunk=chunk, output="euler",
-                        scheduler=scheduler, progress=False)
+    return run_ensemble(
+        sampler,
+        members,
+        times,
+        propagator=propagator,
+        chunk=chunk,
+        output="euler",
+        scheduler=scheduler,
+        progress=False,
+    )
 
 
 def main() -> None:
@@ -59,10 +67,14 @@ def main() -> None:
         _run(args.peer_members, 1, times)
         one.append((time.perf_counter() - t) / args.peer_members)
     print(f"{args.members} x {args.years:.3g} yr, outputs {times.size}, one core (synchronous):")
-    print(f"  vectorised, chunk {args.chunk}: {min(many) * 1e3:.3f} ms/member -> "
-          f"{min(many) * args.members:.1f} s for {args.members}")
-    print(f"  per-history (chunk 1, {args.peer_members} members): {min(one) * 1e3:.3f} ms/member -> "
-          f"{min(one) * args.members:.1f} s for {args.members}")
+    print(
+        f"  vectorised, chunk {args.chunk}: {min(many) * 1e3:.3f} ms/member -> "
+        f"{min(many) * args.members:.1f} s for {args.members}"
+    )
+    print(
+        f"  per-history (chunk 1, {args.peer_members} members): {min(one) * 1e3:.3f} ms/member -> "
+        f"{min(one) * args.members:.1f} s for {args.members}"
+    )
     print(f"  ratio per-history / vectorised: {min(one) / min(many):.1f}")
     if args.workers > 0:
         from andoyer.ensemble import local_client
