@@ -56,7 +56,7 @@ def main() -> None:
     parser.add_argument("--repeat", type=int, default=2)
     parser.add_argument("--workers", type=int, default=2)
     args = parser.parse_args()
-    times = np.linspace(-args.years, 0.0, int(round(args.years / 1000.0)) + 1)
+    times = np.linspace(-args.years, 0.0, round(args.years / 1000.0) + 1)
     _run(4, 2, times)  # compile
     many, one = [], []
     for _ in range(args.repeat):
