@@ -79,9 +79,11 @@ def test_interpreted_fallback_agrees_with_compiled(monkeypatch):
     s0 /= np.linalg.norm(s0, axis=-1, keepdims=True)
     mid, dur = stepping_module.stage_times(np.arange(20.0) * 300.0, np.full(20, 300.0), 8)
     normals = ORBIT.normal(mid)
-    rates = np.abs(rng.normal(size=(3, 1))) * MODEL.rate(mid, 0.06)[None, :]
+    parameters = np.array([[MODEL.alpha_sun], [MODEL.beta], [1e-9], [2e-9], [-1e-9]])
+    parameters = parameters * np.abs(rng.normal(size=(1, 3)))
+    factor = np.full((mid.size, 1), (1 - 0.06**2) ** -1.5)
     compiled = np.empty((3, 20, 3))
     interpreted = np.empty((3, 20, 3))
-    stepping_module.rotate_stages(s0, normals, rates, dur, 15, compiled)
-    plain.rotate_stages(s0, normals, rates, dur, 15, interpreted)
+    stepping_module.rotate_stages(s0, normals, mid, factor, parameters, dur, 15, compiled)
+    plain.rotate_stages(s0, normals, mid, factor, parameters, dur, 15, interpreted)
     assert np.abs(compiled - interpreted).max() <= 1e-14

@@ -333,9 +333,9 @@ def _sweep(orbit, model, knots, s0, step, order, refine=1):  # type: ignore[no-u
     for starts, sizes, ends, last in _step_blocks(knots, step, BLOCK_STEPS, refine):
         mid, dur = stage_times(starts, sizes, order)
         normals = np.ascontiguousarray(orbit.normal(mid))
-        alpha = _alpha(orbit, model, mid, len(s))
+        factor, parameters = _rate_terms(orbit, model, mid, len(s))
         out = np.empty((len(s), len(starts), 3))
-        rotate_stages(s, normals, np.ascontiguousarray(alpha), dur, len(dur) // len(starts), out)
+        rotate_stages(s, normals, mid, factor, parameters, dur, len(dur) // len(starts), out)
         s = np.ascontiguousarray(out[:, -1])
         yield ends, out, last
 
@@ -344,6 +344,31 @@ def _check_step(step: float) -> None:
     if not (np.isfinite(step) and step > 0):
         msg = f"expected a positive finite integration step in years, got {step!r}"
         raise ValueError(msg)
+
+
+def _rate_terms(
+    orbit: OrbitHistory, model: SpinAxisModel | Sequence[SpinAxisModel], t: Array, runs: int
+) -> tuple[Array, Array]:
+    """The orbit's factor ``(1 − e²)^{−3/2}`` at ``t``, (T, 1) or (T, M), and the runs' (5, M) parameters.
+
+    The two halves of :meth:`SpinAxisModel.rate` that :func:`rotate_stages` joins: the orbit's
+    is computed once for all runs where the orbit knows its eccentricity. A model with another
+    ``rate`` gives ``α`` itself (T, M) with the parameters ``(1, 0, 0, 0, 0)``.
+    """
+    models = [model] * runs if isinstance(model, SpinAxisModel) else list(model)
+    if any(type(m).rate is not SpinAxisModel.rate for m in models):
+        # another law of α (a migrating satellite's): α itself as the per-run factor, unit parameters
+        unit = np.zeros((5, runs))
+        unit[0] = 1.0
+        return np.ascontiguousarray(_alpha(orbit, model, t, runs).T), unit
+    names = ("alpha_sun", "beta", "tide_spin", "tide_moon", "ellipticity_drift")
+    parameters = np.array([[getattr(m, name) for m in models] for name in names], dtype=float)
+    parameters = parameters.reshape(5, runs)
+    if orbit.has_eccentricity:
+        e = np.linalg.norm(orbit.eccentricity_vector(t), axis=-1)
+        return (((1 - e) * (1 + e)) ** -1.5)[:, None], parameters
+    e = np.array([m.eccentricity for m in models], dtype=float)
+    return np.broadcast_to(((1 - e) * (1 + e)) ** -1.5, (t.size, runs)), parameters
 
 
 def _alpha(orbit: OrbitHistory, model: SpinAxisModel | Sequence[SpinAxisModel], t: Array, runs: int) -> Array:

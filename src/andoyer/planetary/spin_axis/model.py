@@ -56,6 +56,7 @@ Conventions 2010 Table 1.1 round it to 0.0032737949).
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -112,6 +113,12 @@ def _solar_terms(body: str | Body) -> tuple[float, float, float, float, float]:
             )
             raise ValueError(msg)
         return c.mean_motion_squared, c.eccentricity, c.outer_torque, c.spin_rate, 0.0
+    return _named_solar_terms(body)
+
+
+@functools.cache
+def _named_solar_terms(body: str) -> tuple[float, float, float, float, float]:
+    """:func:`_solar_terms` of the Earth or Mars, once per process: every member of an ensemble needs them."""
     perturbers = mean_perturbers(body)
     sun = perturbers[0]
     n2 = sun.gm / sun.orbit.semi_major_axis**3

@@ -62,8 +62,18 @@ def stage_times(starts: Array, steps: Array, order: int) -> tuple[Array, Array]:
 
 
 @jit
-def rotate_stages(s0: Array, normals: Array, rates: Array, durations: Array, stages: int, out: Array) -> None:
+def rotate_stages(
+    s0: Array, normals: Array, times: Array, orbit_factor: Array, parameters: Array, durations: Array,
+    stages: int, out: Array,
+) -> None:
     """Apply the exact frozen-orbit rotations stage by stage; store ``s`` after every step.
+
+    One kernel for one run and many: the runs share the orbit (its normal and eccentricity
+    factor are read once per stage) and are the innermost loop, so that it vectorises; a
+    single history is a chunk of one run. Each run's
+    ``α = α_⊙ (1 + W T_d t)(1 + (Ḣ/H) t) [f(e) + β (1 + 2N T_d t)]``
+    (:meth:`~andoyer.planetary.spin_axis.SpinAxisModel.rate`) is formed here from its five
+    parameters and the shared ``f(e) = (1 − e²)^{−3/2}``, so no (stages × runs) array is stored.
 
     Parameters
     ----------
@@ -71,8 +81,12 @@ def rotate_stages(s0: Array, normals: Array, rates: Array, durations: Array, sta
         Initial unit axes of ``M`` independent runs.
     normals : ndarray, shape (K·S, 3)
         Orbit normal at each stage's midpoint (shared by the runs).
-    rates : ndarray, shape (M, K·S)
-        ``α`` at each stage's midpoint, per run.
+    times : ndarray, shape (K·S,)
+        The stages' midpoint times ``t`` (Julian years from J2000).
+    orbit_factor : ndarray, shape (K·S, M) or (K·S, 1)
+        ``f(e)`` at the midpoints: shared (one column) or per run (a run's own fixed ``e``).
+    parameters : ndarray, shape (5, M)
+        Rows ``α_⊙, β, W T_d, 2N T_d, Ḣ/H`` of every run.
     durations : ndarray, shape (K·S,)
         Signed stage durations.
     stages : int
@@ -82,23 +96,42 @@ def rotate_stages(s0: Array, normals: Array, rates: Array, durations: Array, sta
 
     Examples
     --------
-    A quarter turn about ``n = z`` of an axis at 60° (``s·n = 1/2``, rate ``π``, time 1):
+    A quarter turn about ``n = z`` of an axis at 60° (``s·n = 1/2``, ``α = π``, time 1):
 
     >>> out = np.empty((1, 1, 3))
     >>> s0 = np.array([[np.sqrt(0.75), 0.0, 0.5]])
-    >>> rotate_stages(s0, np.array([[0.0, 0.0, 1.0]]), np.array([[np.pi]]), np.array([1.0]), 1, out)
+    >>> parameters = np.array([[np.pi], [0.0], [0.0], [0.0], [0.0]])
+    >>> one = np.ones((1, 1))
+    >>> rotate_stages(s0, np.array([[0.0, 0.0, 1.0]]), np.zeros(1), one, parameters, np.ones(1), 1, out)
     >>> np.round(out[0, 0], 12).tolist()  # turned by -π/2 about z
     [0.0, -0.866025403784, 0.5]
     """
-    for m in range(s0.shape[0]):
-        sx, sy, sz = s0[m, 0], s0[m, 1], s0[m, 2]
-        for k in range(durations.shape[0]):
-            nx, ny, nz = normals[k, 0], normals[k, 1], normals[k, 2]
-            sx, sy, sz = turn_about(sx, sy, sz, nx, ny, nz, -rates[m, k] * durations[k])
-            if k % stages == stages - 1:
-                scale = 1.0 / np.sqrt(sx * sx + sy * sy + sz * sz)
-                sx, sy, sz = sx * scale, sy * scale, sz * scale
-                j = k // stages
-                out[m, j, 0] = sx
-                out[m, j, 1] = sy
-                out[m, j, 2] = sz
+    runs = s0.shape[0]
+    count = durations.shape[0]
+    if normals.shape[0] != count or times.shape[0] != count or orbit_factor.shape[0] != count:
+        raise ValueError("expected normals, times and orbit factors with one row per stage")
+    if parameters.shape[0] != 5 or parameters.shape[1] != runs or orbit_factor.shape[1] not in (1, runs):
+        raise ValueError("expected parameters of shape (5, M) and orbit factors of 1 or M columns")
+    shared = orbit_factor.shape[1] == 1
+    sx = s0[:, 0].copy()
+    sy = s0[:, 1].copy()
+    sz = s0[:, 2].copy()
+    for k in range(count):
+        nx, ny, nz = normals[k, 0], normals[k, 1], normals[k, 2]
+        t = times[k]
+        h = durations[k]
+        for m in range(runs):
+            f = orbit_factor[k, 0] if shared else orbit_factor[k, m]
+            factor = (1 + parameters[2, m] * t) * (1 + parameters[4, m] * t)
+            alpha = parameters[0, m] * factor * (f + parameters[1, m] * (1 + parameters[3, m] * t))
+            sx[m], sy[m], sz[m] = turn_about(sx[m], sy[m], sz[m], nx, ny, nz, -alpha * h)
+        if k % stages == stages - 1:
+            j = k // stages
+            for m in range(runs):
+                scale = 1.0 / np.sqrt(sx[m] * sx[m] + sy[m] * sy[m] + sz[m] * sz[m])
+                sx[m] *= scale
+                sy[m] *= scale
+                sz[m] *= scale
+                out[m, j, 0] = sx[m]
+                out[m, j, 1] = sy[m]
+                out[m, j, 2] = sz[m]
