@@ -16,7 +16,8 @@ Three measurements, each printed as one JSON object (``--json PATH`` also writes
     shipped: see docs/spin-axis.md for the copies used) against the nominal secular member
     (no perturbation) at ``--rates`` (″/yr): the mean, extremes and fraction of time at or above
     40° over 0–4 Myr and 4–10 Myr before J2000, and the largest difference within 20 kyr …
-    10 Myr.
+    10 Myr; ``--nbody END`` adds the axis along the N-body orbit (8-day step, about 48 CPU s
+    per Myr, cached) to ``END``.
 
 ``ensemble``
     ``--members N`` members (:func:`andoyer.ensemble.obliquity_ensemble`, seed ``--seed``,
@@ -28,7 +29,8 @@ Three measurements, each printed as one JSON object (``--json PATH`` also writes
 Run (2 cores; a member costs about 27 CPU s per Gyr)::
 
     python3 scripts/mars_statistics.py regular
-    python3 scripts/mars_statistics.py la2004 INSOLN.LA2004.MARS.ASC INSOLP.LA2004.MARS.ASC
+    python3 scripts/mars_statistics.py la2004 INSOLN.LA2004.MARS.ASC INSOLP.LA2004.MARS.ASC \
+        --rates 7.597 7.576 7.565 --nbody -6e6
     python3 scripts/mars_statistics.py ensemble --members 30 --end -2.5e8 --step 1e4
     python3 scripts/mars_statistics.py ensemble --members 20 --end -1e9 --step 2e4 \
         --windows 2.5e8 5e8 1e9
@@ -66,12 +68,10 @@ def _summary(values: np.ndarray) -> dict[str, float]:
 
 def spectrum_lines(t: np.ndarray, eps: np.ndarray, count: int = 2) -> list[float]:
     """Periods (years) of the ``count`` strongest local maxima of the Hann-windowed spectrum of ``eps``."""
-    from scipy.signal import find_peaks
-
     x = (eps - eps.mean()) * np.hanning(eps.size)
     power = np.abs(np.fft.rfft(x))
     freq = np.fft.rfftfreq(eps.size, d=abs(t[1] - t[0]))
-    peaks, _ = find_peaks(power)
+    peaks = np.flatnonzero((power[1:-1] > power[:-2]) & (power[1:-1] > power[2:])) + 1
     peaks = peaks[np.argsort(power[peaks])[::-1]][:count]
     return [float(1.0 / freq[p]) for p in peaks]
 
@@ -106,8 +106,24 @@ def read_la(paths: list[str]) -> tuple[np.ndarray, np.ndarray]:
 WINDOWS_LA = ((-4e6, 0.0), (-10e6, -4e6), (-10e6, 0.0), (-20e6, 0.0))
 
 
-def la2004(paths: list[str], rates: list[float]) -> dict:
-    """La2004's Mars obliquity over windows of the last 20 Myr, and the nominal secular member's."""
+def _against(t: np.ndarray, eps: np.ndarray, t_la: np.ndarray, eps_la: np.ndarray) -> dict[str, float]:
+    """Largest |ε − ε_La| (degrees) on the common 1-kyr epochs within 20 kyr … 10 Myr of J2000."""
+    common = np.isin(np.round(t), np.round(t_la))
+    t_c = t[common]
+    diff = np.abs(eps[common] - np.interp(t_c, t_la, eps_la))
+    return {
+        f"{w / 1e6:g} Myr": float(diff[np.abs(t_c) <= w].max())
+        for w in (2e4, 2.5e5, 1e6, 2e6, 4e6, 1e7)
+        if np.any(np.abs(t_c) >= w)
+    }
+
+
+def la2004(paths: list[str], rates: list[float], nbody_end: float | None = None) -> dict:
+    """La2004's Mars obliquity over windows of the last 20 Myr, and the nominal secular member's.
+
+    With ``nbody_end``, also the spin axis (7.597″/yr) along the N-body orbit (8-day step, cached)
+    from J2000 to ``nbody_end``.
+    """
     from andoyer.planetary.spin_axis import default_axis
     from andoyer.planetary.spin_axis.members import member_obliquities
 
@@ -128,15 +144,25 @@ def la2004(paths: list[str], rates: list[float]) -> dict:
     )  # fmt: skip
     out["secular"] = {}
     for rate, eps in zip(rates, np.degrees(run.obliquity), strict=True):
-        common = np.isin(np.round(run.t), np.round(t_la))
-        t_c = run.t[common]
-        diff = np.abs(eps[common] - np.interp(t_c, t_la, eps_la))
         out["secular"][f"{rate:g}"] = {
             "windows": windows(run.t, eps),
-            "max_abs_difference_deg": {
-                f"{w / 1e6:g} Myr": float(diff[np.abs(t_c) <= w].max())
-                for w in (2e4, 2.5e5, 1e6, 2e6, 4e6, 1e7)
+            "max_abs_difference_deg": _against(run.t, eps, t_la, eps_la),
+        }
+    if nbody_end is not None:
+        from andoyer.planetary.orbits import NBodyOrbit
+        from andoyer.planetary.spin_axis import spin_axis_history
+
+        t = np.arange(nbody_end, 500.0, 1000.0)
+        orbit = NBodyOrbit("mars", step_days=8.0, progress=False)
+        eps = np.degrees(spin_axis_history(orbit, "mars", t, precession_rate=7.597).obliquity)
+        out["nbody_7.597"] = {
+            "end": nbody_end,
+            "windows": {
+                f"[{a / 1e6:g},{b / 1e6:g}]": _summary(eps[(t >= a) & (t <= b)])
+                for a, b in ((-4e6, 0.0), (nbody_end, -4e6), (nbody_end, 0.0))
+                if a >= nbody_end and a < b
             },
+            "max_abs_difference_deg": _against(t, eps, t_la, eps_la),
         }
     return out
 
@@ -185,6 +211,7 @@ def main(argv: list[str] | None = None) -> None:
     la = sub.add_parser("la2004")
     la.add_argument("files", nargs="+")
     la.add_argument("--rates", type=float, nargs="+", default=[7.597, 7.576])
+    la.add_argument("--nbody", type=float, help="also along the N-body orbit to this time (years)")
     e = sub.add_parser("ensemble")
     e.add_argument("--body", default="mars")
     e.add_argument("--members", type=int, default=30)
@@ -198,7 +225,7 @@ def main(argv: list[str] | None = None) -> None:
     if args.what == "regular":
         result = regular(args.span, args.step, args.rate)
     elif args.what == "la2004":
-        result = la2004(args.files, args.rates)
+        result = la2004(args.files, args.rates, args.nbody)
     else:
         result = ensemble(args.body, args.members, args.end, args.step, args.seed, args.windows)
     text = json.dumps(result, indent=1)
