@@ -24,7 +24,7 @@ Three measurements, each printed as one JSON object (``--json PATH`` also writes
     the default perturbation and precession-rate range) from J2000 to ``--end`` every
     ``--step`` years: the mean, standard deviation, median and extremes over all (member,
     time) values, the fraction of time at or above 40°, 50°, 60°, the probability of reaching
-    each, the members' own means, and the same over the windows ``--windows`` (years back).
+    each, the members' own means and extremes, and the same over the windows ``--windows`` (years back).
 
 Run (2 cores; a member costs about 27 CPU s per Gyr)::
 
@@ -186,6 +186,7 @@ def ensemble(body: str, members: int, end: float, step: float, seed: int, window
         "all": _summary(eps.ravel()),
         "exceedance": {f"{th:g}": float(ds["exceedance"].sel(threshold=th)) for th in THRESHOLDS},
         "member_means": [float(np.nanmean(row)) for row in eps],
+        "member_min": [float(np.nanmin(row)) for row in eps],
         "member_max": [float(np.nanmax(row)) for row in eps],
     }  # fmt: skip
     if "precession_rate" in ds:
