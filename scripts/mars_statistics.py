@@ -103,19 +103,18 @@ def read_la(paths: list[str]) -> tuple[np.ndarray, np.ndarray]:
     return t, np.degrees(data[keep, 2])
 
 
-WINDOWS_LA = ((-4e6, 0.0), (-10e6, -4e6), (-10e6, 0.0), (-20e6, 0.0))
+WINDOWS_LA = ((-4e6, 0.0), (-6e6, -4e6), (-10e6, -4e6), (-10e6, 0.0), (-20e6, 0.0))
 
 
-def _against(t: np.ndarray, eps: np.ndarray, t_la: np.ndarray, eps_la: np.ndarray) -> dict[str, float]:
-    """Largest |ε − ε_La| (degrees) on the common 1-kyr epochs within 20 kyr … 10 Myr of J2000."""
+def _against(
+    t: np.ndarray, eps: np.ndarray, t_la: np.ndarray, eps_la: np.ndarray, reach: float = 1e7
+) -> dict[str, float]:
+    """Largest |ε − ε_La| (degrees) on the common 1-kyr epochs within 20 kyr … ``reach`` of J2000."""
     common = np.isin(np.round(t), np.round(t_la))
     t_c = t[common]
     diff = np.abs(eps[common] - np.interp(t_c, t_la, eps_la))
-    return {
-        f"{w / 1e6:g} Myr": float(diff[np.abs(t_c) <= w].max())
-        for w in (2e4, 2.5e5, 1e6, 2e6, 4e6, 1e7)
-        if np.any(np.abs(t_c) >= w)
-    }
+    reaches = sorted({w for w in (2e4, 2.5e5, 1e6, 2e6, 4e6) if w < reach} | {reach})
+    return {f"{w / 1e6:g} Myr": float(diff[np.abs(t_c) <= w].max()) for w in reaches}
 
 
 def la2004(paths: list[str], rates: list[float], nbody_end: float | None = None) -> dict:
@@ -155,14 +154,14 @@ def la2004(paths: list[str], rates: list[float], nbody_end: float | None = None)
         t = np.arange(nbody_end, 500.0, 1000.0)
         orbit = NBodyOrbit("mars", step_days=8.0, progress=False)
         eps = np.degrees(spin_axis_history(orbit, "mars", t, precession_rate=7.597).obliquity)
+        spans = [(a, b) for a, b in ((-4e6, 0.0), (nbody_end, -4e6), (nbody_end, 0.0)) if nbody_end <= a < b]
         out["nbody_7.597"] = {
             "end": nbody_end,
-            "windows": {
-                f"[{a / 1e6:g},{b / 1e6:g}]": _summary(eps[(t >= a) & (t <= b)])
-                for a, b in ((-4e6, 0.0), (nbody_end, -4e6), (nbody_end, 0.0))
-                if a >= nbody_end and a < b
+            "windows": {f"[{a / 1e6:g},{b / 1e6:g}]": _summary(eps[(t >= a) & (t <= b)]) for a, b in spans},
+            "la_same_windows": {
+                f"[{a / 1e6:g},{b / 1e6:g}]": _summary(eps_la[(t_la >= a) & (t_la <= b)]) for a, b in spans
             },
-            "max_abs_difference_deg": _against(t, eps, t_la, eps_la),
+            "max_abs_difference_deg": _against(t, eps, t_la, eps_la, reach=abs(nbody_end)),
         }
     return out
 
