@@ -17,7 +17,7 @@ Three measurements, each printed as one JSON object (``--json PATH`` also writes
     (no perturbation) at ``--rates`` (″/yr): the mean, extremes and fraction of time at or above
     40° over 0–4 Myr and 4–10 Myr before J2000, and the largest difference within 20 kyr …
     10 Myr; ``--nbody END`` adds the axis along the N-body orbit (8-day step, about 48 CPU s
-    per Myr, cached) to ``END``.
+    per Myr, cached) to ``END``; ``--plot PNG`` draws the histories over the last 10 Myr.
 
 ``ensemble``
     ``--members N`` members (:func:`andoyer.ensemble.obliquity_ensemble`, seed ``--seed``,
@@ -117,12 +117,15 @@ def _against(
     return {f"{w / 1e6:g} Myr": float(diff[np.abs(t_c) <= w].max()) for w in reaches}
 
 
-def la2004(paths: list[str], rates: list[float], nbody_end: float | None = None) -> dict:
+def la2004(
+    paths: list[str], rates: list[float], nbody_end: float | None = None, plot: str | None = None
+) -> dict:
     """La2004's Mars obliquity over windows of the last 20 Myr, and the nominal secular member's.
 
     With ``nbody_end``, also the spin axis (7.597″/yr) along the N-body orbit (8-day step, cached)
-    from J2000 to ``nbody_end``.
+    from J2000 to ``nbody_end``; with ``plot``, a figure of the histories over the last 10 Myr.
     """
+    curves: list[tuple[str, np.ndarray, np.ndarray]] = []
     from andoyer.planetary.spin_axis import default_axis
     from andoyer.planetary.spin_axis.members import member_obliquities
 
@@ -136,6 +139,7 @@ def la2004(paths: list[str], rates: list[float], nbody_end: float | None = None)
         return [_summary(eps[(t >= a) & (t <= b)]) for a, b in WINDOWS_LA]
 
     out["la"] = windows(t_la, eps_la)
+    curves.append(("La2004", t_la, eps_la))
     end = max(-20e6, float(t_la.min()))
     run = member_obliquities(
         "mars", end, 1000.0, np.zeros((len(rates), 16), complex), default_axis("mars"),
@@ -147,6 +151,7 @@ def la2004(paths: list[str], rates: list[float], nbody_end: float | None = None)
             "windows": windows(run.t, eps),
             "max_abs_difference_deg": _against(run.t, eps, t_la, eps_la),
         }
+        curves.append((f"secular orbit, {rate:g}″/yr", run.t, eps))
     if nbody_end is not None:
         from andoyer.planetary.orbits import NBodyOrbit
         from andoyer.planetary.spin_axis import spin_axis_history
@@ -163,7 +168,31 @@ def la2004(paths: list[str], rates: list[float], nbody_end: float | None = None)
             },
             "max_abs_difference_deg": _against(t, eps, t_la, eps_la, reach=abs(nbody_end)),
         }
+        curves.insert(1, ("nbody orbit, 7.597″/yr", t, eps))
+    if plot:
+        _plot(curves, plot)
     return out
+
+
+def _plot(curves: list[tuple[str, np.ndarray, np.ndarray]], path: str) -> None:
+    """One panel per history over the last 10 Myr, La2004 drawn under each."""
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(9.0, 1.6 * len(curves)), layout="constrained")
+    axes = fig.subplots(len(curves), 1, sharex=True, sharey=True)
+    _, t_la, eps_la = curves[0]
+    keep = (t_la >= -1e7) & (t_la <= 0.0)
+    for ax, (label, t, eps) in zip(axes, curves, strict=True):
+        if label != "La2004":
+            ax.plot(t_la[keep] / 1e6, eps_la[keep], color="0.75", lw=0.6, label="La2004")
+        m = (t >= -1e7) & (t <= 0.0)
+        ax.plot(t[m] / 1e6, eps[m], lw=0.6, color="C0" if label == "La2004" else "C3", label=label)
+        ax.legend(loc="upper right", fontsize=8, framealpha=0.9, ncols=2)
+        ax.set_ylabel("ε (deg)")
+        ax.set_ylim(5.0, 60.0)
+    axes[-1].set_xlabel("time from J2000 (Myr)")
+    fig.savefig(path, dpi=110)
+    print(f"wrote {path}", file=sys.stderr)
 
 
 def ensemble(body: str, members: int, end: float, step: float, seed: int, windows: list[float]) -> dict:
@@ -212,6 +241,7 @@ def main(argv: list[str] | None = None) -> None:
     la.add_argument("files", nargs="+")
     la.add_argument("--rates", type=float, nargs="+", default=[7.597, 7.576])
     la.add_argument("--nbody", type=float, help="also along the N-body orbit to this time (years)")
+    la.add_argument("--plot", help="a PNG of the histories over the last 10 Myr")
     e = sub.add_parser("ensemble")
     e.add_argument("--body", default="mars")
     e.add_argument("--members", type=int, default=30)
@@ -225,7 +255,7 @@ def main(argv: list[str] | None = None) -> None:
     if args.what == "regular":
         result = regular(args.span, args.step, args.rate)
     elif args.what == "la2004":
-        result = la2004(args.files, args.rates, args.nbody)
+        result = la2004(args.files, args.rates, args.nbody, args.plot)
     else:
         result = ensemble(args.body, args.members, args.end, args.step, args.seed, args.windows)
     text = json.dumps(result, indent=1)
