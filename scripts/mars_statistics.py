@@ -26,16 +26,16 @@ Three measurements, each printed as one JSON object (``--json PATH`` also writes
     time) values, the fraction of time at or above 40°, 50°, 60°, the probability of reaching
     each, the members' own means and extremes, and the same over the windows ``--windows`` (years back).
 
-Run (2 cores; a member costs about 27 CPU s per Gyr)::
+Run (2 cores; a member costs about 27 CPU s per Gyr; negative values as ``--end=-1e9``)::
 
     python3 scripts/mars_statistics.py regular
     python3 scripts/mars_statistics.py la2004 INSOLN.LA2004.MARS.ASC INSOLP.LA2004.MARS.ASC \
-        --rates 7.597 7.576 7.565 --nbody -6e6
-    python3 scripts/mars_statistics.py ensemble --members 30 --end -2.5e8 --step 1e4
-    python3 scripts/mars_statistics.py ensemble --members 20 --end -1e9 --step 2e4 \
-        --windows 2.5e8 5e8 1e9
+        --rates 7.597 7.576 7.565 --nbody=-6e6
+    python3 scripts/mars_statistics.py ensemble --members 30 --end=-2.5e8 --step 1e4 --windows 1e7 1e8 2.5e8
+    python3 scripts/mars_statistics.py ensemble --members 20 --end=-1e9 --step 2e4 --seed 1 \
+        --windows 1e7 1e8 2.5e8 5e8 1e9
     python3 scripts/mars_statistics.py ensemble --body moonless-earth --members 8 \
-        --end -5e8 --step 1e4
+        --end=-5e8 --step 1e4
 """
 
 from __future__ import annotations
