@@ -1,4 +1,4 @@
-"""Mars' regular obliquity against Ward (1973), the published numbers of the linear theory.
+"""Mars' obliquity against published numbers: Ward (1973) for the linear theory, La2004 over 1 Myr.
 
 Ward, W. R. (1973), *Large-scale variations in the obliquity of Mars*, Science 181, 260–262
 (doi:10.1126/science.181.4096.260). Its abstract (read on science.org and on CaltechAUTHORS,
@@ -13,6 +13,9 @@ Ward's orbit was a linear secular theory of the Brouwer & van Woerkom (1950) kin
 rate (7.597″/yr), is the like-for-like computation. "Maximum possible variation" is an envelope
 (every term at its extreme at once): the range met over 10 Myr must lie within it, and — the
 amplitudes being those of the same theory — cover most of it.
+
+The secular member (:mod:`andoyer.planetary.spin_axis.members`) is held to La2004 over the last
+Myr, the span over which its orbit and La2004's agree (docs/chaotic-obliquity.md).
 """
 
 from __future__ import annotations
