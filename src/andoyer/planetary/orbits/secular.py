@@ -46,11 +46,19 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from andoyer._jit import jit
 from andoyer.planetary.orbits.elements import eccentricity_from_elements
 from andoyer.planetary.orbits.planets import PLANETS, check_planet, planet_data
 from andoyer.planetary.orbits.protocol import check_times
 
-__all__ = ["MAX_SPAN", "SecularModel", "SecularOrbit", "secular_model"]
+__all__ = [
+    "MAX_SPAN",
+    "SecularModel",
+    "SecularOrbit",
+    "poincare_normal",
+    "secular_model",
+    "vectors_from_poincare",
+]
 
 Array = NDArray[np.float64]
 CArray = NDArray[np.complex128]
@@ -198,6 +206,47 @@ def vectors_from_poincare(
     normal = np.stack([sin_i * np.sin(node), -sin_i * np.cos(node), cos_i], axis=-1)
     ecc = eccentricity_from_elements(e, np.arctan2(sin_i, cos_i), node, varpi)
     return normal @ rotation, ecc @ rotation
+
+
+@jit
+def poincare_normal(x, y, Lambda, rotation):
+    r"""The unit orbit normal (J2000 ecliptic) and ``√(1−e²)`` from one planet's Poincaré ``x, y``.
+
+    :func:`vectors_from_poincare`'s normal for one planet at one time, for compiled loops (no
+    angles: ``(sin i sin Ω, −sin i cos Ω) = sin i (Im y, −Re y)/|y|``).
+
+    Parameters
+    ----------
+    x, y : complex
+    Lambda : float
+    rotation : numpy.ndarray, shape (3, 3)
+        J2000 ecliptic → invariable frame.
+
+    Returns
+    -------
+    nx, ny, nz, root : float
+        The normal and ``√(1−e²) = 1 − |x|²/(2Λ)``.
+
+    Examples
+    --------
+    >>> n, _ = vectors_from_poincare(np.array(0.1 + 0.02j), np.array(0.03 - 0.01j), 1.0, np.eye(3))
+    >>> nx, ny, nz, root = poincare_normal(0.1 + 0.02j, 0.03 - 0.01j, 1.0, np.eye(3))
+    >>> bool(np.allclose([nx, ny, nz], n, rtol=0, atol=1e-15)), round(root, 6)
+    (True, 0.9948)
+    """
+    root = 1.0 - (x.real * x.real + x.imag * x.imag) / (2.0 * Lambda)
+    size2 = y.real * y.real + y.imag * y.imag
+    cos_i = 1.0 - size2 / (2.0 * Lambda * root)
+    sin_i = np.sqrt(max(1.0 - cos_i * cos_i, 0.0))
+    size = np.sqrt(size2)
+    if size > 0.0:
+        a, b = sin_i * y.imag / size, -sin_i * y.real / size
+    else:
+        a, b = 0.0, 0.0
+    nx = a * rotation[0, 0] + b * rotation[1, 0] + cos_i * rotation[2, 0]
+    ny = a * rotation[0, 1] + b * rotation[1, 1] + cos_i * rotation[2, 1]
+    nz = a * rotation[0, 2] + b * rotation[1, 2] + cos_i * rotation[2, 2]
+    return nx, ny, nz, root
 
 
 class _Run:
