@@ -50,6 +50,7 @@ from andoyer._jit import jit
 from andoyer.planetary.orbits.elements import eccentricity_from_elements
 from andoyer.planetary.orbits.planets import PLANETS, check_planet, planet_data
 from andoyer.planetary.orbits.protocol import check_times
+from andoyer.planetary.orbits.secular_flow import hermite_basis
 
 __all__ = [
     "MAX_SPAN",
@@ -247,6 +248,23 @@ def poincare_normal(x, y, Lambda, rotation):
     ny = a * rotation[0, 1] + b * rotation[1, 1] + cos_i * rotation[2, 1]
     nz = a * rotation[0, 2] + b * rotation[1, 2] + cos_i * rotation[2, 2]
     return nx, ny, nz, root
+
+
+@jit
+def _sample(t, spacing, w, dw, cx, cy, Lambda, rotation, normal, root):
+    """The orbit normal and ``√(1−e²)`` at times ``t`` from samples ``w, dw`` every ``spacing`` from J2000.
+
+    :func:`~andoyer.planetary.orbits.secular_flow.hermite` of the columns ``cx, cy`` (``x, y``),
+    then :func:`poincare_normal`, one time at a time.
+    """
+    last = w.shape[0] - 2
+    for k in range(t.size):
+        position = t[k] / spacing
+        i = min(max(int(np.floor(position)), 0), last)
+        h00, h10, h01, h11 = hermite_basis(position - i)
+        x = h00 * w[i, cx] + h10 * spacing * dw[i, cx] + h01 * w[i + 1, cx] + h11 * spacing * dw[i + 1, cx]
+        y = h00 * w[i, cy] + h10 * spacing * dw[i, cy] + h01 * w[i + 1, cy] + h11 * spacing * dw[i + 1, cy]
+        normal[k, 0], normal[k, 1], normal[k, 2], root[k] = poincare_normal(x, y, Lambda, rotation)
 
 
 class _Run:
@@ -460,6 +478,42 @@ class SecularOrbit:
         """
         return self._poincare(t)
 
+    def _normal_root(self, t: ArrayLike) -> tuple[Array, Array]:
+        """The normal (..., 3) and ``√(1−e²)`` (...) at ``t``, compiled (:func:`_sample`)."""
+        times = check_times(t, self.span, self.name)
+        flat = np.ascontiguousarray(times.ravel())
+        normal = np.empty((flat.size, 3))
+        root = np.empty(flat.size)
+        cx, cy = (int(c) for c in self._columns)
+        lam = float(self.model.Lambda[self._index])
+        for sign, run in self._runs.items():
+            on_side = flat >= 0 if sign > 0 else flat < 0
+            whole = bool(on_side.all())
+            if not (whole or on_side.any()):
+                continue
+            part = flat if whole else np.ascontiguousarray(flat[on_side])
+            run.extend(float(np.abs(part).max()), self.progress)
+            if whole:  # one side only (a spin-axis history's blocks): no copies
+                _sample(
+                    part, sign * self.spacing, run.w, run.dw, cx, cy, lam, self.model.rotation, normal, root
+                )
+                break
+            part_normal, part_root = np.empty((part.size, 3)), np.empty(part.size)
+            _sample(
+                part,
+                sign * self.spacing,
+                run.w,
+                run.dw,
+                cx,
+                cy,
+                lam,
+                self.model.rotation,
+                part_normal,
+                part_root,
+            )
+            normal[on_side], root[on_side] = part_normal, part_root
+        return normal.reshape(*times.shape, 3), root.reshape(times.shape)
+
     def normal(self, t: ArrayLike) -> Array:
         """Unit normal of the mean orbit, J2000 ecliptic frame.
 
@@ -472,8 +526,32 @@ class SecularOrbit:
         -------
         numpy.ndarray, shape (..., 3)
         """
-        x, y = self._poincare(t)
-        return vectors_from_poincare(x, y, self.model.Lambda[self._index], self.model.rotation)[0]
+        return self._normal_root(t)[0]
+
+    def eccentricity(self, t: ArrayLike) -> Array:
+        """Mean eccentricity, ``e = √(1 − (1 − |x|²/(2Λ))²)``.
+
+        The norm of :meth:`eccentricity_vector` without its angles (the spin axis' torque needs
+        ``e`` alone).
+
+        Parameters
+        ----------
+        t : array_like, shape (...)
+            Julian years TT from J2000.
+
+        Returns
+        -------
+        numpy.ndarray, shape (...)
+
+        Examples
+        --------
+        >>> orbit = SecularOrbit("mars")
+        >>> t = np.array([-3e5, 0.0, 2e5])
+        >>> bool(np.allclose(orbit.eccentricity(t), np.linalg.norm(orbit.eccentricity_vector(t), axis=-1)))
+        True
+        """
+        root = self._normal_root(t)[1]
+        return np.sqrt(np.clip(1.0 - root * root, 0.0, None))
 
     def eccentricity_vector(self, t: ArrayLike) -> Array:
         """Mean eccentricity vector (``e`` times the unit vector to perihelion), J2000 ecliptic.

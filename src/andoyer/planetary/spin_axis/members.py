@@ -53,6 +53,7 @@ from andoyer._jit import jit
 from andoyer.catalogue.units import ARCSEC
 from andoyer.compositions import COMPOSITIONS, turn_about
 from andoyer.planetary.orbits.secular import poincare_normal
+from andoyer.planetary.orbits.secular_flow import hermite_basis
 from andoyer.planetary.spin_axis.model import EARTH_DYNAMICAL_ELLIPTICITY, SpinAxisModel
 
 __all__ = [
@@ -327,10 +328,7 @@ def _spin_block(w, dw, spacing, rows, lam, rotation, s, alpha_sun, beta, gamma, 
             for g in range(S):
                 tau = (q + before + 0.5 * gamma[g]) / substeps
                 before += gamma[g]
-                h00 = (1.0 + 2.0 * tau) * (1.0 - tau) ** 2
-                h10 = tau * (1.0 - tau) ** 2
-                h01 = tau * tau * (3.0 - 2.0 * tau)
-                h11 = tau * tau * (tau - 1.0)
+                h00, h10, h01, h11 = hermite_basis(tau)
                 x = h00 * xa + h10 * dxa + h01 * xb + h11 * dxb
                 y = h00 * ya + h10 * dya + h01 * yb + h11 * dyb
                 nx, ny, nz, root = poincare_normal(x, y, lam, rotation)
