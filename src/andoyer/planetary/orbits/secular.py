@@ -58,6 +58,7 @@ __all__ = [
     "SecularOrbit",
     "poincare_normal",
     "secular_model",
+    "secular_tableau",
     "vectors_from_poincare",
 ]
 
@@ -175,6 +176,39 @@ def secular_model(path: str | None = None) -> SecularModel:
     )  # fmt: skip
 
 
+@cache
+def secular_tableau(h: float, samples: int = 1, path: str | None = None) -> tuple[NDArray, ...]:
+    """The shipped model's :func:`~andoyer.planetary.orbits.secular_flow.lawson_matrices`, once per step.
+
+    The stage exponentials cost about as much as integrating a few Myr (about 25 matrix exponentials of
+    16×16); every run at the same signed step and samples shares them (read-only).
+
+    Parameters
+    ----------
+    h : float
+        Signed step, years.
+    samples : int
+        Samples per step.
+    path : str, optional
+        As :func:`secular_model`.
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+
+    Examples
+    --------
+    >>> secular_tableau(-1e4, 2) is secular_tableau(-1e4, 2)
+    True
+    """
+    from andoyer.planetary.orbits.secular_flow import lawson_matrices
+
+    tableau = lawson_matrices(secular_model(path).terms.linear, float(h), int(samples))
+    for array in tableau:
+        array.flags.writeable = False
+    return tableau
+
+
 def vectors_from_poincare(
     x: CArray, y: CArray, Lambda: float | Array, rotation: Array
 ) -> tuple[Array, Array]:
@@ -273,12 +307,10 @@ class _Run:
     def __init__(
         self, model: SecularModel, keep: NDArray[np.int64], sign: int, step: float, samples: int
     ) -> None:
-        from andoyer.planetary.orbits.secular_flow import lawson_matrices
-
         self.model, self.keep, self.sign, self.step, self.samples = model, keep, sign, step, samples
         #: The spacing of the samples kept (years).
         self.spacing = step / samples
-        self.tableau = lawson_matrices(model.terms.linear, sign * step, samples)
+        self.tableau = secular_tableau(sign * step, samples)  # the shipped model's (SecularOrbit's only)
         self.state = model.w0.copy()
         self.w = np.zeros((0, keep.size), dtype=complex)
         self.dw = np.zeros((0, keep.size), dtype=complex)
@@ -527,6 +559,29 @@ class SecularOrbit:
         numpy.ndarray, shape (..., 3)
         """
         return self._normal_root(t)[0]
+
+    def normal_and_eccentricity(self, t: ArrayLike) -> tuple[Array, Array]:
+        """:meth:`normal` and :meth:`eccentricity` from one interpolation.
+
+        Parameters
+        ----------
+        t : array_like, shape (...)
+            Julian years TT from J2000.
+
+        Returns
+        -------
+        normal : numpy.ndarray, shape (..., 3)
+        e : numpy.ndarray, shape (...)
+
+        Examples
+        --------
+        >>> orbit = SecularOrbit("mars")
+        >>> n, e = orbit.normal_and_eccentricity([-1e5, 0.0])
+        >>> bool((n == orbit.normal([-1e5, 0.0])).all() and (e == orbit.eccentricity([-1e5, 0.0])).all())
+        True
+        """
+        normal, root = self._normal_root(t)
+        return normal, np.sqrt(np.clip(1.0 - root * root, 0.0, None))
 
     def eccentricity(self, t: ArrayLike) -> Array:
         """Mean eccentricity, ``e = √(1 − (1 − |x|²/(2Λ))²)``.

@@ -337,8 +337,8 @@ def _sweep(orbit, model, knots, s0, step, order, refine=1):  # type: ignore[no-u
     s = np.ascontiguousarray(s0, dtype=float)
     for starts, sizes, ends, last in _step_blocks(knots, step, BLOCK_STEPS, refine):
         mid, dur = stage_times(starts, sizes, order)
-        normals = np.ascontiguousarray(orbit.normal(mid))
-        factor, parameters = _rate_terms(orbit, model, mid, len(s))
+        normals, e = _normal_and_eccentricity(orbit, mid)
+        factor, parameters = _rate_terms(orbit, model, mid, len(s), e)
         out = np.empty((len(s), len(starts), 3))
         rotate_stages(s, normals, mid, factor, parameters, dur, len(dur) // len(starts), out)
         s = np.ascontiguousarray(out[:, -1])
@@ -352,7 +352,11 @@ def _check_step(step: float) -> None:
 
 
 def _rate_terms(
-    orbit: OrbitHistory, model: SpinAxisModel | Sequence[SpinAxisModel], t: Array, runs: int
+    orbit: OrbitHistory,
+    model: SpinAxisModel | Sequence[SpinAxisModel],
+    t: Array,
+    runs: int,
+    e: Array | None = None,
 ) -> tuple[Array, Array]:
     """The orbit's factor ``(1 − e²)^{−3/2}`` at ``t``, (T, 1) or (T, M), and the runs' (5, M) parameters.
 
@@ -370,10 +374,19 @@ def _rate_terms(
     parameters = np.array([[getattr(m, name) for m in models] for name in names], dtype=float)
     parameters = parameters.reshape(5, runs)
     if orbit.has_eccentricity:
-        e = _eccentricity(orbit, t)
+        e = _eccentricity(orbit, t) if e is None else e
         return (((1 - e) * (1 + e)) ** -1.5)[:, None], parameters
     e = np.array([m.eccentricity for m in models], dtype=float)
     return np.broadcast_to(((1 - e) * (1 + e)) ** -1.5, (t.size, runs)), parameters
+
+
+def _normal_and_eccentricity(orbit: OrbitHistory, t: Array) -> tuple[Array, Array | None]:
+    """The normal (contiguous) and ``e`` (or ``None``) at ``t``, in one pass where the orbit offers one."""
+    both = getattr(orbit, "normal_and_eccentricity", None)
+    if callable(both):
+        normal, e = both(t)
+        return np.ascontiguousarray(normal), e
+    return np.ascontiguousarray(orbit.normal(t)), None
 
 
 def _eccentricity(orbit: OrbitHistory, t: Array) -> Array:

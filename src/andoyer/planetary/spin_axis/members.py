@@ -402,8 +402,14 @@ def member_obliquities(
         For a body, time, step or parameter out of range.
     """
     from andoyer.planetary.orbits.planets import PLANETS
-    from andoyer.planetary.orbits.secular import E_MAX, I_MAX, secular_model, vectors_from_poincare
-    from andoyer.planetary.orbits.secular_flow import integrate, lawson_matrices
+    from andoyer.planetary.orbits.secular import (
+        E_MAX,
+        I_MAX,
+        secular_model,
+        secular_tableau,
+        vectors_from_poincare,
+    )
+    from andoyer.planetary.orbits.secular_flow import integrate
 
     key = _body(body)
     planet = "earth" if key == "moonless-earth" else key
@@ -439,7 +445,7 @@ def member_obliquities(
         precession_rate, dynamical_ellipticity,
     )  # fmt: skip
     sign = 1.0 if end > 0 else -1.0
-    tableau = lawson_matrices(terms.linear, sign * h, samples)
+    tableau = secular_tableau(sign * h, samples)
     gamma = np.ascontiguousarray(COMPOSITIONS[8])
     keep = np.array([j, P + j], dtype=np.int64)
     total = (t.size - 1) * per
