@@ -546,6 +546,43 @@ class SecularOrbit:
             normal[on_side], root[on_side] = part_normal, part_root
         return normal.reshape(*times.shape, 3), root.reshape(times.shape)
 
+    def hermite_samples(self, reach: float) -> tuple[CArray, CArray, float, int, int, float, Array]:
+        """The samples the interpolation uses on one side of J2000, integrated as far as ``reach``.
+
+        For compiled callers that interpolate themselves (the spin axis'
+        :func:`~andoyer.planetary.spin_axis.stepping.rotate_on_samples`), as :meth:`normal` does.
+
+        Parameters
+        ----------
+        reach : float
+            Years from J2000, nonzero; its sign chooses the side.
+
+        Returns
+        -------
+        w, dw : numpy.ndarray of complex, shape (N, K)
+            The kept ``x, y`` and their rates at ``0, s, 2s, …``.
+        spacing : float
+            ``s``, signed like ``reach``.
+        cx, cy : int
+            The planet's ``x`` and ``y`` columns.
+        Lambda : float
+        rotation : numpy.ndarray, shape (3, 3)
+
+        Examples
+        --------
+        >>> orbit = SecularOrbit("mars")
+        >>> w, dw, spacing, cx, cy, lam, rotation = orbit.hermite_samples(-2e4)
+        >>> spacing == -orbit.spacing, bool(len(w) * orbit.spacing > 2e4)
+        (True, True)
+        """
+        check_times(reach, self.span, self.name)
+        sign = 1 if reach > 0 else -1
+        run = self._runs[sign]
+        run.extend(abs(float(reach)), self.progress)
+        cx, cy = (int(c) for c in self._columns)
+        lam = float(self.model.Lambda[self._index])
+        return run.w, run.dw, sign * self.spacing, cx, cy, lam, self.model.rotation
+
     def normal(self, t: ArrayLike) -> Array:
         """Unit normal of the mean orbit, J2000 ecliptic frame.
 

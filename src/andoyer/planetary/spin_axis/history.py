@@ -33,10 +33,11 @@ from andoyer import catalogue
 from andoyer._limits import ToleranceWarning, caller_stacklevel, check_size
 from andoyer._validation import as_finite, as_vectors
 from andoyer.catalogue.units import ARCSEC
+from andoyer.compositions import COMPOSITIONS
 from andoyer.planetary.orbits.protocol import OrbitHistory
 from andoyer.planetary.spin_axis.insolation import daily_insolation
 from andoyer.planetary.spin_axis.model import DEFAULT_PRECESSION_RATE, SpinAxisModel
-from andoyer.planetary.spin_axis.stepping import rotate_stages, stage_times
+from andoyer.planetary.spin_axis.stepping import rotate_on_samples, rotate_stages, stage_times
 
 __all__ = [
     "AXIS_ROW_BYTES",
@@ -335,12 +336,19 @@ def _sweep(orbit, model, knots, s0, step, order, refine=1):  # type: ignore[no-u
     after each, and the knot each step ends on (or ``-1``), as :func:`_step_blocks`.
     """
     s = np.ascontiguousarray(s0, dtype=float)
+    parameters = _run_parameters(model, len(s))
+    # an orbit that hands over its samples is interpolated inside the compiled pass (no stage arrays)
+    samples = getattr(orbit, "hermite_samples", None) if parameters is not None else None
+    gamma = np.ascontiguousarray(COMPOSITIONS[order]) if order in COMPOSITIONS else None
     for starts, sizes, ends, last in _step_blocks(knots, step, BLOCK_STEPS, refine):
-        mid, dur = stage_times(starts, sizes, order)
-        normals, e = _normal_and_eccentricity(orbit, mid)
-        factor, parameters = _rate_terms(orbit, model, mid, len(s), e)
         out = np.empty((len(s), len(starts), 3))
-        rotate_stages(s, normals, mid, factor, parameters, dur, len(dur) // len(starts), out)
+        if callable(samples) and gamma is not None:
+            rotate_on_samples(s, starts, sizes, gamma, *samples(float(ends[-1])), parameters, out)
+        else:
+            mid, dur = stage_times(starts, sizes, order)
+            normals, e = _normal_and_eccentricity(orbit, mid)
+            factor, parameters_or_unit = _rate_terms(orbit, model, mid, len(s), e)
+            rotate_stages(s, normals, mid, factor, parameters_or_unit, dur, len(dur) // len(starts), out)
         s = np.ascontiguousarray(out[:, -1])
         yield ends, out, last
 
@@ -364,20 +372,31 @@ def _rate_terms(
     is computed once for all runs where the orbit knows its eccentricity. A model with another
     ``rate`` gives ``α`` itself (T, M) with the parameters ``(1, 0, 0, 0, 0)``.
     """
-    models = [model] * runs if isinstance(model, SpinAxisModel) else list(model)
-    if any(type(m).rate is not SpinAxisModel.rate for m in models):
+    parameters = _run_parameters(model, runs)
+    if parameters is None:
         # another law of α (a migrating satellite's): α itself as the per-run factor, unit parameters
         unit = np.zeros((5, runs))
         unit[0] = 1.0
         return np.ascontiguousarray(_alpha(orbit, model, t, runs).T), unit
-    names = ("alpha_sun", "beta", "tide_spin", "tide_moon", "ellipticity_drift")
-    parameters = np.array([[getattr(m, name) for m in models] for name in names], dtype=float)
-    parameters = parameters.reshape(5, runs)
+    models = [model] * runs if isinstance(model, SpinAxisModel) else list(model)
     if orbit.has_eccentricity:
         e = _eccentricity(orbit, t) if e is None else e
         return (((1 - e) * (1 + e)) ** -1.5)[:, None], parameters
     e = np.array([m.eccentricity for m in models], dtype=float)
     return np.broadcast_to(((1 - e) * (1 + e)) ** -1.5, (t.size, runs)), parameters
+
+
+def _run_parameters(model: SpinAxisModel | Sequence[SpinAxisModel], runs: int) -> Array | None:
+    """The runs' (5, M) parameters of :func:`~andoyer.planetary.spin_axis.stepping.stage_rate`.
+
+    ``None`` where a run's ``α`` follows another law (:meth:`SpinAxisModel.rate` overridden).
+    """
+    models = [model] * runs if isinstance(model, SpinAxisModel) else list(model)
+    if any(type(m).rate is not SpinAxisModel.rate for m in models):
+        return None
+    names = ("alpha_sun", "beta", "tide_spin", "tide_moon", "ellipticity_drift")
+    parameters = np.array([[getattr(m, name) for m in models] for name in names], dtype=float)
+    return np.ascontiguousarray(parameters.reshape(5, runs))
 
 
 def _normal_and_eccentricity(orbit: OrbitHistory, t: Array) -> tuple[Array, Array | None]:
