@@ -95,3 +95,22 @@ def test_obliquity_refuses_a_precession_rate_no_body_can_have(capsys):
     code = main(argv)
     assert code == 2
     assert "expected a precession rate P < 7" in capsys.readouterr().err
+
+
+def test_obliquity_refuses_a_coarse_step_before_the_integration(tmp_path, capsys):
+    """Mars over 1 Gyr every Myr: refused at once from the J2000 rates, not after 30 CPU s of run.
+
+    The perihelion from the equinox turns at about ψ̇ + ϖ̇ = 7.6 + 16.0″/yr (Mars' precession rate,
+    Konopliv et al. 2016; its perihelion's advance, 0.44°/century in the J2000 mean elements of
+    Simon et al. 1994): about 18 turns per Myr, so the step must stay below ~27 kyr.
+    """
+    out = tmp_path / "m.json"
+    argv = ["obliquity", "mars", "--orbit", "secular", "--span", "-1e9", "0", "--step", "1e6"]
+    code = main([*argv, "--format", "json", "--output", str(out)])
+    err = capsys.readouterr().err
+    assert code == 2
+    assert len(err.splitlines()) == 1
+    assert "at its J2000 rate" in err  # the check before the run, not the one after it
+    most = float(err.split("take DT below ")[1].split()[0])
+    assert 2.4e4 < most < 3.0e4
+    assert not out.exists()
