@@ -33,8 +33,9 @@ year (default: Earth 50.38481507, IAU 2006; Mars 7.597); --dynamical-ellipticity
 (C - (A+B)/2)/C instead. --tidal-dissipation TD scales the modern tidal rates of the Earth-Moon
 system (Zeebe & Lourens 2022; 0 = none). Ranges (andoyer.planetary.parameters): 0 < H < 1/2
 (A + B >= C), P > 0 up to the rate of H = 1/2, 0 <= TD <= 1.2. DT must be below half the period
-of the fastest angle printed (the precession, or the perihelion from the equinox), else the
-table would alias it: such a request is refused. Orbit sources: vondrak (the Earth's ecliptic of
+of the fastest angle printed (the precession, or the perihelion from the equinox, where e is at
+least a tenth of its largest value), else the table would alias it: such a request is refused
+(at once when the J2000 rates already alias it, otherwise after the run). Orbit sources: vondrak (the Earth's ecliptic of
 Vondrak et al. 2011, +-200 kyr, no eccentricity), nbody (+-50 Myr), secular (the long secular model,
 +-1 Gyr), laplace-lagrange (the linear theory), or a table file PATH.
 Tides: TD defaults to the present-day dissipation, 1, for the Earth (the real Earth dissipates:

@@ -114,3 +114,29 @@ def test_obliquity_refuses_a_coarse_step_before_the_integration(tmp_path, capsys
     most = float(err.split("take DT below ")[1].split()[0])
     assert 2.4e4 < most < 3.0e4
     assert not out.exists()
+
+
+def test_largest_turn_skips_the_perihelion_where_the_orbit_is_nearly_circular(monkeypatch):
+    """ϖ turns like 1/e near e = 0: those output pairs do not count (PERIHELION_E_FLOOR).
+
+    e e^{iϖ} = A e^{i g₁ t} + B e^{i g₂ t} with B = 0.98 A: e beats down to 0.02 A once per
+    beat period (75 kyr), where ϖ turns by nearly π within a few centuries; elsewhere it turns by
+    about (g₁ + g₂)/2 · 1000 yr = 0.17 rad per 1000-year output step, plus the axis' precession.
+    """
+    from andoyer.planetary.orbits.table import TableOrbit
+    from andoyer.planetary.spin_axis import history
+
+    t = np.arange(-2e5, 1.0, 100.0)
+    g1, g2 = 2 * np.pi / 5e4, 2 * np.pi / 3e4
+    z = 0.05 * np.exp(1j * g1 * t) + 0.049 * np.exp(1j * g2 * t)
+    ecc = np.stack([z.real, z.imag, np.zeros_like(t)], axis=-1)
+    normal = np.tile([0.0, 0.0, 1.0], (t.size, 1))
+    orbit = TableOrbit(t, normal, ecc, name="beating")
+    times = output_times(-2e5, 0.0, 1000.0)
+    counted = spin_axis_history(orbit, "mars", times, step=250.0)
+    e = np.abs(0.05 * np.exp(1j * g1 * times) + 0.049 * np.exp(1j * g2 * times))
+    assert e.min() < 0.1 * e.max()  # the beat passes near zero within the span
+    assert counted.largest_turn < 0.3
+    monkeypatch.setattr(history, "PERIHELION_E_FLOOR", 0.0)
+    every = spin_axis_history(orbit, "mars", times, step=250.0)
+    assert every.largest_turn > 2.0  # counted at the beat's minimum: most of π in one step
