@@ -46,6 +46,8 @@ from andoyer.state import State
 
 __all__ = [
     "COMPOSITIONS",
+    "DEFAULT_RTOL",
+    "LARGEST_RTOL",
     "SMALLEST_RTOL",
     "SplittingState",
     "exact_free_flow",
@@ -349,6 +351,10 @@ SMALLEST_RTOL = 1e-13
 #: The largest ``rtol`` taken: step doubling estimates the error only while it is small, and a
 #: relative error of ten per cent leaves no digit of the momentum.
 LARGEST_RTOL = 0.1
+#: The ``rtol`` of a run given neither a step nor an ``rtol``: a default for speed, as
+#: ``scipy.integrate.solve_ivp``'s ``rtol=1e-3``; the estimate is a bound, and the error it
+#: bounds is often ten times smaller (``benchmarks/RESULTS.md``).
+DEFAULT_RTOL = 1e-3
 #: Halvings of the step tried before an ``rtol`` is given up (with a ToleranceWarning).
 MAX_HALVINGS = 24
 
@@ -359,13 +365,19 @@ class SplittingState(State):
     Attributes
     ----------
     error_estimate : float
-        ``max |M_h − M_{h/2}| / |M|`` over the output times and states: the distance between
-        the reference-frame momenta of the run and of one at twice its step
-        (:func:`integrate_splitting`).
+        ``E``: the estimated bound of the relative error of the reference-frame momentum,
+        ``max |M − M_exact| / |M(t₀)|`` over the output times and states, from the probe
+        (:mod:`andoyer.integrate.splitting.probe`).
     step : float
-        The step of the run (the largest; the last step to each output time is shorter).
+        The step of the run (an output between grid points is one shorter step away).
     order : int
         Its order.
+    bounded : float
+        ``B``: the bounded part of the step-doubling distance, the largest over the probe.
+    drift : float
+        ``D``: its fitted drift per unit of time.
+    probe : float
+        ``L``: the probe's length (``E = 2 (B + D max(T − L, 0))`` for a span ``T``).
     """
 
     __slots__ = ("bounded", "drift", "error_estimate", "order", "probe", "step")
@@ -494,9 +506,10 @@ def integrate_splitting(
 ) -> State:
     """Propagate ``state`` (at ``t0``) under ``model`` to times ``t`` by symmetric splitting.
 
-    Fixed steps of length ``step`` (the last step to each output time is
-    shortened to land on it), each a composition of Strang steps
-    ``V(h/2) ∘ F(h) ∘ T(h) ∘ V(h/2)`` of order 2, 4 or 6. Gravity-gradient,
+    Fixed steps of length ``step`` on the grid ``t0 ± k·step``, each a composition of Strang
+    steps ``V(h/2) ∘ F(h) ∘ T(h) ∘ V(h/2)`` of order 2, 4 or 6; an output time between grid
+    points is reached by one shorter step from the grid point before it, and the run goes on
+    from that grid point (the output times do not change the run). Gravity-gradient,
     heavy-top and precessing-frame models run in a compiled loop when numba is
     installed (:mod:`andoyer.integrate.splitting.kernel`); other attitude-only models and
     the no-numba case step through :func:`split_step`. The output broadcasts the
@@ -509,23 +522,27 @@ def integrate_splitting(
     state : State, shape (S...)
     t : array_like, shape (T...)
     step : float, optional
-        Step length (> 0). Without ``rtol``, required: the run takes it. With ``rtol``, the
-        first step tried (default: a quarter of the shortest orbital period of the perturbers
-        and of the frames' rotation, at most a quarter of the span).
-    order : {2, 4, 6}
+        Step length (> 0): without ``rtol`` the run takes it. With ``rtol``, the first step
+        tried (default: a quarter of the shortest orbital period of the perturbers and of the
+        frames' rotation, at most a quarter of the span).
+    order : {2, 4, 6}, optional
+        With a step, default 4. With ``rtol``, the order is chosen among 2, 4 and 6 unless given.
     t0 : float
     rtol : float, optional
         The relative error wanted in the reference-frame angular momentum ``M`` over the
-        outputs (from 1e-13 to 0.1). Runs at ``h`` and ``h/2`` are compared and the step
-        halved until ``max |M_h − M_{h/2}| / |M| ≤ rtol``; the fine run is returned as a
-        :class:`SplittingState` whose ``error_estimate`` is that distance (conservative:
-        the fine run's error is below it whenever halving the step at least halves the
-        error). The attitude's spin phase is not in the estimate.
+        outputs, ``max |M − M_exact| / |M(t₀)|`` (from 1e-13 to 0.1; default
+        :data:`DEFAULT_RTOL` when no step is given either). Short probe runs at ``h`` and
+        ``h/2`` give the estimate ``E(h, T) = 2 (B + D max(T − L, 0))`` of the error of a run
+        at ``h`` over a span ``T`` (``B`` the largest distance ``|M_h − M_{h/2}| / |M(t₀)|``
+        over a probe of length ``L``, ``D`` its fitted drift); the order and step of least
+        cost with ``E ≤ rtol`` are run once. The model, its assumptions and where it fails:
+        :mod:`andoyer.integrate.splitting.probe`. The spin phase is not in the estimate.
 
     Returns
     -------
     State, shape broadcast(S..., T...)
-        A :class:`SplittingState` with ``rtol``.
+        A :class:`SplittingState` (the estimate, the order and step chosen) unless a step
+        alone was given.
 
     Examples
     --------
@@ -538,17 +555,14 @@ def integrate_splitting(
     ((2,), [0.0, 0.0, 5.0])
     >>> tilted = State.from_quaternion([0.1, 0.0, 0.0, 0.99498743710662], [0.0, 0.0, 5.0])
     >>> out = integrate_splitting(model, tilted, [0.0, 1.0], rtol=1e-8)
-    >>> bool(out.error_estimate <= 1e-8), out.order
-    (True, 4)
+    >>> bool(out.error_estimate <= 1e-8), out.order, round(out.step, 4)
+    (True, 4, 0.0625)
     """
     if not isinstance(model, Model):
         msg = f"expected an andoyer Model, got {type(model).__name__}"
         raise ValueError(msg)
-    if rtol is not None:
-        return _controlled(model, state, t, step, order, t0, rtol)
-    if step is None:
-        msg = "expected a step or an rtol for method='splitting' (e.g. step=0.01 or rtol=1e-8), got neither"
-        raise ValueError(msg)
+    if rtol is not None or step is None:
+        return _controlled(model, state, t, step, order, t0, DEFAULT_RTOL if rtol is None else rtol)
     if not (np.isfinite(step) and step > 0):
         msg = f"expected a positive finite step, got {step!r}"
         raise ValueError(msg)
