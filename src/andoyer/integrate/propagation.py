@@ -83,8 +83,8 @@ def propagate(model: Model, state: State, t: ArrayLike, method: str = "reference
     Raises
     ------
     ValueError
-        For an unknown method, an option the method does not take, or a model the method cannot integrate (non-Hamiltonian or
-        momentum-dependent terms other than precessing frames for
+        For an unknown method, an option the method does not take, or a model the
+        method cannot integrate (non-Hamiltonian or momentum-dependent terms other than precessing frames for
         ``"splitting"``; anything but gravity gradients on Kepler orbits and
         precessing frames for ``"secular"``); for no output time; for times
         whose spin phase ``|ω (t − t0)|`` (``ω = |m|/min(I)``) reaches ``2⁵²`` rad
