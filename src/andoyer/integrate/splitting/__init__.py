@@ -431,6 +431,27 @@ def _frequencies(model: Model, m: Array, periods: list[float]) -> Array:
     return values[values > 0]
 
 
+def _slow_period(kicks: list[Perturbation], t0: float, q: Array, m: Array) -> float:
+    """``2π |M| / max |τ(t₀)|``, the shortest over the states: the time scale of the momentum's motion.
+
+    The torque is taken at the states' attitudes and at those turned by a quarter and an
+    eighth of a turn about each body axis, so that an attitude where it happens to vanish
+    does not hide it. (A frame turns ``M`` at its rate ``|μ|``: its period is a forcing period.)
+    """
+    turns = [np.array([0.0, 0.0, 0.0, 1.0])]
+    halves = (0.125 * np.pi, 0.25 * np.pi)  # half the angles of an eighth and a quarter turn
+    turns += [np.append(np.sin(half) * axis, np.cos(half)) for half in halves for axis in np.eye(3)]
+    size = np.zeros(m.shape[0])
+    for turn in turns:
+        attitude = quat.multiply(q, np.broadcast_to(turn, q.shape))
+        torque = np.zeros_like(m)
+        for kick in kicks:
+            torque = torque + np.asarray(kick.kick(np.asarray(t0), attitude, m), dtype=np.float64)
+        size = np.maximum(size, np.linalg.norm(torque, axis=-1))
+    rates = size / np.linalg.norm(m, axis=-1)
+    return float(2 * np.pi / np.max(rates)) if np.any(rates > 0) else math.inf
+
+
 def _first_step(kicks: list[Perturbation], frames: list[Perturbation], span: float) -> float:
     """A quarter of the shortest period of the perturbers' orbits and the frames, at most ``span / 4``.
 
@@ -477,7 +498,8 @@ def _controlled(
     stages = {k: len(COMPOSITIONS[k]) for k in COMPOSITIONS}
     frequencies = _frequencies(model, m0, periods)
     longest = max(periods, default=0.0)
-    choice, met = choose(run, rtol, span, first, orders, stages, longest, frequencies, MAX_HALVINGS)
+    slow = _slow_period(kicks, t0, q0, m0)
+    choice, met = choose(run, rtol, span, first, orders, stages, longest, slow, frequencies, MAX_HALVINGS)
     if not met:
         msg = (
             f"the splitting met no rtol of {rtol:.3g} down to a step of {choice.step:.3g}: "

@@ -69,10 +69,13 @@ __all__ = [
     "PROBE_STEPS",
     "SAFETY",
     "SAMPLES",
+    "SLOW_PERIODS",
+    "TURNING_SPANS",
     "Choice",
     "choose",
     "detune",
     "distance_model",
+    "probe_length",
 ]
 
 Array = NDArray[np.float64]
@@ -135,11 +138,13 @@ def distance_model(times: Array, delta: Array) -> tuple[float, float]:
     """
     t = np.asarray(times, dtype=np.float64)
     d = np.asarray(delta, dtype=np.float64).reshape(t.size, -1)
-    bounded = float(np.max(np.linalg.norm(d.reshape(t.size, -1, 3), axis=-1)))
+    size = np.linalg.norm(d.reshape(t.size, -1, 3), axis=-1)  # (N, S)
     design = np.stack([np.ones_like(t), t - t.mean()], axis=1)
-    coef = np.linalg.lstsq(design, d, rcond=None)[0]
-    drift = float(np.max(np.linalg.norm(coef[1].reshape(-1, 3), axis=-1)))
-    return bounded, drift
+    coef = np.linalg.lstsq(design, np.concatenate([d, size], axis=1), rcond=None)[0][1]
+    # the vector's slope (a drift of fixed direction) and the norm's (one the motion turns)
+    along = np.linalg.norm(coef[: d.shape[1]].reshape(-1, 3), axis=-1)
+    turning = coef[d.shape[1] :]
+    return float(np.max(size)), float(np.max(np.maximum(along, turning)))
 
 
 #: Tried steps per rung of the ladder when moving a step off resonance (:func:`detune`).
@@ -172,6 +177,36 @@ def detune(step: float, frequencies: Array) -> tuple[float, float]:
     return float(steps[best]), float(margins[best])
 
 
+#: The slow motion of ``M`` is ignored when its period is this many spans or more: the error's
+#: direction then turns by less than an eighth of a turn over the run.
+TURNING_SPANS = 8
+#: Periods of the slow motion of ``M`` a probe covers otherwise: the error vector turns with
+#: ``M``, and its growth shows over whole turns only.
+SLOW_PERIODS = 2
+
+
+def probe_length(span: float, step: float, margin: float, period: float, slow: float) -> float:
+    """The probe's length ``L`` for a run at ``step`` over ``span``.
+
+    The longest of :data:`PROBE_PERIODS` forcing periods ``period``, :data:`PROBE_STEPS`
+    steps, four beat periods ``step / margin`` of the nearest resonance (:func:`detune`) and,
+    when ``slow`` (the period ``2π|M|/|τ|`` of the momentum's motion under the torque) is
+    shorter than :data:`TURNING_SPANS` spans, :data:`SLOW_PERIODS` of it; the whole span when
+    that reaches half of it (the error is then measured, not extrapolated).
+
+    Examples
+    --------
+    >>> probe_length(1000.0, 0.25, 0.5, 1.0, 1e9)  # 16 periods
+    16.0
+    >>> probe_length(1000.0, 0.25, 0.5, 1.0, 300.0)  # two turns of M: more than half the span
+    1000.0
+    """
+    needed = max(PROBE_PERIODS * period, PROBE_STEPS * step, 4.0 * step / max(margin, 1e-300))
+    if slow < TURNING_SPANS * span:
+        needed = max(needed, SLOW_PERIODS * slow)
+    return span if needed >= 0.5 * span else needed
+
+
 Run = Callable[[int, float, Array], Array]
 
 
@@ -183,6 +218,7 @@ def choose(
     orders: tuple[int, ...],
     stages: dict[int, int],
     period: float,
+    slow: float,
     frequencies: Array,
     max_halvings: int,
 ) -> tuple[Choice, bool]:
@@ -191,7 +227,8 @@ def choose(
     ``run(order, h, times)`` returns the relative reference-frame momenta ``M / |M(t₀)|``
     (N, S, 3) of a run at step ``h`` at the probe's ``times`` (N,, multiples of ``h``),
     measured from ``t₀`` along the direction of the run. ``period`` is the longest forcing
-    period (0: none known), ``frequencies`` those of the kicks (:func:`detune`). The ladder
+    period (0: none known), ``slow`` the period of the momentum's motion under the torque
+    (:func:`probe_length`), ``frequencies`` those of the kicks (:func:`detune`). The ladder
     of each order is ``first_step / 2^k``, each rung moved off resonance. When no step meets
     ``rtol`` the one with the smallest estimate comes back with ``met`` false.
     """
@@ -205,8 +242,7 @@ def choose(
             substeps = stages[order] * span / h
             if best is not None and substeps >= best.substeps:
                 break  # a smaller step at this order costs more still
-            beat = h / max(margin, 1e-300)
-            length = min(span, max(PROBE_PERIODS * period, PROBE_STEPS * h, 4.0 * beat))
+            length = probe_length(span, h, margin, period, slow)
             count = max(1, math.floor(length / h + 1e-9))
             every = max(1, math.ceil(count / SAMPLES))
             times = h * every * np.arange(1, count // every + 1)
