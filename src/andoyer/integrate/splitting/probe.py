@@ -11,28 +11,34 @@ as a **bounded part** ``B`` plus a **secular drift** ``D t``:
 
 .. math::
    B = \max_{t_j \le L} d(t_j), \qquad
-   D = \lVert \mathbf b \rVert, \quad
-   \boldsymbol\Delta(t_j) \approx \mathbf a + \mathbf b\, t_j \ \text{(least squares over the probe)},
+   D = \max\bigl(\lVert \mathbf b \rVert,\ \beta\bigr), \quad
+   \boldsymbol\Delta(t_j) \approx \mathbf a + \mathbf b\, t_j, \quad
+   d(t_j) \approx \alpha + \beta\, t_j \ \text{(least squares over the probe)},
 
    E(h, T) = s\,\bigl(B + D \max(T - L, 0)\bigr), \qquad s = 2,
 
 with ``Δ`` the vector difference (relative to ``|M(t₀)|``) sampled at ``t_j`` (grid points
 of both runs, about :data:`SAMPLES` of them), and ``E`` the estimate of the run at step
-``h``. Why this shape: a symmetric splitting is the exact flow of a modified Hamiltonian
-seen through a near-identity change of variables, so its error is an oscillation of bounded
-size (the change of variables; it follows the forcing and so saturates after the longest
-forcing period) plus a slow drift (the modified precession frequencies). The safety factor
-``s = 2`` turns the distance into a bound of the error of the ``h`` run: ``err(h) ≤ d +
-err(h/2) ≤ d + err(h)/2`` whenever halving the step at least halves the error. The drift
-fitted over a probe of a few forcing periods is an over-estimate: an oscillation of period
-longer than the probe counts as drift (the Earth's 18.6-year lunar node over a 16-year
-probe: the estimate is then ~10× the error after 1000 years).
+``h``. The vector's slope ``b`` is a drift of fixed direction; the norm's slope ``β`` one
+whose direction the slow motion of ``M`` turns. Why this shape: a symmetric splitting is the
+exact flow of a modified Hamiltonian seen through a near-identity change of variables, so
+its error is an oscillation of bounded size (the change of variables; it follows the forcing
+and so saturates after the longest forcing period) plus a slow drift (the modified
+frequencies). The safety factor ``s = 2`` turns the distance into a bound of the error of
+the ``h`` run: ``err(h) ≤ d + err(h/2) ≤ d + err(h)/2`` whenever halving the step at least
+halves the error. The drift fitted over a probe of a few forcing periods is an
+over-estimate: an oscillation of period longer than the probe counts as drift (the Earth's
+18.6-year lunar node over a 16-year probe: the estimate is then ~7× the error after 1000
+years).
 
-The probe is :data:`PROBE_PERIODS` times the longest orbital period of the perturbers and the
-frames' periods, at least :data:`PROBE_STEPS` steps, at most the span (then ``E = s B`` is
-measured, not extrapolated). For each order (2, 4, 6 unless one is asked) the step is
-halved from the first step until ``E ≤ rtol``; the order and step with the fewest Strang
-substeps over the span win (:func:`choose`), and one full run at that step follows.
+The probe's length is :func:`probe_length`: :data:`PROBE_PERIODS` times the longest orbital
+period of the perturbers and the frames' periods, at least :data:`PROBE_STEPS` steps and
+four beat periods of the nearest resonance, and :data:`SLOW_PERIODS` periods of the slow
+motion of ``M`` when that is shorter than :data:`TURNING_SPANS` spans; at most the span
+(then ``E = s B`` is measured, not extrapolated). For each order (2, 4, 6 unless one is
+asked) the step is halved from the first step, each rung moved off resonance
+(:func:`detune`), until ``E ≤ rtol``; the order and step with the fewest Strang substeps
+over the span win (:func:`choose`), and one full run at that step follows.
 
 **Assumptions and failures.** The model assumes the error grows at most linearly after the
 probe: it can fail for chaotic motion (errors grow exponentially), near separatrices of the
