@@ -144,7 +144,7 @@ def main():
             print(
                 f"  {rtol:6.0e} {out.order:5d} {out.step / unit_size:9.4g} {out.probe / unit_size:9.4g} "
                 f"{out.error_estimate:9.2e} {err:9.2e} {'yes' if err <= rtol else 'NO':>4} {cost:7.3f} "
-                f"{tol:8.0e} {peer_cost / cost:6.1f} {rtol_tol:8.0e} {rtol_cost / cost:10.1f}"
+                f"{tol:8.0e} {peer_cost / cost:6.3g} {rtol_tol:8.0e} {rtol_cost / cost:10.3g}"
             )
         if name == "earth":
             for step in (6.7, 3.35):

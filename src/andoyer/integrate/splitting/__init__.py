@@ -489,6 +489,13 @@ def _controlled(
     def run(k: int, h: float, probe: Array) -> Array:
         every = max(1, round(float(probe[0]) / h))
         marks = every * np.arange(1, probe.size + 1)
+        n = q0.shape[0]
+        fixed, per_state = _PYTHON_SUBSTEP_SECONDS
+        check_size(
+            "the splitting's probe",
+            steps=float(marks[-1]) * len(COMPOSITIONS[k]) * n,
+            step_seconds=STEP_SECONDS if tables[k] is not None else fixed / n + per_state,
+        )
         q, m = _run_steps(model, tables[k], q0, m0, t0, direction * h, int(marks[-1]), 0.0, k, record=marks)
         return quat.rotate(q, m) / scale
 
