@@ -259,10 +259,10 @@ def _run_slice(
 ) -> None:
     """Every state through the tabulated steps ``hs`` in place: the compiled loop, separatrix states aside."""
     stages = tables.weights.size
+    weights, gm, inertia, heavy = tables.weights, tables.gm, tables.inertia, tables.heavy
     begin = np.zeros(q.shape[0], dtype=np.int64)
     status = np.full(q.shape[0], -1, dtype=np.int64)
     while True:
-        weights, gm, inertia, heavy = tables.weights, tables.gm, tables.inertia, tables.heavy
         run_tabulated(moments, q, m, hs, weights, positions, gm, inertia, heavy, rates, begin, status)
         stuck = np.nonzero(status >= 0)[0]
         if stuck.size == 0:
@@ -270,7 +270,7 @@ def _run_slice(
         # separatrix states: this free substep by FreeMotion, then resume at the next kick
         for i in stuck:
             n, k = divmod(int(status[i]), stages + 1)
-            sub = tables.weights[k] * hs[n]
+            sub = weights[k] * hs[n]
             qi, mi = free_step(moments, q[i : i + 1], m[i : i + 1], sub)
             q[i], m[i] = quat.multiply(_frame_quaternion(rates[n, k], sub), qi[0]), mi[0]
             begin[i] = status[i] + 1
