@@ -141,8 +141,9 @@ def main():
             err = relative_error(M, ref, start)
             peer_cost, tol = matched(err)
             rtol_cost, rtol_tol = matched(rtol)
+            step, probe = out.step / unit_size, out.probe_length / unit_size
             print(
-                f"  {rtol:6.0e} {out.order:5d} {out.step / unit_size:9.4g} {out.probe / unit_size:9.4g} "
+                f"  {rtol:6.0e} {out.order:5d} {step:9.4g} {probe:9.4g} "
                 f"{out.error_estimate:9.2e} {err:9.2e} {'yes' if err <= rtol else 'NO':>4} {cost:7.3f} "
                 f"{tol:8.0e} {peer_cost / cost:6.3g} {rtol_tol:8.0e} {rtol_cost / cost:10.3g}"
             )

@@ -82,7 +82,7 @@ def test_splitting_estimate_bounds_error_beyond_the_probe(gm, seed, regime):
     t = np.linspace(0.0, 100.0, 41)
     ref = propagate(model, start, t, method="reference", rtol=1e-13, atol=1e-15)
     out = integrate_splitting(model, start, t, rtol=1e-6)
-    assert out.probe < 50.0
+    assert out.probe_length < 50.0
     assert _relative_error(out, ref) <= out.error_estimate <= 1e-6
 
 
@@ -113,7 +113,7 @@ def test_splitting_estimate_is_the_model_of_independent_probe_runs():
     model, start = Model(TRIAXIAL, GravityGradient(WEAK_FAST_SUN)), _state(TRIAXIAL, "sam")
     span = 100.0
     out = integrate_splitting(model, start, [span], rtol=1e-6, order=2)
-    h, length = out.step, out.probe
+    h, length = out.step, out.probe_length
     assert length < span
     count = int(np.floor(length / h + 1e-9))
     every = int(np.ceil(count / 64))
@@ -267,5 +267,5 @@ def test_splitting_estimate_bounds_earth_precession_error(rtol):
     t = np.linspace(2.0, 200.0, 100) * JULIAN_YEAR
     fine = integrate_splitting(model, start, t, 0.37 * sidereal_day, 4)
     out = integrate_splitting(model, start, t, rtol=rtol)
-    assert out.probe < 200 * JULIAN_YEAR
+    assert out.probe_length < 200 * JULIAN_YEAR
     assert _relative_error(out, fine) <= out.error_estimate <= rtol

@@ -376,11 +376,11 @@ class SplittingState(State):
         ``B``: the bounded part of the step-doubling distance, the largest over the probe.
     drift : float
         ``D``: its fitted drift per unit of time.
-    probe : float
+    probe_length : float
         ``L``: the probe's length (``E = 2 (B + D max(T − L, 0))`` for a span ``T``).
     """
 
-    __slots__ = ("bounded", "drift", "error_estimate", "order", "probe", "step")
+    __slots__ = ("bounded", "drift", "error_estimate", "order", "probe_length", "step")
 
 
 def _check_rtol(rtol: float) -> float:
@@ -520,7 +520,7 @@ def _controlled(
 def _estimated(out: State, choice: Choice) -> SplittingState:
     result = SplittingState.from_unit_quaternion(out.quaternion, out.m_body)
     result.error_estimate, result.step, result.order = choice.error, choice.step, choice.order
-    result.bounded, result.drift, result.probe = choice.bounded, choice.drift, choice.probe
+    result.bounded, result.drift, result.probe_length = choice.bounded, choice.drift, choice.probe_length
     return result
 
 

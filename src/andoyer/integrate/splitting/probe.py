@@ -110,7 +110,7 @@ class Choice:
         ``B``: the largest relative distance over the probe.
     drift : float
         ``D``: the fitted drift of the distance per unit time.
-    probe : float
+    probe_length : float
         ``L``: the probe's length.
     error : float
         ``E = SAFETY (B + D max(T − L, 0))``.
@@ -122,7 +122,7 @@ class Choice:
     step: float
     bounded: float
     drift: float
-    probe: float
+    probe_length: float
     error: float
     substeps: float
 
