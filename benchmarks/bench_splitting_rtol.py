@@ -19,13 +19,15 @@ Models (``--models``):
 
 * ``earth``: the Earth under the Sun and the Moon on their mean orbits, ``--years`` (default
   1000) years (the model of ``bench_precession.py``);
+* ``mars``: Mars under the Sun on its mean orbit (``bodies.get("mars")``, its sidereal day,
+  obliquity 25.19°), ``--years`` years;
 * ``top``: a fast heavy top, ``RigidBody(1.0, 1.2, 1.5)``, ``HeavyTop(0.5, (0, 0.1, 0.3))``,
   ``|m| = 10`` tilted 0.3 rad, over 2000 time units (~2000 turns, ~5 precession periods);
 * ``satellite``: a triaxial satellite ``RigidBody(0.7, 1.0, 1.3)`` spinning about its major
   axis at ~10 turns per orbit on a circular orbit (``n = 1``, ``GM = r = 1``, inclined 0.3 rad)
   under the gravity gradient, over 100 orbits.
 
-Run: ``python3 benchmarks/bench_splitting_rtol.py [--models earth,top,satellite]``
+Run: ``python3 benchmarks/bench_splitting_rtol.py [--models earth,mars,top,satellite]``
 ``[--rtols 1e-3,1e-4,1e-5,1e-6] [--outputs 200] [--years 1000]``.
 """
 
@@ -51,10 +53,10 @@ sys.path.insert(0, str(ROOT / "benchmarks"))
 
 import heyoka as hy  # noqa: E402
 
-from andoyer import RigidBody, State, propagate  # noqa: E402
+from andoyer import RigidBody, State, bodies, propagate  # noqa: E402
 from andoyer.integrate.reference.heyoka import heyoka_system  # noqa: E402
 from andoyer.perturbations import CircularOrbit, GravityGradient, HeavyTop, Model, PointMass  # noqa: E402
-from andoyer.perturbations.solar_system import DAY, JULIAN_YEAR  # noqa: E402
+from andoyer.perturbations.solar_system import DAY, JULIAN_YEAR, OBLIQUITY, mean_perturbers  # noqa: E402
 from bench_precession import MODEL as EARTH_MODEL  # noqa: E402
 from bench_precession import SIDEREAL_DAY  # noqa: E402
 from bench_precession import START as EARTH_START  # noqa: E402
@@ -70,8 +72,13 @@ def models(years):
     sat_body = RigidBody(0.7, 1.0, 1.3)
     sat_state = State.from_attitude(Rotation.from_rotvec([0.2, 0.1, 0.0]), [0.05, 0.02, 13.0])
     earth = PointMass(1.0, CircularOrbit(1.0, 1.0, inclination=0.3))
+    mars, mars_day = bodies.get("mars"), bodies.info("mars").rotation_period
+    mars_model = Model(mars, GravityGradient(mean_perturbers("mars")))
+    mars_spin = mars.C * 2 * np.pi / mars_day
+    mars_state = State.from_attitude(Rotation.from_euler("X", OBLIQUITY["mars"]), [0.0, 0.0, mars_spin])
     return {
         "earth": (EARTH_MODEL, EARTH_START, years * JULIAN_YEAR, 1 / DAY, DAY, "sidereal d", SIDEREAL_DAY),
+        "mars": (mars_model, mars_state, years * JULIAN_YEAR, 1 / DAY, DAY, "sols", mars_day),
         "top": (Model(top_body, HeavyTop(0.5, [0.0, 0.1, 0.3])), top_state, 2000.0, 1.0, 1.0, "units", 1.0),
         "satellite": (Model(sat_body, GravityGradient(earth)), sat_state, 200 * np.pi, 1.0, 1.0, "units", 1),
     }
@@ -106,7 +113,7 @@ def splitting(model, start, times, **options):
 
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("--models", default="earth,top,satellite")
+    parser.add_argument("--models", default="earth,mars,top,satellite")
     parser.add_argument("--rtols", default="1e-3,1e-4,1e-5,1e-6")
     parser.add_argument("--outputs", type=int, default=200)
     parser.add_argument("--years", type=float, default=1000.0)
