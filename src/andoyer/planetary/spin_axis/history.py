@@ -48,6 +48,7 @@ __all__ = [
     "EPSILON_0",
     "HISTORY_ROW_BYTES",
     "ORBIT_SAMPLE_BYTES",
+    "PERIHELION_E_FLOOR",
     "SpinAxisHistory",
     "build_model",
     "check_run",
@@ -95,6 +96,10 @@ SMALLEST_TOLERANCE = 1e-12
 #: The largest tolerance taken, radians (one degree): an axis known no better is no answer, and
 #: the step doubling starts from steps that already meet it.
 LARGEST_TOLERANCE = float(np.pi / 180.0)
+#: Fraction of the largest eccentricity of a run's outputs below which the perihelion's turn between
+#: two outputs is not counted in ``largest_turn``: there ``e sin ϖ`` is below a tenth of its amplitude,
+#: and ``ϖ`` turns as fast as ``1/e`` (every output step would alias it as ``e`` passes near zero).
+PERIHELION_E_FLOOR = 0.1
 #: Years from J2000 over which a tolerance is met by step doubling (:func:`controlled_outputs`): a
 #: longer span takes the step chosen over this window. Two Lyapunov times of the inner planets'
 #: orbits (about 5 Myr, Laskar 1989) and of Mars' axis in its chaotic zone.
@@ -523,7 +528,11 @@ class SpinAxisHistory:
     largest_turn : float
         The largest angle (radians) by which ``p_A`` or ``ϖ`` turns between two consecutive
         output times, measured on the integration grid: from ``π`` on, the outputs undersample
-        the precession (Nyquist) and a table or a picture of them aliases it.
+        the precession (Nyquist) and a table or a picture of them aliases it. ``ϖ`` counts only
+        between outputs where ``e`` is at least :data:`PERIHELION_E_FLOOR` of its largest value
+        over the outputs: near ``e = 0`` the perihelion turns as fast as ``1/e`` (Mars' passes
+        close to circular every few Myr), and there the climatic precession ``e sin ϖ`` is below
+        a tenth of its amplitude.
     error_estimate : float or None
         The largest error of the axis over the output times (radians) that the step doubling
         of a run chosen from a tolerance estimates (:func:`controlled_outputs`); ``None`` for a
@@ -660,9 +669,13 @@ def history_blocks(
         (axes, p, varpi), error, step = controlled_outputs(
             orbit, model, times, s0, step, order, orbit.has_eccentricity, tolerance
         )
-    # the largest turn of p_A or ϖ between consecutive outputs, both unwrapped step by step
-    turns = [p[0]] if varpi is None else [p[0], varpi]
-    largest = max(float(np.max(np.abs(np.diff(angle)), initial=0.0)) for angle in turns)
+    # the largest turn of p_A or ϖ between consecutive outputs, both unwrapped step by step; ϖ's
+    # only where e is at least PERIHELION_E_FLOOR of its largest over the outputs
+    largest = float(np.max(np.abs(np.diff(p[0])), initial=0.0))
+    if varpi is not None and times.size > 1:
+        e = _eccentricity(orbit, times)
+        kept = np.minimum(e[:-1], e[1:]) >= PERIHELION_E_FLOOR * float(np.max(e))
+        largest = max(largest, float(np.max(np.abs(np.diff(varpi))[kept], initial=0.0)))
     del varpi
     n0 = orbit.normal(0.0)
     e0 = np.linalg.norm(orbit.eccentricity_vector(0.0)) if orbit.has_eccentricity else None
