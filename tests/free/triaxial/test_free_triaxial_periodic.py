@@ -272,7 +272,8 @@ AXIS_CASES = ["random", "near-separatrix-lam-1e-10", "scaled-large-moments", "k2
 
 @pytest.mark.parametrize("name", AXIS_CASES)
 def test_periodic_axis_is_the_reference_momentum_direction(name):
-    # the attitude is (sin(πg) n, cos(πg)) ⊗ A(f): n from the pieces against scipy's rotation of m0 by q0
+    # the attitude is Q ⊗ (sin(πg) e_z, cos(πg)) ⊗ a(f) with R(Q) e_z = n and the momentum G R(a)ᵀ e_z:
+    # Q's axis and G against scipy's rotation of m0 by q0 and its norm
     if name == "random":
         moments, m0, q0 = _random_states(6, 21)
     else:
@@ -284,6 +285,10 @@ def test_periodic_axis_is_the_reference_momentum_direction(name):
         assert rest is None
         want = Rotation.from_quat(q0[group.members]).apply(m0[group.members])
         want /= np.linalg.norm(want, axis=-1, keepdims=True)
-        assert np.max(np.abs(per.const.params[:, 8:11] - want)) <= 5e-15  # the kernels carry ~10 ulps
+        frame = Rotation.from_quat(per.const.params[:, 8:12])
+        assert np.max(np.abs(frame.apply([0.0, 0.0, 1.0]) - want)) <= 5e-15  # the kernels carry ~10 ulps
+        assert np.max(np.abs(np.linalg.norm(per.const.params[:, 8:12], axis=1) - 1.0)) <= 4e-16
+        g = np.linalg.norm(m0[group.members], axis=-1)
+        assert np.max(np.abs(per.const.params[:, 12] - g) / g) <= 4e-16
         momentum_only, _ = periodic_numpy.build(group, attitude=False)
-        assert np.array_equal(momentum_only.const.params[:, 8:11], np.zeros((group.members.size, 3)))
+        assert np.array_equal(momentum_only.const.params[:, 8:13], np.zeros((group.members.size, 5)))
