@@ -125,8 +125,11 @@ def test_periodic_compiled_and_numpy_fills_agree():
         rows = np.arange(t.shape[0])
         fill(per.const, rows, rows, t, None, (m, q))
         outs.append((m, q))
-    assert np.max(np.abs(outs[0][0] - outs[1][0])) <= 4e-16 * np.abs(outs[0][0]).max()
-    assert np.max(np.abs(outs[0][1] - outs[1][1])) <= 4e-16
+    # the compiled fill fuses multiply-adds (one rounding where numpy has two): they differ by the
+    # roundings of the ~2·DEGREE operations of a value's chain and the ~12 of the product after it
+    tol = (2 * DEGREE + 12) * np.finfo(float).eps / 2
+    assert np.max(np.abs(outs[0][0] - outs[1][0])) <= tol * np.abs(outs[0][0]).max()
+    assert np.max(np.abs(outs[0][1] - outs[1][1])) <= tol
 
 
 def test_periodic_leaves_states_needing_too_many_pieces_direct(monkeypatch):

@@ -6,9 +6,12 @@ by :func:`andoyer.free.triaxial.periodic_numpy.build`) straight into the outputs
 the reduced phases, then the polynomials of :mod:`andoyer.free.triaxial.periodic` piece by
 piece (epochs on one piece together, as vectors, their coefficients in registers: sorted by
 piece, in runs, or epoch by epoch), then the momentum and (with the attitude) one ``sincos``
-and one product per epoch; outputs beyond
-the caches are written by non-temporal stores.  Every epoch gets the same operations as alone,
-so the values do not depend on the other epochs nor on their order.
+and one product per epoch; outputs beyond the caches are written by non-temporal stores.
+Every epoch gets the same operations as alone, so the values do not depend on the other
+epochs nor on their order.  The loops let LLVM fuse each product with the sum that uses it
+(``jit(contract=True)``; measured, 10 × 10⁵ epochs with the attitude: 15 % less time on an
+AVX2 processor), so they round once where :func:`~andoyer.free.triaxial.periodic_numpy.fill_numpy`,
+the same kernels on numpy arrays, rounds twice: the two agree to a few ulps.
 """
 
 from __future__ import annotations
@@ -99,7 +102,7 @@ def _half_angles(t, g_hi, g_lo, g0, s_out, c_out):
         c_out[j] = c
 
 
-@jit
+@jit(contract=True)
 def _span_momentum(piece, u, ys, j, m):
     """Momentum on one piece at ``u[j : j+m]`` into ``ys[0:3, j : j+m]`` (loops from 0: they vectorise)."""
     c = _coefficients(piece, 0)
@@ -111,7 +114,7 @@ def _span_momentum(piece, u, ys, j, m):
         y2[e] = a2
 
 
-@jit
+@jit(contract=True)
 def _span_attitude(piece, u, sb, cb, frame, ys, j, m, attitude):
     """From the pieces of ``a``: the momentum into ``ys[0:3, j : j+m]``, with ``attitude`` also ``ys[3:7]``.
 
@@ -134,7 +137,7 @@ def _span_attitude(piece, u, sb, cb, frame, ys, j, m, attitude):
             y0[e], y1[e], y2[e] = body_momentum(g, x, y, z, w)
 
 
-@jit
+@jit(contract=True)
 def _epochwise(coef, base, xs, us, sb, cb, frame, nb, ys, pieces_a, attitude):
     """Epoch by epoch (short runs): :func:`~andoyer.free.triaxial.periodic.horner`, the same operations."""
     qx, qy, qz, qw, g = frame
@@ -148,7 +151,7 @@ def _epochwise(coef, base, xs, us, sb, cb, frame, nb, ys, pieces_a, attitude):
             ys[3, j], ys[4, j], ys[5, j], ys[6, j] = turned(qx, qy, qz, qw, sb[j], cb[j], a0, a1, a2, a3)
 
 
-@jit
+@jit(contract=True)
 def _sort_by_piece(xs, us, sb, cb, nb, n, attitude, starts, runs, count, order, ub, sbb, cbb):
     """Counting sort of a block's epochs by piece into ``order``, ``ub`` (``sbb``, ``cbb``).
 
@@ -295,7 +298,7 @@ def _scatter_out(ys, order, nb, m_out, q_out, o, e0, attitude):
             q_out[o, e, 3] = ys[6, d]
 
 
-@jit
+@jit(contract=True)
 def _fill(params, coef, pieces_a, pos, rows, t, m_out, q_out, attitude, flat_m, flat_q, stream):
     """Blocks of :data:`_BLOCK` epochs per state: phases, then the polynomials piece by piece, then outputs.
 
