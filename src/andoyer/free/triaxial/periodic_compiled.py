@@ -115,26 +115,39 @@ def _span_momentum(piece, u, ys, j, m):
 
 
 @jit(contract=True)
-def _span_attitude(piece, u, sb, cb, frame, ys, j, m, attitude):
-    """From the pieces of ``a``: the momentum into ``ys[0:3, j : j+m]``, with ``attitude`` also ``ys[3:7]``.
+def _span_a(piece, u, ys, j, m):
+    """The attitude ``a`` on one piece at ``u[j : j+m]`` into ``ys[7:11, j : j+m]`` (as the momentum).
 
-    ``frame`` is ``(Q_x, Q_y, Q_z, Q_w, G)`` (:func:`~andoyer.free.triaxial.periodic.body_momentum`,
-    :func:`~andoyer.free.triaxial.periodic.turned`).  Loops from 0, as the momentum's.
+    Only the polynomials: per span LLVM checks every pair of the loop's arrays for overlap
+    before its vector loop, and the spans are short (~30 epochs), so the momentum and the
+    attitude that follow from ``a`` are formed afterwards over the whole block (:func:`_from_a`).
     """
     ca = _coefficients(piece, 0)
+    uu, a0, a1, a2, a3 = u[j : j + m], ys[7, j : j + m], ys[8, j : j + m], ys[9, j : j + m], ys[10, j : j + m]
+    for e in range(m):
+        a0[e], a1[e], a2[e], a3[e] = _horner_rows(ca, uu[e])
+
+
+@jit(contract=True)
+def _from_a(ys, sb, cb, frame, nb, attitude):
+    """From ``a`` in ``ys[7:11, :nb]``: the momentum into ``ys[0:3]`` (and the attitude into ``ys[3:7]``).
+
+    ``frame`` is ``(Q_x, Q_y, Q_z, Q_w, G)`` (:func:`~andoyer.free.triaxial.periodic.body_momentum`,
+    :func:`~andoyer.free.triaxial.periodic.turned`); ``sb``, ``cb`` are ``sin, cos(πg)``.
+    """
     qx, qy, qz, qw, g = frame
-    uu, ss, cc = u[j : j + m], sb[j : j + m], cb[j : j + m]
-    y0, y1, y2 = ys[0, j : j + m], ys[1, j : j + m], ys[2, j : j + m]
-    z0, z1, z2, z3 = ys[3, j : j + m], ys[4, j : j + m], ys[5, j : j + m], ys[6, j : j + m]
+    a0, a1, a2, a3 = ys[7, :nb], ys[8, :nb], ys[9, :nb], ys[10, :nb]
+    y0, y1, y2 = ys[0, :nb], ys[1, :nb], ys[2, :nb]
+    z0, z1, z2, z3 = ys[3, :nb], ys[4, :nb], ys[5, :nb], ys[6, :nb]
+    ss, cc = sb[:nb], cb[:nb]
     if attitude:
-        for e in range(m):
-            x, y, z, w = _horner_rows(ca, uu[e])
+        for e in range(nb):
+            x, y, z, w = a0[e], a1[e], a2[e], a3[e]
             y0[e], y1[e], y2[e] = body_momentum(g, x, y, z, w)
             z0[e], z1[e], z2[e], z3[e] = turned(qx, qy, qz, qw, ss[e], cc[e], x, y, z, w)
     else:
-        for e in range(m):
-            x, y, z, w = _horner_rows(ca, uu[e])
-            y0[e], y1[e], y2[e] = body_momentum(g, x, y, z, w)
+        for e in range(nb):
+            y0[e], y1[e], y2[e] = body_momentum(g, a0[e], a1[e], a2[e], a3[e])
 
 
 @jit(contract=True)
@@ -323,7 +336,7 @@ def _fill(params, coef, pieces_a, pos, rows, t, m_out, q_out, attitude, flat_m, 
     order, starts = np.arange(size), np.zeros(size + 1, dtype=np.int64)
     span_piece, span_start, span_end = (np.zeros(size, dtype=np.int64), np.zeros(size, dtype=np.int64),
                                         np.zeros(size, dtype=np.int64))
-    ys, yo = np.empty((7, size)), np.empty((7, size))
+    ys, yo = np.empty((11, size)), np.empty((7, size))
     most = 1
     for i in range(rows.size):
         most = max(most, int(params[pos[i], 6]))
@@ -372,9 +385,11 @@ def _fill(params, coef, pieces_a, pos, rows, t, m_out, q_out, attitude, flat_m, 
                 m = (span_end[k] - j + _LANES - 1) // _LANES * _LANES
                 piece = coef[int(base) + span_piece[k]]
                 if pieces_a:
-                    _span_attitude(piece, u, s, c, frame, ys, j, m, attitude)
+                    _span_a(piece, u, ys, j, m)
                 else:
                     _span_momentum(piece, u, ys, j, m)
+            if pieces_a:
+                _from_a(ys, s, c, frame, nb, attitude)
             if not sorted_:
                 _copy_out(ys, nb, m_out, q_out, o, e0, attitude, flat_m, flat_q, stream)
             elif nb >= _SHORT * runs:  # runs: the outputs are written run by run, nearly in sequence
