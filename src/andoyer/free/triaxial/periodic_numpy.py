@@ -63,7 +63,7 @@ from andoyer.free.common.cycles import sincos_cycles
 from andoyer.free.common.cycles_numpy import cycles, frequency
 from andoyer.free.common.polhode import shortest_arc
 from andoyer.free.triaxial import evaluate_compiled as _ceval
-from andoyer.free.triaxial.columns import FRAC0, NU, NU_PSI, PSI0
+from andoyer.free.triaxial.columns import FRAC0, NU, NU_PSI, PSI0, QUAT_U, QUAT_V
 from andoyer.free.triaxial.periodic import DEGREE, body_momentum, horner, locate, turned
 from andoyer.free.triaxial.periodic_compiled import fill
 from andoyer.free.triaxial.setup_compiled import as_triaxial
@@ -131,27 +131,37 @@ def _first_pieces(const):
     return np.exp2(np.ceil(np.log2(want)))
 
 
-def _node_group(group, g0):
-    """The group's kernel with ``ν = 1, f₀ = 0`` and the secular phase held at ``g₀``."""
+def _node_group(group, frame_q):
+    """The group's kernel with ``ν = 1, f₀ = 0`` and the secular phase held at 0.
+
+    With ``frame_q`` (``Q`` of :func:`_frame`, shape (N, 4)) the anchor ``U, V`` becomes
+    ``Q* ⊗ U, Q* ⊗ V``: the attitude, linear in them, is then ``a = Q* ⊗ A`` itself.
+    """
     const = group.const
     if group.kernel is _ceval.evaluate:
         table = np.array(const, copy=True)
         table[:, NU : NU + 4] = (1.0, 0.0, 1.0, 0.0)  # hi, lo, hh, hl
         table[:, FRAC0] = 0.0
         table[:, NU_PSI : NU_PSI + 4] = 0.0
-        table[:, PSI0] = g0
+        table[:, PSI0] = 0.0
+        if frame_q is not None:
+            for col in (QUAT_U, QUAT_V):
+                table[:, col : col + 4] = _relative(frame_q.T, table[:, col : col + 4])
         const = table
     else:
         one = np.ones_like(const.frac0)
         const = const._replace(
-            nu=frequency(one), frac0=0.0 * one, nu_psi=frequency(0.0 * one), psi0=g0 * one
+            nu=frequency(one), frac0=0.0 * one, nu_psi=frequency(0.0 * one), psi0=0.0 * one
         )
+        if frame_q is not None:
+            const = const._replace(quat_u=_relative(frame_q.T, const.quat_u.T).T,
+                                   quat_v=_relative(frame_q.T, const.quat_v.T).T)
     size = group.members.size
     return Group(group.kernel, np.arange(size), const, np.zeros(size, dtype=np.int64), group.mshift)
 
 
-def _sample(group, sel, pieces, attitude):
-    """Values ``(M, A)`` of states ``sel`` at the nodes of ``pieces`` pieces (and checks).
+def _sample(node, sel, pieces, attitude):
+    """Values ``(M, a)`` of states ``sel`` at the nodes of ``pieces`` pieces (and checks).
 
     Returns the values at the nodes, shape ``(s, pieces, NODES, c)``, and at the check
     points, shape ``(s, pieces, len(_CHECK), c)``.
@@ -159,8 +169,7 @@ def _sample(group, sel, pieces, attitude):
     u = np.concatenate([_U, _CHECK])
     f = -0.5 + (np.arange(pieces)[:, None] + 0.5 * (u + 1.0)) / pieces
     f = np.broadcast_to(f.ravel(), (sel.size, f.size))
-    node = _node_group(group, 0.0)
-    node = Group(node.kernel, np.arange(sel.size), _rows_of(node.const, sel, group.kernel),
+    node = Group(node.kernel, np.arange(sel.size), _rows_of(node.const, sel, node.kernel),
                  node.tshift[sel], node.mshift[sel])
     m, q = evaluate_blocks([node], (sel.size, 1), f, attitude)
     comps = [m, np.zeros_like(m[..., :1])] + ([q] if attitude else [])  # momentum padded to four components
@@ -191,6 +200,7 @@ def _pieces_for(group, frame):
     """
     const = _table_of(group)
     pieces = _first_pieces(const)
+    node = _node_group(group, None if frame is None else frame[0])
     size = group.members.size
     out = [None] * size
     prev = [None] * size  # (error, coefficients) at half the pieces
@@ -200,7 +210,7 @@ def _pieces_for(group, frame):
         nxt = []
         for n in np.unique(pieces[todo]):
             sel = todo[pieces[todo] == n]
-            nodes, checks = _sample(group, sel, int(n), frame is not None)
+            nodes, checks = _sample(node, sel, int(n), frame is not None)
             if frame is None:
                 coef = _fit(nodes[..., :4])  # (s, n, NODES, 4): the momentum and its padding
                 approx = np.matmul(_POWERS, coef)  # (s, n, len(_CHECK), 4)
@@ -208,10 +218,10 @@ def _pieces_for(group, frame):
                 scale[:, 3] = 1.0  # the padding
                 err = np.max(np.abs(approx - checks[..., :4]) / scale[:, None, None], axis=(1, 2, 3))
             else:
-                q, g = frame[0][sel].T[:, :, None, None], frame[1][sel, None, None]
-                coef = _fit(_relative(q, nodes[..., 4:]))
+                g = frame[1][sel, None, None]
+                coef = _fit(nodes[..., 4:])  # a = Q* ⊗ A from the kernels (_node_group)
                 approx = np.matmul(_POWERS, coef)
-                want = _relative(q, checks[..., 4:])
+                want = checks[..., 4:]
                 mom = np.stack(body_momentum(g, *np.moveaxis(approx, -1, 0)), axis=-1)
                 err = np.maximum(np.max(np.abs(approx - want), axis=(1, 2, 3)),
                                  np.max(np.abs(mom - checks[..., :3]), axis=(1, 2, 3)) / g[:, 0, 0])
