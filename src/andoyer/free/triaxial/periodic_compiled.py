@@ -19,7 +19,7 @@ from __future__ import annotations
 import numpy as np
 
 from andoyer._jit import jit, when_compiled
-from andoyer.free.common.cycles import sincos_cycles
+from andoyer.free.common.cycles import sincos_half_cycles
 from andoyer.free.triaxial.periodic import DEGREE, body_momentum, horner, locate, turned
 from andoyer.special.compensated import two_prod
 
@@ -97,7 +97,7 @@ def _phases(t, nu_hi, nu_lo, f0, n, x_out, u_out):
 def _half_angles(t, g_hi, g_lo, g0, s_out, c_out):
     """``sin, cos(πg)`` of the reduced secular phases at times ``t``."""
     for j in range(t.size):
-        s, c = sincos_cycles(0.5 * _reduced(g_hi, g_lo, g0, t[j]))
+        s, c = sincos_half_cycles(_reduced(g_hi, g_lo, g0, t[j]))
         s_out[j] = s
         c_out[j] = c
 

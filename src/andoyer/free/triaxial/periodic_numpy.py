@@ -59,7 +59,7 @@ from andoyer._jit import NUMBA
 from andoyer._quaternion import product
 from andoyer.free.common import constants as _const
 from andoyer.free.common.blocks import _CHUNK, Group, evaluate_blocks
-from andoyer.free.common.cycles import sincos_cycles
+from andoyer.free.common.cycles import sincos_half_cycles
 from andoyer.free.common.cycles_numpy import cycles, frequency
 from andoyer.free.common.polhode import shortest_arc
 from andoyer.free.triaxial import evaluate_compiled as _ceval
@@ -381,7 +381,7 @@ def fill_numpy(const, pos, rows, t, scale, outs):
                 continue
             m_out[o, cols] = np.stack(body_momentum(p[12], *a), axis=-1)
             if q_out is not None:
-                sb, cb = sincos_cycles(0.5 * cycles(g_nu, tk, offset=p[5]))
+                sb, cb = sincos_half_cycles(cycles(g_nu, tk, offset=p[5]))
                 q_out[o, cols] = np.stack(turned(p[8], p[9], p[10], p[11], sb, cb, *a), axis=-1)
 
 
