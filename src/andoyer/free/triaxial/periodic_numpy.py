@@ -145,8 +145,8 @@ def _node_group(group, frame_q):
         table[:, NU_PSI : NU_PSI + 4] = 0.0
         table[:, PSI0] = 0.0
         if frame_q is not None:
-            for col in (QUAT_U, QUAT_V):
-                table[:, col : col + 4] = _relative(frame_q.T, table[:, col : col + 4])
+            table[:, QUAT_U : QUAT_U + 4] = _relative(frame_q.T, table[:, QUAT_U : QUAT_U + 4])
+            table[:, QUAT_V : QUAT_V + 4] = _relative(frame_q.T, table[:, QUAT_V : QUAT_V + 4])
         const = table
     else:
         one = np.ones_like(const.frac0)
