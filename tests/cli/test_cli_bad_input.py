@@ -214,6 +214,10 @@ ENSEMBLE_BAD = (
     ("no-body", "obliquity --ensemble 2 --span -20000 0 --output {out}"),
     ("planet", f"{ENSEMBLE.replace('mars', 'saturn')} --ensemble 2"),
     ("drift", f"{ENSEMBLE} --ensemble 2 --drift-timescale 1e9"),
+    ("orbits-alone", "obliquity mars --orbits 2 --span -2000 0 --output {out}"),
+    ("orbits-divisor", f"{ENSEMBLE} --ensemble 4 --orbits 3"),
+    ("orbits-zero", f"{ENSEMBLE} --ensemble 4 --orbits 0"),
+    ("orbits-fixed-rate", f"{ENSEMBLE.replace('mars', 'earth')} --ensemble 4 --orbits 2"),
 )
 
 #: Requests refused for their size (issue 26): (command, case, argument line).

@@ -70,12 +70,35 @@ def test_obliquity_ensemble_moonless_earth_runs():
         ({"precession_rate": 7.6, "dynamical_ellipticity": 0.005}, "got both"),
         ({"perturbation": -1.0}, "perturbation size"),
         ({"end": 0.0}, "nonzero end"),
+        ({"members": 4, "orbits": 3}, "dividing the 4 members"),
+        ({"orbits": 0}, "number of orbits from 1"),
+        ({"members": 4, "orbits": 2, "chunk": 3}, "chunk of whole orbits"),
+        ({"body": "earth", "orbits": 1}, "spin-parameter range"),
+        ({"orbits": 1, "precession_rate": 7.6}, "fixed spin parameter"),
     ],
 )
 def test_obliquity_ensemble_bad_input(kwargs, match):
     args = {"body": "mars", "members": 2, "end": -1e5, "interval": 1e5} | kwargs
     with pytest.raises(ValueError, match=match):
         obliquity_ensemble(**args, scheduler="synchronous", progress=False)
+
+
+def test_obliquity_ensemble_shared_orbits_are_members_on_their_orbit():
+    """Two orbits of three spin axes: each member is member_obliquities alone on its stored orbit and rate."""
+    ds = obliquity_ensemble(
+        "mars", 6, -3e5, 1e5, orbits=2, seed=7, scheduler="synchronous", progress=False, chunk=3
+    )
+    p = ds.orbit_perturbation.values
+    assert ds.attrs["orbits"] == 2
+    assert np.array_equal(p[0], p[2])
+    assert np.array_equal(p[3], p[5])
+    assert not np.array_equal(p[0], p[3])
+    assert len(set(ds.precession_rate.values.tolist())) == 6
+    for m in (0, 2, 4):
+        delta = (p[m, :16] + 1j * p[m, 16:])[None]
+        rate = float(ds.precession_rate[m])
+        run = member_obliquities("mars", -3e5, 1e5, delta, default_axis("mars"), precession_rate=rate)
+        assert np.allclose(np.degrees(run.obliquity[0]), ds.obliquity.values[m], rtol=0, atol=1e-10)
 
 
 @pytest.mark.slow

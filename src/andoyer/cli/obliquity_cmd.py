@@ -33,8 +33,9 @@ year (default: Earth 50.38481507, IAU 2006; Mars 7.597); --dynamical-ellipticity
 (C - (A+B)/2)/C instead. --tidal-dissipation TD scales the modern tidal rates of the Earth-Moon
 system (Zeebe & Lourens 2022; 0 = none). Ranges (andoyer.planetary.parameters): 0 < H < 1/2
 (A + B >= C), P > 0 up to the rate of H = 1/2, 0 <= TD <= 1.2. DT must be below half the period
-of the fastest angle printed (the precession, or the perihelion from the equinox), else the
-table would alias it: such a request is refused. Orbit sources: vondrak (the Earth's ecliptic of
+of the fastest angle printed (the precession, or the perihelion from the equinox, where e is at
+least a tenth of its largest value), else the table would alias it: such a request is refused
+(at once when the J2000 rates already alias it, otherwise after the run). Orbit sources: vondrak (the Earth's ecliptic of
 Vondrak et al. 2011, +-200 kyr, no eccentricity), nbody (+-50 Myr), secular (the long secular model,
 +-1 Gyr), laplace-lagrange (the linear theory), or a table file PATH.
 Tides: TD defaults to the present-day dissipation, 1, for the Earth (the real Earth dissipates:
@@ -250,6 +251,43 @@ def _check_span(orbit, source: str, body: str, t0: float, t1: float) -> None:  #
     raise CliError(msg)
 
 
+def _check_sampling_before(orbit, body, args: argparse.Namespace, tides, drift: float) -> None:  # type: ignore[no-untyped-def]
+    """Refuse before the integration an output step over which p_A turns a whole turn at its J2000 rate.
+
+    The rate changes over a run (with the obliquity, the eccentricity, the tides), so the exact
+    check (:func:`_check_sampling`, half a turn between any two outputs) needs the run; a whole
+    turn at the J2000 rate is refused at once: the rate would have to halve at every output for
+    the run to pass.
+    """
+    from andoyer.planetary.spin_axis import build_model, default_axis
+
+    try:
+        s0 = default_axis(body)
+        model = build_model(
+            orbit, body, s0, args.precession_rate, args.dynamical_ellipticity, tides.tidal_dissipation, drift
+        )
+    except ValueError:
+        return  # the run refuses it in its own words
+    n0 = orbit.normal(0.0)
+    e0 = float(np.linalg.norm(orbit.eccentricity_vector(0.0))) if orbit.has_eccentricity else None
+    rate = abs(model.precession_rate(float(np.arctan2(np.linalg.norm(np.cross(s0, n0)), s0 @ n0)), e0))
+    if orbit.has_eccentricity:  # the perihelion from the equinox turns at about ψ̇ + ϖ̇
+        earlier = max(orbit.span[0], -1000.0)
+        ev = orbit.eccentricity_vector(np.array([earlier, 0.0]))
+        turned = np.arctan2(np.cross(ev[0], ev[1]) @ n0, ev[0] @ ev[1])
+        rate += abs(turned / ARCSEC / -earlier) if earlier < 0 else 0.0
+    turn = rate * ARCSEC * args.step
+    if turn >= 2 * np.pi:
+        most = args.step * np.pi / turn
+        msg = (
+            f"expected --step DT below half the period of the fastest angle printed (the precession p_A "
+            f"or the perihelion from the equinox; the table and the plot would alias it), got DT = "
+            f"{args.step:g} years, over which it turns {turn / (2 * np.pi):.3g} times at its J2000 rate "
+            f"({rate:.4g} arcsec/yr): take DT below {most:.4g} years"
+        )
+        raise CliError(msg)
+
+
 def _check_sampling(h, step: float) -> None:  # type: ignore[no-untyped-def]
     """Refuse outputs that undersample the precession: an angle turns half a turn or more between two."""
     if h.largest_turn < np.pi:
@@ -290,6 +328,8 @@ def run(args: argparse.Namespace) -> int:
     orbit = orbit_source(source, planet or "earth", args.orbit_format)
     _check_span(orbit, source, planet or "earth", t0, t1)
     times = output_times(t0, t1, args.step)
+    if times.size > 1:
+        _check_sampling_before(orbit, body, args, tides, drift)
     stream_csv = args.format == "csv" and args.plot is None
     blocks = spin_axis_blocks(
         orbit,

@@ -25,7 +25,9 @@ max (deg, per time over the members), density (bins: edges in deg, pdf: per deg,
 all members and times), exceedance (threshold in deg -> probability that the obliquity reached it
 within the span), first_passage (threshold -> each member's first time, or null). --out F.zarr|F.nc
 keeps the histories and the statistics (resumable: rerun after an interruption); --plot PNG draws
-the density and a few histories.
+the density and a few histories. --orbits K (a divisor of N): the members share K orbits, N/K spin
+axes on each differing by their precession rate (about K orbits' cost plus N axes'; a tenth each):
+  andoyer obliquity mars --ensemble 1000 --orbits 100 --span -1e8 0 --step 1e5 --out mars.zarr
 """
 
 
@@ -40,6 +42,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="size of each member's perturbation of the J2000 secular state (default 1e-6)",
     )
     group.add_argument("--seed", type=int, metavar="S", help="seed of the members (default 0)")
+    group.add_argument(
+        "--orbits", type=int, metavar="K", help="distinct orbits, a divisor of N (default N: one per member)"
+    )
     group.add_argument(
         "--thresholds",
         nargs="+",
@@ -56,7 +61,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def _refuse_without_ensemble(args: argparse.Namespace) -> None:
     given = [
         name
-        for name in ("perturbation", "seed", "thresholds", "out", "workers", "scheduler")
+        for name in ("perturbation", "seed", "orbits", "thresholds", "out", "workers", "scheduler")
         if getattr(args, name) is not None
     ]
     if args.no_moon:
@@ -178,6 +183,8 @@ def run(args: argparse.Namespace) -> int:
     kwargs = {}
     if args.perturbation is not None:
         kwargs["perturbation"] = args.perturbation
+    if args.orbits is not None:
+        kwargs["orbits"] = args.orbits
     try:
         ds = obliquity_ensemble(
             body, members, end, step, precession_rate=args.precession_rate,

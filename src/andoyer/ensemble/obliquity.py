@@ -15,6 +15,14 @@ Default spin-parameter ranges (:data:`DEFAULT_RATES`): Mars' precession rate ``Ï
 uncertainty of ``C/MRÂ²`` into the torque); the Earth's IAU 2006 rate and the moonless Earth's
 ellipticity fixed (the spread then comes from the orbits alone).
 
+**Orbits shared by several spin axes.** With ``orbits = K < N`` the ``N`` members are ``K``
+perturbed orbits, each carrying ``N/K`` spin axes that differ by their spin parameter (drawn in
+its range as above): an orbit is integrated once for all its axes, in the same compiled pass
+(:func:`~andoyer.planetary.spin_axis.members.member_obliquities`), so the cost is about ``K``
+orbits plus ``N`` spin axes (an axis costs about a tenth of an orbit). Both sources of the spread
+are sampled: the orbits' chaos (the inner planets) and the spin's own (Mars' axis in its chaotic
+zone parts from a neighbour within a few Myr; Laskar & Robutel 1993).
+
 Examples
 --------
 >>> ds = obliquity_ensemble("mars", 2, -2e5, 1e5, scheduler="synchronous", progress=False)
@@ -71,6 +79,9 @@ class MemberSampler:
         body's). Not with ``dynamical_ellipticity``.
     dynamical_ellipticity : float or (low, high), optional
         ``H``, uniform in the range.
+    per_orbit : int
+        Consecutive members sharing one orbit (default 1: each its own); with more than one, the
+        spin parameter must have a range (members sharing an orbit and a parameter would be equal).
 
     Examples
     --------
@@ -78,12 +89,17 @@ class MemberSampler:
     >>> draw = MemberSampler("mars").sample(chunk_rng(0, 0), 3)
     >>> sorted(draw.parameters), draw.parameters["orbit_perturbation"].shape
     (['orbit_perturbation', 'precession_rate'], (3, 32))
+    >>> shared = MemberSampler("mars", per_orbit=2).sample(chunk_rng(0, 0), 4).parameters
+    >>> p = shared["orbit_perturbation"]
+    >>> bool((p[0] == p[1]).all() and (p[2] == p[3]).all() and (p[1] != p[2]).any())
+    True
     """
 
     body: str = "mars"
     perturbation: float = PERTURBATION
     precession_rate: float | tuple[float, float] | None = None
     dynamical_ellipticity: float | tuple[float, float] | None = None
+    per_orbit: int = 1
 
     def _ranges(self) -> tuple[str, str | None, tuple[float, float] | None]:
         key = str(self.body).strip().lower()
@@ -94,15 +110,29 @@ class MemberSampler:
             msg = "expected a precession rate or a dynamical ellipticity range, got both"
             raise ValueError(msg)
         if self.dynamical_ellipticity is not None:
-            return (
-                key,
-                "dynamical_ellipticity",
-                _interval(self.dynamical_ellipticity, "dynamical_ellipticity", 0.0, 0.5),
-            )
+            span = _interval(self.dynamical_ellipticity, "dynamical_ellipticity", 0.0, 0.5)
+            return self._varied(key, "dynamical_ellipticity", span)
         rate = self.precession_rate if self.precession_rate is not None else DEFAULT_RATES.get(key)
         if rate is None:
-            return key, None, None
-        return key, "precession_rate", _interval(rate, "precession_rate", 0.0)
+            return self._varied(key, None, None)
+        return self._varied(key, "precession_rate", _interval(rate, "precession_rate", 0.0))
+
+    def _varied(
+        self, key: str, name: str | None, span: tuple[float, float] | None
+    ) -> tuple[str, str | None, tuple[float, float] | None]:
+        """The ranges, once ``per_orbit`` is checked against them."""
+        per = self.per_orbit
+        if isinstance(per, bool) or not isinstance(per, int | np.integer) or per < 1:
+            msg = f"expected a positive whole number of members per orbit, got {per!r}"
+            raise ValueError(msg)
+        if per > 1 and (span is None or not span[1] > span[0]):
+            what = "a fixed spin parameter" if span is not None else "no spin-parameter range"
+            msg = (
+                f"expected a spin-parameter range (low, high) for {per} members per orbit (members sharing "
+                f"an orbit and a spin parameter would be equal), got {what} for {key}"
+            )
+            raise ValueError(msg)
+        return key, name, span
 
     def sample(self, rng: np.random.Generator, n: int) -> Draw:
         """``n`` members: the J2000 spin axis as states (n,), and the parameters.
@@ -119,7 +149,8 @@ class MemberSampler:
             ``precession_rate`` or ``dynamical_ellipticity`` (n,) where one varies or is given.
         """
         key, name, span = self._ranges()
-        delta = perturbed_states(n, self.perturbation, rng)
+        orbits = -(-n // self.per_orbit)
+        delta = np.repeat(perturbed_states(orbits, self.perturbation, rng), self.per_orbit, axis=0)[:n]
         parameters: dict[str, Array] = {
             "orbit_perturbation": np.concatenate([delta.real, delta.imag], axis=1)
         }
@@ -170,24 +201,23 @@ class MemberPropagator:
         axes = m / np.linalg.norm(m, axis=-1, keepdims=True)
         p = np.asarray(orbit_perturbation, dtype=float).reshape(n, 32)
         delta = p[:, :16] + 1j * p[:, 16:]
-        out = np.empty((n, t.size))
-        for i in range(n):
-            rate = None if precession_rate is None else float(np.ravel(precession_rate)[i])
-            h = None if dynamical_ellipticity is None else float(np.ravel(dynamical_ellipticity)[i])
-            run = member_obliquities(
-                self.body, end, interval, delta[i : i + 1], axes[i], precession_rate=rate,
-                dynamical_ellipticity=h, spin_step=self.spin_step,
-            )  # fmt: skip
-            if run.t.size != t.size or not np.allclose(run.t, t, rtol=0.0, atol=1e-9 * abs(end)):
-                msg = f"expected output times 0, DT, 2 DT, ... to {end:g}, got others"
-                raise ValueError(msg)
-            out[i] = run.obliquity[0]
-        return {"obliquity": out}
+        # members with equal perturbations share their orbit's integration
+        run = member_obliquities(
+            self.body, end, interval, delta, axes,
+            precession_rate=None if precession_rate is None else np.ravel(precession_rate),
+            dynamical_ellipticity=None if dynamical_ellipticity is None else np.ravel(dynamical_ellipticity),
+            spin_step=self.spin_step,
+        )  # fmt: skip
+        if run.t.size != t.size or not np.allclose(run.t, t, rtol=0.0, atol=1e-9 * abs(end)):
+            msg = f"expected output times 0, DT, 2 DT, ... to {end:g}, got others"
+            raise ValueError(msg)
+        return {"obliquity": run.obliquity}
 
 
-def _chunk(members: int, workers: int) -> int:
-    """A few chunks per worker, at most 8 members each (the unit of resumption)."""
-    return max(1, min(8, math.ceil(members / (2 * max(workers, 1)))))
+def _chunk(members: int, workers: int, per_orbit: int = 1) -> int:
+    """A few chunks per worker, at most 8 orbits each (the unit of resumption), whole orbits."""
+    orbits = members // per_orbit
+    return per_orbit * max(1, min(8, math.ceil(orbits / (2 * max(workers, 1)))))
 
 
 def obliquity_ensemble(
@@ -200,6 +230,7 @@ def obliquity_ensemble(
     precession_rate: float | tuple[float, float] | None = None,
     dynamical_ellipticity: float | tuple[float, float] | None = None,
     spin_step: float = 1000.0,
+    orbits: int | None = None,
     bins: ArrayLike | None = None,
     thresholds: ArrayLike | None = None,
     seed: int = 0,
@@ -224,11 +255,17 @@ def obliquity_ensemble(
         The spin parameter's range (:class:`MemberSampler`).
     spin_step : float
         Largest spin-axis step, years.
+    orbits : int, optional
+        How many distinct orbits the members have (default: ``members``, each its own); a divisor
+        of ``members``: each orbit then carries ``members / orbits`` spin axes, which differ by their
+        spin parameter (a range is needed). The cost is about ``orbits`` orbits plus ``members``
+        spin axes.
     bins, thresholds : array_like, optional
         Radians (:func:`~andoyer.planetary.spin_axis.statistics.obliquity_statistics`).
     seed : int
     chunk : int, optional
-        Members per chunk (default: a few chunks per worker, at most 8 members each).
+        Members per chunk, a multiple of ``members / orbits`` (default: a few chunks per worker, at
+        most 8 orbits each).
     out : path, optional
         ``*.zarr`` or ``*.nc``: the histories, resumable (:func:`andoyer.ensemble.run_ensemble`).
     scheduler, n_workers, progress
@@ -254,18 +291,32 @@ def obliquity_ensemble(
     if isinstance(members, bool) or not isinstance(members, int | np.integer) or members < 1:
         msg = f"expected a positive whole number of members, got {members!r}"
         raise ValueError(msg)
-    sampler = MemberSampler(body, perturbation, precession_rate, dynamical_ellipticity)
-    sampler._ranges()  # the body and the ranges, before any work
+    orbits = int(members) if orbits is None else orbits
+    if isinstance(orbits, bool) or not isinstance(orbits, int | np.integer) or not 1 <= orbits <= members:
+        msg = f"expected a whole number of orbits from 1 to the {members} members, got {orbits!r}"
+        raise ValueError(msg)
+    if members % orbits:
+        msg = f"expected a number of orbits dividing the {members} members, got {orbits}"
+        raise ValueError(msg)
+    per_orbit = int(members) // int(orbits)
+    sampler = MemberSampler(body, perturbation, precession_rate, dynamical_ellipticity, per_orbit)
+    sampler._ranges()  # the body, the ranges and the members per orbit, before any work
+    if chunk is not None and (
+        isinstance(chunk, bool) or not isinstance(chunk, int | np.integer) or chunk % per_orbit
+    ):
+        msg = f"expected a chunk of whole orbits (a multiple of {per_orbit} members), got {chunk!r}"
+        raise ValueError(msg)
     key = str(body).strip().lower()
-    seconds, nbytes = member_cost(int(members), float(end), float(interval), float(spin_step))
+    seconds, nbytes = member_cost(int(members), float(end), float(interval), float(spin_step), int(orbits))
     workers = 1 if isinstance(scheduler, str) and scheduler == "synchronous" else max(int(n_workers), 1)
     # the histories in memory (and their statistics' temporaries: a few copies)
     check_size(f"an obliquity ensemble of {members} members", nbytes=4 * nbytes, seconds=seconds / workers)
     announce(seconds / workers, f"integrating {members} members of {abs(end):g} years")
     times = member_times(end, interval)
+    chunk = _chunk(int(members), workers, per_orbit) if chunk is None else chunk
     ds = run_ensemble(
         sampler, int(members), times, propagator=MemberPropagator(key, float(spin_step)), out=out,
-        chunk=_chunk(int(members), workers) if chunk is None else chunk, seed=seed, output="obliquity",
+        chunk=chunk, seed=seed, output="obliquity",
         scheduler=scheduler, n_workers=n_workers, progress=progress,
     )  # fmt: skip
     eps = np.asarray(ds["obliquity"].values)
@@ -274,4 +325,5 @@ def obliquity_ensemble(
     result = stats.merge(extra.drop_vars("time", errors="ignore"), compat="override")
     result.attrs.update(ds.attrs)
     result.attrs["body"] = key
+    result.attrs["orbits"] = int(orbits)
     return result

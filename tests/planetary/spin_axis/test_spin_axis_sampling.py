@@ -95,3 +95,48 @@ def test_obliquity_refuses_a_precession_rate_no_body_can_have(capsys):
     code = main(argv)
     assert code == 2
     assert "expected a precession rate P < 7" in capsys.readouterr().err
+
+
+def test_obliquity_refuses_a_coarse_step_before_the_integration(tmp_path, capsys):
+    """Mars over 1 Gyr every Myr: refused at once from the J2000 rates, not after 30 CPU s of run.
+
+    The perihelion from the equinox turns at about ψ̇ + ϖ̇ = 7.6 + 16.0″/yr (Mars' precession rate,
+    Konopliv et al. 2016; its perihelion's advance, 0.44°/century in the J2000 mean elements of
+    Simon et al. 1994): about 18 turns per Myr, so the step must stay below ~27 kyr.
+    """
+    out = tmp_path / "m.json"
+    argv = ["obliquity", "mars", "--orbit", "secular", "--span", "-1e9", "0", "--step", "1e6"]
+    code = main([*argv, "--format", "json", "--output", str(out)])
+    err = capsys.readouterr().err
+    assert code == 2
+    assert len(err.splitlines()) == 1
+    assert "at its J2000 rate" in err  # the check before the run, not the one after it
+    most = float(err.split("take DT below ")[1].split()[0])
+    assert 2.4e4 < most < 3.0e4
+    assert not out.exists()
+
+
+def test_largest_turn_skips_the_perihelion_where_the_orbit_is_nearly_circular(monkeypatch):
+    """ϖ turns like 1/e near e = 0: those output pairs do not count (PERIHELION_E_FLOOR).
+
+    e e^{iϖ} = A e^{i g₁ t} + B e^{i g₂ t} with B = 0.98 A: e beats down to 0.02 A once per
+    beat period (75 kyr), where ϖ turns by nearly π within a few centuries; elsewhere it turns by
+    about (g₁ + g₂)/2 · 1000 yr = 0.17 rad per 1000-year output step, plus the axis' precession.
+    """
+    from andoyer.planetary.orbits.table import TableOrbit
+    from andoyer.planetary.spin_axis import history
+
+    t = np.arange(-2e5, 1.0, 100.0)
+    g1, g2 = 2 * np.pi / 5e4, 2 * np.pi / 3e4
+    z = 0.05 * np.exp(1j * g1 * t) + 0.049 * np.exp(1j * g2 * t)
+    ecc = np.stack([z.real, z.imag, np.zeros_like(t)], axis=-1)
+    normal = np.tile([0.0, 0.0, 1.0], (t.size, 1))
+    orbit = TableOrbit(t, normal, ecc, name="beating")
+    times = output_times(-2e5, 0.0, 1000.0)
+    counted = spin_axis_history(orbit, "mars", times, step=250.0)
+    e = np.abs(0.05 * np.exp(1j * g1 * times) + 0.049 * np.exp(1j * g2 * times))
+    assert e.min() < 0.1 * e.max()  # the beat passes near zero within the span
+    assert counted.largest_turn < 0.3
+    monkeypatch.setattr(history, "PERIHELION_E_FLOOR", 0.0)
+    every = spin_axis_history(orbit, "mars", times, step=250.0)
+    assert every.largest_turn > 2.0  # counted at the beat's minimum: most of π in one step

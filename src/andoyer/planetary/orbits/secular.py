@@ -46,11 +46,21 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from andoyer._jit import jit
 from andoyer.planetary.orbits.elements import eccentricity_from_elements
 from andoyer.planetary.orbits.planets import PLANETS, check_planet, planet_data
 from andoyer.planetary.orbits.protocol import check_times
+from andoyer.planetary.orbits.secular_flow import hermite_basis
 
-__all__ = ["MAX_SPAN", "SecularModel", "SecularOrbit", "secular_model"]
+__all__ = [
+    "MAX_SPAN",
+    "SecularModel",
+    "SecularOrbit",
+    "poincare_normal",
+    "secular_model",
+    "secular_tableau",
+    "vectors_from_poincare",
+]
 
 Array = NDArray[np.float64]
 CArray = NDArray[np.complex128]
@@ -166,6 +176,39 @@ def secular_model(path: str | None = None) -> SecularModel:
     )  # fmt: skip
 
 
+@cache
+def secular_tableau(h: float, samples: int = 1, path: str | None = None) -> tuple[NDArray, ...]:
+    """The shipped model's :func:`~andoyer.planetary.orbits.secular_flow.lawson_matrices`, once per step.
+
+    The stage exponentials cost about as much as integrating a few Myr (about 25 matrix exponentials of
+    16×16); every run at the same signed step and samples shares them (read-only).
+
+    Parameters
+    ----------
+    h : float
+        Signed step, years.
+    samples : int
+        Samples per step.
+    path : str, optional
+        As :func:`secular_model`.
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+
+    Examples
+    --------
+    >>> secular_tableau(-1e4, 2) is secular_tableau(-1e4, 2)
+    True
+    """
+    from andoyer.planetary.orbits.secular_flow import lawson_matrices
+
+    tableau = lawson_matrices(secular_model(path).terms.linear, float(h), int(samples))
+    for array in tableau:
+        array.flags.writeable = False
+    return tableau
+
+
 def vectors_from_poincare(
     x: CArray, y: CArray, Lambda: float | Array, rotation: Array
 ) -> tuple[Array, Array]:
@@ -200,18 +243,74 @@ def vectors_from_poincare(
     return normal @ rotation, ecc @ rotation
 
 
+@jit
+def poincare_normal(x, y, Lambda, rotation):
+    r"""The unit orbit normal (J2000 ecliptic) and ``√(1−e²)`` from one planet's Poincaré ``x, y``.
+
+    :func:`vectors_from_poincare`'s normal for one planet at one time, for compiled loops (no
+    angles: ``(sin i sin Ω, −sin i cos Ω) = sin i (Im y, −Re y)/|y|``).
+
+    Parameters
+    ----------
+    x, y : complex
+    Lambda : float
+    rotation : numpy.ndarray, shape (3, 3)
+        J2000 ecliptic → invariable frame.
+
+    Returns
+    -------
+    nx, ny, nz, root : float
+        The normal and ``√(1−e²) = 1 − |x|²/(2Λ)``.
+
+    Examples
+    --------
+    >>> n, _ = vectors_from_poincare(np.array(0.1 + 0.02j), np.array(0.03 - 0.01j), 1.0, np.eye(3))
+    >>> nx, ny, nz, root = poincare_normal(0.1 + 0.02j, 0.03 - 0.01j, 1.0, np.eye(3))
+    >>> bool(np.allclose([nx, ny, nz], n, rtol=0, atol=1e-15)), round(root, 6)
+    (True, 0.9948)
+    """
+    root = 1.0 - (x.real * x.real + x.imag * x.imag) / (2.0 * Lambda)
+    size2 = y.real * y.real + y.imag * y.imag
+    cos_i = 1.0 - size2 / (2.0 * Lambda * root)
+    sin_i = np.sqrt(max(1.0 - cos_i * cos_i, 0.0))
+    size = np.sqrt(size2)
+    if size > 0.0:
+        a, b = sin_i * y.imag / size, -sin_i * y.real / size
+    else:
+        a, b = 0.0, 0.0
+    nx = a * rotation[0, 0] + b * rotation[1, 0] + cos_i * rotation[2, 0]
+    ny = a * rotation[0, 1] + b * rotation[1, 1] + cos_i * rotation[2, 1]
+    nz = a * rotation[0, 2] + b * rotation[1, 2] + cos_i * rotation[2, 2]
+    return nx, ny, nz, root
+
+
+@jit
+def _sample(t, spacing, w, dw, cx, cy, Lambda, rotation, normal, root):
+    """The orbit normal and ``√(1−e²)`` at times ``t`` from samples ``w, dw`` every ``spacing`` from J2000.
+
+    :func:`~andoyer.planetary.orbits.secular_flow.hermite` of the columns ``cx, cy`` (``x, y``),
+    then :func:`poincare_normal`, one time at a time.
+    """
+    last = w.shape[0] - 2
+    for k in range(t.size):
+        position = t[k] / spacing
+        i = min(max(int(np.floor(position)), 0), last)
+        h00, h10, h01, h11 = hermite_basis(position - i)
+        x = h00 * w[i, cx] + h10 * spacing * dw[i, cx] + h01 * w[i + 1, cx] + h11 * spacing * dw[i + 1, cx]
+        y = h00 * w[i, cy] + h10 * spacing * dw[i, cy] + h01 * w[i + 1, cy] + h11 * spacing * dw[i + 1, cy]
+        normal[k, 0], normal[k, 1], normal[k, 2], root[k] = poincare_normal(x, y, Lambda, rotation)
+
+
 class _Run:
     """The integration in one direction from J2000 (``sign = ±1``): every step's ``w`` and ``ẇ`` kept."""
 
     def __init__(
         self, model: SecularModel, keep: NDArray[np.int64], sign: int, step: float, samples: int
     ) -> None:
-        from andoyer.planetary.orbits.secular_flow import lawson_matrices
-
         self.model, self.keep, self.sign, self.step, self.samples = model, keep, sign, step, samples
         #: The spacing of the samples kept (years).
         self.spacing = step / samples
-        self.tableau = lawson_matrices(model.terms.linear, sign * step, samples)
+        self.tableau = secular_tableau(sign * step, samples)  # the shipped model's (SecularOrbit's only)
         self.state = model.w0.copy()
         self.w = np.zeros((0, keep.size), dtype=complex)
         self.dw = np.zeros((0, keep.size), dtype=complex)
@@ -411,6 +510,79 @@ class SecularOrbit:
         """
         return self._poincare(t)
 
+    def _normal_root(self, t: ArrayLike) -> tuple[Array, Array]:
+        """The normal (..., 3) and ``√(1−e²)`` (...) at ``t``, compiled (:func:`_sample`)."""
+        times = check_times(t, self.span, self.name)
+        flat = np.ascontiguousarray(times.ravel())
+        normal = np.empty((flat.size, 3))
+        root = np.empty(flat.size)
+        cx, cy = (int(c) for c in self._columns)
+        lam = float(self.model.Lambda[self._index])
+        for sign, run in self._runs.items():
+            on_side = flat >= 0 if sign > 0 else flat < 0
+            whole = bool(on_side.all())
+            if not (whole or on_side.any()):
+                continue
+            part = flat if whole else np.ascontiguousarray(flat[on_side])
+            run.extend(float(np.abs(part).max()), self.progress)
+            if whole:  # one side only (a spin-axis history's blocks): no copies
+                _sample(
+                    part, sign * self.spacing, run.w, run.dw, cx, cy, lam, self.model.rotation, normal, root
+                )
+                break
+            part_normal, part_root = np.empty((part.size, 3)), np.empty(part.size)
+            _sample(
+                part,
+                sign * self.spacing,
+                run.w,
+                run.dw,
+                cx,
+                cy,
+                lam,
+                self.model.rotation,
+                part_normal,
+                part_root,
+            )
+            normal[on_side], root[on_side] = part_normal, part_root
+        return normal.reshape(*times.shape, 3), root.reshape(times.shape)
+
+    def hermite_samples(self, reach: float) -> tuple[CArray, CArray, float, int, int, float, Array]:
+        """The samples the interpolation uses on one side of J2000, integrated as far as ``reach``.
+
+        For compiled callers that interpolate themselves (the spin axis'
+        :func:`~andoyer.planetary.spin_axis.stepping.rotate_on_samples`), as :meth:`normal` does.
+
+        Parameters
+        ----------
+        reach : float
+            Years from J2000, nonzero; its sign chooses the side.
+
+        Returns
+        -------
+        w, dw : numpy.ndarray of complex, shape (N, K)
+            The kept ``x, y`` and their rates at ``0, s, 2s, …``.
+        spacing : float
+            ``s``, signed like ``reach``.
+        cx, cy : int
+            The planet's ``x`` and ``y`` columns.
+        Lambda : float
+        rotation : numpy.ndarray, shape (3, 3)
+
+        Examples
+        --------
+        >>> orbit = SecularOrbit("mars")
+        >>> w, dw, spacing, cx, cy, lam, rotation = orbit.hermite_samples(-2e4)
+        >>> spacing == -orbit.spacing, bool(len(w) * orbit.spacing > 2e4)
+        (True, True)
+        """
+        check_times(reach, self.span, self.name)
+        sign = 1 if reach > 0 else -1
+        run = self._runs[sign]
+        run.extend(abs(float(reach)), self.progress)
+        cx, cy = (int(c) for c in self._columns)
+        lam = float(self.model.Lambda[self._index])
+        return run.w, run.dw, sign * self.spacing, cx, cy, lam, self.model.rotation
+
     def normal(self, t: ArrayLike) -> Array:
         """Unit normal of the mean orbit, J2000 ecliptic frame.
 
@@ -423,8 +595,55 @@ class SecularOrbit:
         -------
         numpy.ndarray, shape (..., 3)
         """
-        x, y = self._poincare(t)
-        return vectors_from_poincare(x, y, self.model.Lambda[self._index], self.model.rotation)[0]
+        return self._normal_root(t)[0]
+
+    def normal_and_eccentricity(self, t: ArrayLike) -> tuple[Array, Array]:
+        """:meth:`normal` and :meth:`eccentricity` from one interpolation.
+
+        Parameters
+        ----------
+        t : array_like, shape (...)
+            Julian years TT from J2000.
+
+        Returns
+        -------
+        normal : numpy.ndarray, shape (..., 3)
+        e : numpy.ndarray, shape (...)
+
+        Examples
+        --------
+        >>> orbit = SecularOrbit("mars")
+        >>> n, e = orbit.normal_and_eccentricity([-1e5, 0.0])
+        >>> bool((n == orbit.normal([-1e5, 0.0])).all() and (e == orbit.eccentricity([-1e5, 0.0])).all())
+        True
+        """
+        normal, root = self._normal_root(t)
+        return normal, np.sqrt(np.clip(1.0 - root * root, 0.0, None))
+
+    def eccentricity(self, t: ArrayLike) -> Array:
+        """Mean eccentricity, ``e = √(1 − (1 − |x|²/(2Λ))²)``.
+
+        The norm of :meth:`eccentricity_vector` without its angles (the spin axis' torque needs
+        ``e`` alone).
+
+        Parameters
+        ----------
+        t : array_like, shape (...)
+            Julian years TT from J2000.
+
+        Returns
+        -------
+        numpy.ndarray, shape (...)
+
+        Examples
+        --------
+        >>> orbit = SecularOrbit("mars")
+        >>> t = np.array([-3e5, 0.0, 2e5])
+        >>> bool(np.allclose(orbit.eccentricity(t), np.linalg.norm(orbit.eccentricity_vector(t), axis=-1)))
+        True
+        """
+        root = self._normal_root(t)[1]
+        return np.sqrt(np.clip(1.0 - root * root, 0.0, None))
 
     def eccentricity_vector(self, t: ArrayLike) -> Array:
         """Mean eccentricity vector (``e`` times the unit vector to perihelion), J2000 ecliptic.

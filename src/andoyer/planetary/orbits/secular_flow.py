@@ -35,10 +35,11 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from andoyer._jit import jit
+from andoyer._jit import jit, jitable
 
 __all__ = [
-    "FlowTerms", "default_step", "energy", "hermite", "integrate", "lawson_matrices", "product_tree",
+    "FlowTerms", "default_step", "energy", "hermite", "hermite_basis", "integrate", "lawson_matrices",
+    "product_tree",
 ]  # fmt: skip
 
 CArray = NDArray[np.complex128]
@@ -502,6 +503,29 @@ def default_step(linear: CArray, fraction: float = 1.0 / 64.0) -> float:
     return float(fraction * 2.0 * np.pi / rates.max())
 
 
+@jitable
+def hermite_basis(s):
+    """The cubic Hermite basis at ``s ∈ [0, 1]``: ``f(s) ≈ h00 f0 + h10 f0' + h01 f1 + h11 f1'``.
+
+    ``h00 = (1 + 2s)(1 − s)²``, ``h10 = s(1 − s)²``, ``h01 = s²(3 − 2s)``, ``h11 = s²(s − 1)``
+    (derivatives per unit ``s``). Floats in compiled kernels, or numpy arrays.
+
+    Parameters
+    ----------
+    s : float or numpy.ndarray, shape (...)
+
+    Returns
+    -------
+    h00, h10, h01, h11 : float or numpy.ndarray, shape (...)
+
+    Examples
+    --------
+    >>> [float(v) for v in hermite_basis(0.5)]
+    [0.5, 0.125, 0.5, -0.125]
+    """
+    return (1.0 + 2.0 * s) * (1.0 - s) ** 2, s * (1.0 - s) ** 2, s * s * (3.0 - 2.0 * s), s * s * (s - 1.0)
+
+
 def hermite(t: NDArray, t0: float, h: float, w: CArray, dw: CArray) -> CArray:
     """Cubic Hermite interpolation of samples ``w`` (and derivatives ``dw``) every ``h`` from ``t0``.
 
@@ -525,11 +549,7 @@ def hermite(t: NDArray, t0: float, h: float, w: CArray, dw: CArray) -> CArray:
     """
     position = (np.asarray(t, dtype=float) - t0) / h
     i = np.clip(np.floor(position).astype(np.int64), 0, len(w) - 2)
-    s = (position - i)[:, None]
-    h00 = (1.0 + 2.0 * s) * (1.0 - s) ** 2
-    h10 = s * (1.0 - s) ** 2
-    h01 = s * s * (3.0 - 2.0 * s)
-    h11 = s * s * (s - 1.0)
+    h00, h10, h01, h11 = hermite_basis((position - i)[:, None])
     return h00 * w[i] + h10 * h * dw[i] + h01 * w[i + 1] + h11 * h * dw[i + 1]
 
 

@@ -33,19 +33,22 @@ from andoyer import catalogue
 from andoyer._limits import ToleranceWarning, caller_stacklevel, check_size
 from andoyer._validation import as_finite, as_vectors
 from andoyer.catalogue.units import ARCSEC
+from andoyer.compositions import COMPOSITIONS
 from andoyer.planetary.orbits.protocol import OrbitHistory
 from andoyer.planetary.spin_axis.insolation import daily_insolation
 from andoyer.planetary.spin_axis.model import DEFAULT_PRECESSION_RATE, SpinAxisModel
-from andoyer.planetary.spin_axis.stepping import rotate_stages, stage_times
+from andoyer.planetary.spin_axis.stepping import rotate_on_samples, rotate_stages, stage_times
 
 __all__ = [
     "AXIS_ROW_BYTES",
     "BLOCK_ROWS",
     "BLOCK_STEPS",
+    "CONTROL_WINDOW",
     "DEFAULT_TOLERANCE",
     "EPSILON_0",
     "HISTORY_ROW_BYTES",
     "ORBIT_SAMPLE_BYTES",
+    "PERIHELION_E_FLOOR",
     "SpinAxisHistory",
     "build_model",
     "check_run",
@@ -93,6 +96,14 @@ SMALLEST_TOLERANCE = 1e-12
 #: The largest tolerance taken, radians (one degree): an axis known no better is no answer, and
 #: the step doubling starts from steps that already meet it.
 LARGEST_TOLERANCE = float(np.pi / 180.0)
+#: Fraction of the largest eccentricity of a run's outputs below which the perihelion's turn between
+#: two outputs is not counted in ``largest_turn``: there ``e sin ϖ`` is below a tenth of its amplitude,
+#: and ``ϖ`` turns as fast as ``1/e`` (every output step would alias it as ``e`` passes near zero).
+PERIHELION_E_FLOOR = 0.1
+#: Years from J2000 over which a tolerance is met by step doubling (:func:`controlled_outputs`): a
+#: longer span takes the step chosen over this window. Two Lyapunov times of the inner planets'
+#: orbits (about 5 Myr, Laskar 1989) and of Mars' axis in its chaotic zone.
+CONTROL_WINDOW = 1.0e7
 #: Halvings of the step tried before a tolerance is given up (with a ToleranceWarning):
 #: 1000 years down to a quarter of a year.
 MAX_HALVINGS = 12
@@ -330,12 +341,19 @@ def _sweep(orbit, model, knots, s0, step, order, refine=1):  # type: ignore[no-u
     after each, and the knot each step ends on (or ``-1``), as :func:`_step_blocks`.
     """
     s = np.ascontiguousarray(s0, dtype=float)
+    parameters = _run_parameters(model, len(s))
+    # an orbit that hands over its samples is interpolated inside the compiled pass (no stage arrays)
+    samples = getattr(orbit, "hermite_samples", None) if parameters is not None else None
+    gamma = np.ascontiguousarray(COMPOSITIONS[order]) if order in COMPOSITIONS else None
     for starts, sizes, ends, last in _step_blocks(knots, step, BLOCK_STEPS, refine):
-        mid, dur = stage_times(starts, sizes, order)
-        normals = np.ascontiguousarray(orbit.normal(mid))
-        factor, parameters = _rate_terms(orbit, model, mid, len(s))
         out = np.empty((len(s), len(starts), 3))
-        rotate_stages(s, normals, mid, factor, parameters, dur, len(dur) // len(starts), out)
+        if callable(samples) and gamma is not None:
+            rotate_on_samples(s, starts, sizes, gamma, *samples(float(ends[-1])), parameters, out)
+        else:
+            mid, dur = stage_times(starts, sizes, order)
+            normals, e = _normal_and_eccentricity(orbit, mid)
+            factor, parameters_or_unit = _rate_terms(orbit, model, mid, len(s), e)
+            rotate_stages(s, normals, mid, factor, parameters_or_unit, dur, len(dur) // len(starts), out)
         s = np.ascontiguousarray(out[:, -1])
         yield ends, out, last
 
@@ -347,7 +365,11 @@ def _check_step(step: float) -> None:
 
 
 def _rate_terms(
-    orbit: OrbitHistory, model: SpinAxisModel | Sequence[SpinAxisModel], t: Array, runs: int
+    orbit: OrbitHistory,
+    model: SpinAxisModel | Sequence[SpinAxisModel],
+    t: Array,
+    runs: int,
+    e: Array | None = None,
 ) -> tuple[Array, Array]:
     """The orbit's factor ``(1 − e²)^{−3/2}`` at ``t``, (T, 1) or (T, M), and the runs' (5, M) parameters.
 
@@ -355,25 +377,51 @@ def _rate_terms(
     is computed once for all runs where the orbit knows its eccentricity. A model with another
     ``rate`` gives ``α`` itself (T, M) with the parameters ``(1, 0, 0, 0, 0)``.
     """
-    models = [model] * runs if isinstance(model, SpinAxisModel) else list(model)
-    if any(type(m).rate is not SpinAxisModel.rate for m in models):
+    parameters = _run_parameters(model, runs)
+    if parameters is None:
         # another law of α (a migrating satellite's): α itself as the per-run factor, unit parameters
         unit = np.zeros((5, runs))
         unit[0] = 1.0
         return np.ascontiguousarray(_alpha(orbit, model, t, runs).T), unit
-    names = ("alpha_sun", "beta", "tide_spin", "tide_moon", "ellipticity_drift")
-    parameters = np.array([[getattr(m, name) for m in models] for name in names], dtype=float)
-    parameters = parameters.reshape(5, runs)
+    models = [model] * runs if isinstance(model, SpinAxisModel) else list(model)
     if orbit.has_eccentricity:
-        e = np.linalg.norm(orbit.eccentricity_vector(t), axis=-1)
+        e = _eccentricity(orbit, t) if e is None else e
         return (((1 - e) * (1 + e)) ** -1.5)[:, None], parameters
     e = np.array([m.eccentricity for m in models], dtype=float)
     return np.broadcast_to(((1 - e) * (1 + e)) ** -1.5, (t.size, runs)), parameters
 
 
+def _run_parameters(model: SpinAxisModel | Sequence[SpinAxisModel], runs: int) -> Array | None:
+    """The runs' (5, M) parameters of :func:`~andoyer.planetary.spin_axis.stepping.stage_rate`.
+
+    ``None`` where a run's ``α`` follows another law (:meth:`SpinAxisModel.rate` overridden).
+    """
+    models = [model] * runs if isinstance(model, SpinAxisModel) else list(model)
+    if any(type(m).rate is not SpinAxisModel.rate for m in models):
+        return None
+    names = ("alpha_sun", "beta", "tide_spin", "tide_moon", "ellipticity_drift")
+    parameters = np.array([[getattr(m, name) for m in models] for name in names], dtype=float)
+    return np.ascontiguousarray(parameters.reshape(5, runs))
+
+
+def _normal_and_eccentricity(orbit: OrbitHistory, t: Array) -> tuple[Array, Array | None]:
+    """The normal (contiguous) and ``e`` (or ``None``) at ``t``, in one pass where the orbit offers one."""
+    both = getattr(orbit, "normal_and_eccentricity", None)
+    if callable(both):
+        normal, e = both(t)
+        return np.ascontiguousarray(normal), e
+    return np.ascontiguousarray(orbit.normal(t)), None
+
+
+def _eccentricity(orbit: OrbitHistory, t: Array) -> Array:
+    """``e`` at ``t``: the orbit's own ``eccentricity`` if it has one (no angles), else the vector's norm."""
+    own = getattr(orbit, "eccentricity", None)
+    return own(t) if callable(own) else np.linalg.norm(orbit.eccentricity_vector(t), axis=-1)
+
+
 def _alpha(orbit: OrbitHistory, model: SpinAxisModel | Sequence[SpinAxisModel], t: Array, runs: int) -> Array:
     """``α`` of every run at the times ``t`` (the orbit's eccentricity where it knows it), shape (M, T)."""
-    e = np.linalg.norm(orbit.eccentricity_vector(t), axis=-1) if orbit.has_eccentricity else None
+    e = _eccentricity(orbit, t) if orbit.has_eccentricity else None
     if isinstance(model, SpinAxisModel):
         return np.broadcast_to(model.rate(t, e), (runs, t.size))
     return np.stack([m.rate(t, e) for m in model])
@@ -480,7 +528,11 @@ class SpinAxisHistory:
     largest_turn : float
         The largest angle (radians) by which ``p_A`` or ``ϖ`` turns between two consecutive
         output times, measured on the integration grid: from ``π`` on, the outputs undersample
-        the precession (Nyquist) and a table or a picture of them aliases it.
+        the precession (Nyquist) and a table or a picture of them aliases it. ``ϖ`` counts only
+        between outputs where ``e`` is at least :data:`PERIHELION_E_FLOOR` of its largest value
+        over the outputs: near ``e = 0`` the perihelion turns as fast as ``1/e`` (Mars' passes
+        close to circular every few Myr), and there the climatic precession ``e sin ϖ`` is below
+        a tenth of its amplitude.
     error_estimate : float or None
         The largest error of the axis over the output times (radians) that the step doubling
         of a run chosen from a tolerance estimates (:func:`controlled_outputs`); ``None`` for a
@@ -617,9 +669,13 @@ def history_blocks(
         (axes, p, varpi), error, step = controlled_outputs(
             orbit, model, times, s0, step, order, orbit.has_eccentricity, tolerance
         )
-    # the largest turn of p_A or ϖ between consecutive outputs, both unwrapped step by step
-    turns = [p[0]] if varpi is None else [p[0], varpi]
-    largest = max(float(np.max(np.abs(np.diff(angle)), initial=0.0)) for angle in turns)
+    # the largest turn of p_A or ϖ between consecutive outputs, both unwrapped step by step; ϖ's
+    # only where e is at least PERIHELION_E_FLOOR of its largest over the outputs
+    largest = float(np.max(np.abs(np.diff(p[0])), initial=0.0))
+    if varpi is not None and times.size > 1:
+        e = _eccentricity(orbit, times)
+        kept = np.minimum(e[:-1], e[1:]) >= PERIHELION_E_FLOOR * float(np.max(e))
+        largest = max(largest, float(np.max(np.abs(np.diff(varpi))[kept], initial=0.0)))
     del varpi
     n0 = orbit.normal(0.0)
     e0 = np.linalg.norm(orbit.eccentricity_vector(0.0)) if orbit.has_eccentricity else None
@@ -981,7 +1037,17 @@ def controlled_outputs(
 
     That distance is the **error estimate** of the fine run, and a conservative one: the
     coarse run's error is the distance plus the fine run's, so the fine run's error is below
-    the distance whenever halving the step at least halves the error. The composition is of
+    the distance whenever halving the step at least halves the error.
+
+    **Long spans.** Over more than :data:`CONTROL_WINDOW` (10 Myr) from J2000 the step is
+    chosen on the window alone (the outputs within it and its ends), then the whole span is run
+    once at that step, and the error reported is the window's: the tolerance holds per window
+    of 10 Myr, not over the whole span. Where the axis is chaotic (Mars: its obliquity wanders
+    through secular spin–orbit resonances, Laskar & Robutel 1993, *Nature* 361, 608; Touma &
+    Wisdom 1993, *Science* 259, 1294) two runs at any two steps part exponentially, so a
+    tolerance over 10⁸ years is met by no step (halving the step only delays the parting by a
+    Lyapunov time); such a history is one of the possible ones, and its statistics are what
+    carry information (:mod:`andoyer.planetary.spin_axis.members`). The composition is of
     order 8 on a smooth orbit (an error ratio of 256 per halving); on an orbit interpolated by
     a cubic spline, such as the N-body one (100-year knots), the ratio measured for Mars over
     1 Myr is 12–22 (an order near 4): the estimate is then 11–21 times the error.
@@ -1020,6 +1086,22 @@ def controlled_outputs(
     runs = 1 if isinstance(model, SpinAxisModel) else len(model)
     if times.size:  # the whole span at once (an N-body orbit integrates it in one run)
         orbit.normal(np.array([min(float(times[0]), 0.0), max(float(times[-1]), 0.0)]))
+    reach = float(np.max(np.abs(times), initial=0.0))
+    if reach > CONTROL_WINDOW:
+        # the step from the window, then one run over the whole span at that step
+        ends = [side * CONTROL_WINDOW for side in (-1.0, 1.0) if np.any(side * times > CONTROL_WINDOW)]
+        probe = np.unique(np.concatenate([times[np.abs(times) <= CONTROL_WINDOW], ends]))
+        _, error, chosen = _doubled(orbit, model, probe, s0, step, order, perihelion, tolerance, runs)
+        what = (
+            f"a spin-axis run at the step of {chosen:.3g} years that met a tolerance of {tolerance:.3g} rad"
+        )
+        check_size(what, seconds=run_cost(orbit, times, runs, chosen, order, orbit_sample_seconds(orbit))[0])
+        return _evolve_outputs(orbit, model, times, s0, chosen, order, perihelion), error, chosen
+    return _doubled(orbit, model, times, s0, step, order, perihelion, tolerance, runs)
+
+
+def _doubled(orbit, model, times, s0, step, order, perihelion, tolerance, runs):  # type: ignore[no-untyped-def]
+    """:func:`controlled_outputs`' step doubling over ``times``: (outputs, error, step)."""
     step = _largest_step(orbit, model, times, runs, step)
     knots = np.unique(np.concatenate([[0.0], times]))
     # the largest step the coarse run takes: every gap is then cut in twice as many steps
@@ -1137,9 +1219,7 @@ def integrate_axis_dop853(
         if end == 0.0:
             out[side] = s0
             continue
-        sol = solve_ivp(
-            rhs, (0.0, end), s0, method="DOP853", t_eval=targets[order], rtol=rtol, atol=rtol
-        )
+        sol = solve_ivp(rhs, (0.0, end), s0, method="DOP853", t_eval=targets[order], rtol=rtol, atol=rtol)
         values = np.empty((targets.size, 3))
         values[order] = sol.y.T
         out[side] = values

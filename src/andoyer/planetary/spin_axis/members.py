@@ -52,6 +52,8 @@ from numpy.typing import ArrayLike, NDArray
 from andoyer._jit import jit
 from andoyer.catalogue.units import ARCSEC
 from andoyer.compositions import COMPOSITIONS, turn_about
+from andoyer.planetary.orbits.secular import poincare_normal
+from andoyer.planetary.orbits.secular_flow import hermite_basis
 from andoyer.planetary.spin_axis.model import EARTH_DYNAMICAL_ELLIPTICITY, SpinAxisModel
 
 __all__ = [
@@ -75,12 +77,16 @@ PERTURBATION = 1e-6
 #: Barnes & Chambers 2012).
 MEMBER_BODIES = ("mars", "earth", "moonless-earth")
 #: Orbit steps integrated at once for one member (the unit of work between two looks at the
-#: domain; 4096 steps of about 5 kyr are 20 Myr).
+#: domain; 4096 steps of about 10 kyr are 40 Myr).
 BLOCK_STEPS = 4096
-#: Seconds per orbit step and member of the secular kernel, measured (one core of the shared
-#: 2-core machine, 2026-11-28: 245 µs per step; the spin axis adds 2 %); a bound used only to
+#: Seconds per orbit step of the secular kernel (12 evaluations of the flow), measured (one core of
+#: the shared 2-core machine, 2026-11-28: 120-200 µs per step with the load); a bound used only to
 #: refuse or announce a run before it starts.
 STEP_SECONDS = 3.0e-4
+#: Seconds per spin substep and member (the order-8 composition's 15 rotations and the orbit's
+#: interpolation; measured 1.15 µs for one member alone, less for each of several on one orbit); a
+#: bound used only to refuse or announce a run.
+SUBSTEP_SECONDS = 1.0e-6
 #: Bytes per output time and member (the obliquity, and the arrays the ensemble keeps of it).
 ROW_BYTES = 32
 
@@ -146,8 +152,8 @@ def member_models(
         Each member's orbit normal at J2000.
     e0 : numpy.ndarray, shape (M,)
         Each member's eccentricity at J2000.
-    axis : numpy.ndarray, shape (3,)
-        The spin axis at J2000 (unit, J2000 ecliptic).
+    axis : numpy.ndarray, shape (3,) or (M, 3)
+        The spin axis at J2000 (unit, J2000 ecliptic), shared or one per member.
     precession_rate, dynamical_ellipticity : array_like, shape (M,) or scalar, optional
         At most one; ``ψ̇`` at J2000 (″/yr) or ``H``. Default: the body's precession rate
         (Mars, the Earth), today's ``H`` with no Moon (``"moonless-earth"``).
@@ -163,6 +169,7 @@ def member_models(
         msg = "expected a precession rate or a dynamical ellipticity, got both"
         raise ValueError(msg)
     runs = len(e0)
+    axes = np.broadcast_to(axis, (runs, 3))
     planet = "earth" if key == "moonless-earth" else key
     if key == "moonless-earth" and precession_rate is None and dynamical_ellipticity is None:
         dynamical_ellipticity = EARTH_DYNAMICAL_ELLIPTICITY
@@ -176,7 +183,7 @@ def member_models(
         else:
             rate = DEFAULT_PRECESSION_RATE[planet] if precession_rate is None else precession_rate
             rate = float(np.broadcast_to(rate, (runs,))[i])
-            eps0 = float(np.arctan2(np.linalg.norm(np.cross(axis, normal0[i])), axis @ normal0[i]))
+            eps0 = float(np.arctan2(np.linalg.norm(np.cross(axes[i], normal0[i])), axes[i] @ normal0[i]))
             if key == "moonless-earth":
                 # ψ̇ = α_⊙ cos ε₀ (1−e²)^{−3/2} with the Sun alone.
                 model = SpinAxisModel.from_precession_rate(planet, rate, eps0, float(e0[i]))
@@ -211,9 +218,15 @@ class MemberRun:
     spin_step: float
 
 
-def _steps(end: float, interval: float, spin_step: float) -> tuple[Array, float, int, int]:
-    """Output times, the orbit step, orbit steps per output, spin substeps per orbit step."""
-    from andoyer.planetary.orbits.secular import MAX_SPAN, STEP_FRACTION, secular_model
+def _steps(end: float, interval: float, spin_step: float) -> tuple[Array, float, int, int, int]:
+    """Output times, the orbit step, orbit steps per output, samples per step, spin substeps per sample.
+
+    The orbit takes :class:`~andoyer.planetary.orbits.SecularOrbit`'s steps (at most
+    :data:`~andoyer.planetary.orbits.secular.LONG_STEP_FRACTION` of the shortest linear period, a
+    whole number per output step) and keeps its samples (at most
+    :data:`~andoyer.planetary.orbits.secular.STEP_FRACTION` of that period apart).
+    """
+    from andoyer.planetary.orbits.secular import LONG_STEP_FRACTION, MAX_SPAN, STEP_FRACTION, secular_model
     from andoyer.planetary.orbits.secular_flow import default_step
 
     if not (np.isfinite(end) and end != 0 and abs(end) <= MAX_SPAN):
@@ -232,11 +245,12 @@ def _steps(end: float, interval: float, spin_step: float) -> tuple[Array, float,
     sign = 1.0 if end > 0 else -1.0
     t = sign * interval * np.arange(count + 1)
     t[0] = 0.0  # not -0.0
-    largest = default_step(secular_model().terms.linear, STEP_FRACTION)
-    per = max(1, int(np.ceil(interval / largest - 1e-9)))
+    linear = secular_model().terms.linear
+    per = max(1, int(np.ceil(interval / default_step(linear, LONG_STEP_FRACTION) - 1e-9)))
     h = interval / per
-    substeps = max(1, int(np.ceil(h / spin_step - 1e-9)))
-    return t, h, per, substeps
+    samples = max(1, int(np.ceil(h / default_step(linear, STEP_FRACTION) - 1e-9)))
+    substeps = max(1, int(np.ceil(h / samples / spin_step - 1e-9)))
+    return t, h, per, samples, substeps
 
 
 def member_times(end: float, interval: float) -> Array:
@@ -259,7 +273,9 @@ def member_times(end: float, interval: float) -> Array:
     return _steps(float(end), float(interval), 1000.0)[0]
 
 
-def member_cost(members: int, end: float, interval: float, spin_step: float = 1000.0) -> tuple[float, float]:
+def member_cost(
+    members: int, end: float, interval: float, spin_step: float = 1000.0, orbits: int | None = None
+) -> tuple[float, float]:
     """Seconds and bytes of :func:`member_obliquities`, before the work.
 
     Parameters
@@ -267,6 +283,8 @@ def member_cost(members: int, end: float, interval: float, spin_step: float = 10
     members : int
     end, interval, spin_step : float
         As :func:`member_obliquities`.
+    orbits : int, optional
+        How many of the members have orbits of their own (default: all); the others share them.
 
     Returns
     -------
@@ -275,73 +293,64 @@ def member_cost(members: int, end: float, interval: float, spin_step: float = 10
     Examples
     --------
     >>> seconds, nbytes = member_cost(1000, -1e8, 1e5)
-    >>> round(seconds), nbytes  # 10^3 members of 100 Myr: 20000 orbit steps each
-    (6000, 32032000.0)
+    >>> round(seconds), nbytes  # 10^3 members of 100 Myr, each its own orbit (10^4 steps each)
+    (3100, 32032000.0)
+    >>> round(member_cost(1000, -1e8, 1e5, orbits=100)[0])  # ten spin axes per orbit
+    400
     """
-    t, _, per, _ = _steps(end, interval, spin_step)
+    t, _, per, samples, substeps = _steps(end, interval, spin_step)
     steps = (t.size - 1) * per
-    return float(members) * steps * STEP_SECONDS, float(members) * t.size * ROW_BYTES
+    orbits = members if orbits is None else orbits
+    seconds = (
+        float(orbits) * steps * STEP_SECONDS + float(members) * steps * samples * substeps * SUBSTEP_SECONDS
+    )
+    return seconds, float(members) * t.size * ROW_BYTES
 
 
 @jit
-def _spin_block(w, dw, h, steps, lam, rotation, s, alpha_sun, beta, gamma, substeps, per, first, out):
-    """Turn ``s`` over ``steps`` orbit steps; store the obliquity every ``per`` steps.
+def _spin_block(w, dw, spacing, rows, lam, rotation, s, alpha_sun, beta, gamma, substeps, per, first, out):
+    """Turn the axes ``s`` of ``M`` members over ``rows`` sample intervals of one orbit.
 
-    ``w, dw`` (steps + 1, 2): the planet's ``x, y`` and their derivatives at the steps; ``h`` the
-    signed step; ``s`` (3,) turned in place; ``out[first + j]`` the obliquity after ``(j+1)·per``
-    steps. Returns the number of obliquities stored.
+    ``w, dw`` (rows + 1, 2): the planet's ``x, y`` and their derivatives at the samples, ``spacing``
+    (signed) apart; ``s`` (M, 3) turned in place, each member at its own ``α_⊙, β`` (M,); the
+    orbit's normal and ``√(1−e²)`` at each stage are computed once for all members.
+    ``out[:, first + j]`` is the obliquity after ``(j+1)·per`` intervals. Returns the number of
+    obliquities stored per member.
     """
     S = gamma.size
+    M = s.shape[0]
     stored = 0
-    for i in range(steps):
-        xa, ya, dxa, dya = w[i, 0], w[i, 1], dw[i, 0] * h, dw[i, 1] * h
-        xb, yb, dxb, dyb = w[i + 1, 0], w[i + 1, 1], dw[i + 1, 0] * h, dw[i + 1, 1] * h
-        sx, sy, sz = s[0], s[1], s[2]
+    for i in range(rows):
+        xa, ya, dxa, dya = w[i, 0], w[i, 1], dw[i, 0] * spacing, dw[i, 1] * spacing
+        xb, yb, dxb, dyb = w[i + 1, 0], w[i + 1, 1], dw[i + 1, 0] * spacing, dw[i + 1, 1] * spacing
         for q in range(substeps):
             before = 0.0
             for g in range(S):
                 tau = (q + before + 0.5 * gamma[g]) / substeps
                 before += gamma[g]
-                h00 = (1.0 + 2.0 * tau) * (1.0 - tau) ** 2
-                h10 = tau * (1.0 - tau) ** 2
-                h01 = tau * tau * (3.0 - 2.0 * tau)
-                h11 = tau * tau * (tau - 1.0)
+                h00, h10, h01, h11 = hermite_basis(tau)
                 x = h00 * xa + h10 * dxa + h01 * xb + h11 * dxb
                 y = h00 * ya + h10 * dya + h01 * yb + h11 * dyb
-                nx, ny, nz, root = _normal(x, y, lam, rotation)
-                alpha = alpha_sun * (1.0 / (root * root * root) + beta)
-                sx, sy, sz = turn_about(sx, sy, sz, nx, ny, nz, -alpha * gamma[g] * h / substeps)
-            scale = 1.0 / np.sqrt(sx * sx + sy * sy + sz * sz)
-            sx, sy, sz = sx * scale, sy * scale, sz * scale
-        s[0], s[1], s[2] = sx, sy, sz
+                nx, ny, nz, root = poincare_normal(x, y, lam, rotation)
+                factor = 1.0 / (root * root * root)
+                duration = -gamma[g] * spacing / substeps
+                for m in range(M):
+                    alpha = alpha_sun[m] * (factor + beta[m])
+                    s[m, 0], s[m, 1], s[m, 2] = turn_about(
+                        s[m, 0], s[m, 1], s[m, 2], nx, ny, nz, alpha * duration
+                    )
+            for m in range(M):
+                scale = 1.0 / np.sqrt(s[m, 0] * s[m, 0] + s[m, 1] * s[m, 1] + s[m, 2] * s[m, 2])
+                s[m, 0], s[m, 1], s[m, 2] = s[m, 0] * scale, s[m, 1] * scale, s[m, 2] * scale
         if (i + 1) % per == 0:
-            nx, ny, nz, _ = _normal(xb, yb, lam, rotation)
-            cx, cy, cz = sy * nz - sz * ny, sz * nx - sx * nz, sx * ny - sy * nx
-            cross = np.sqrt(cx * cx + cy * cy + cz * cz)
-            out[first + stored] = np.arctan2(cross, sx * nx + sy * ny + sz * nz)
+            nx, ny, nz, _ = poincare_normal(xb, yb, lam, rotation)
+            for m in range(M):
+                sx, sy, sz = s[m, 0], s[m, 1], s[m, 2]
+                cx, cy, cz = sy * nz - sz * ny, sz * nx - sx * nz, sx * ny - sy * nx
+                cross = np.sqrt(cx * cx + cy * cy + cz * cz)
+                out[m, first + stored] = np.arctan2(cross, sx * nx + sy * ny + sz * nz)
             stored += 1
     return stored
-
-
-@jit
-def _normal(x, y, lam, rotation):
-    """The unit orbit normal (J2000 ecliptic) and ``√(1−e²)`` from Poincaré ``x, y`` (invariable frame).
-
-    :func:`andoyer.planetary.orbits.secular.vectors_from_poincare` for one planet and one time.
-    """
-    root = 1.0 - (x.real * x.real + x.imag * x.imag) / (2.0 * lam)
-    size2 = y.real * y.real + y.imag * y.imag
-    cos_i = 1.0 - size2 / (2.0 * lam * root)
-    sin_i = np.sqrt(max(1.0 - cos_i * cos_i, 0.0))
-    size = np.sqrt(size2)
-    if size > 0.0:
-        a, b = sin_i * y.imag / size, -sin_i * y.real / size
-    else:
-        a, b = 0.0, 0.0
-    nx = a * rotation[0, 0] + b * rotation[1, 0] + cos_i * rotation[2, 0]
-    ny = a * rotation[0, 1] + b * rotation[1, 1] + cos_i * rotation[2, 1]
-    nz = a * rotation[0, 2] + b * rotation[1, 2] + cos_i * rotation[2, 2]
-    return nx, ny, nz, root
 
 
 def member_obliquities(
@@ -358,6 +367,10 @@ def member_obliquities(
 ) -> MemberRun:
     """The obliquity of ``M`` members from J2000 to ``end``, every ``interval`` years.
 
+    Members whose perturbations are equal share one orbit: it is integrated once, and their spin
+    axes (which then differ by their spin parameters or their J2000 axes) are turned together in
+    the same compiled pass.
+
     Parameters
     ----------
     body : {"mars", "earth", "moonless-earth"}
@@ -369,15 +382,15 @@ def member_obliquities(
         Output step, years, ``0 < interval ≤ |end|``.
     perturbation : array_like of complex, shape (M, 16)
         Each member's displacement of the J2000 secular state (:func:`perturbed_states`).
+    axis : array_like, shape (3,) or (M, 3)
+        Spin axis at J2000, J2000 ecliptic (e.g. :func:`~andoyer.planetary.spin_axis.default_axis`
+        of the planet), shared or one per member.
     precession_rate, dynamical_ellipticity : array_like, shape (M,) or scalar, optional
         See :func:`member_models`.
-    axis : array_like, shape (3,)
-        Spin axis at J2000, J2000 ecliptic (e.g. :func:`~andoyer.planetary.spin_axis.default_axis`
-        of the planet).
     spin_step : float
         Largest spin-axis step, years (default 1000, the library's).
     on_block : callable, optional
-        Called with the years done (of one member) after each block (progress).
+        Called with the years done (of one orbit) after each block (progress).
 
     Returns
     -------
@@ -389,49 +402,71 @@ def member_obliquities(
         For a body, time, step or parameter out of range.
     """
     from andoyer.planetary.orbits.planets import PLANETS
-    from andoyer.planetary.orbits.secular import E_MAX, I_MAX, secular_model, vectors_from_poincare
-    from andoyer.planetary.orbits.secular_flow import integrate, lawson_matrices
+    from andoyer.planetary.orbits.secular import (
+        E_MAX,
+        I_MAX,
+        secular_model,
+        secular_tableau,
+        vectors_from_poincare,
+    )
+    from andoyer.planetary.orbits.secular_flow import integrate
 
     key = _body(body)
     planet = "earth" if key == "moonless-earth" else key
-    t, h, per, substeps = _steps(float(end), float(interval), float(spin_step))
+    t, h, per, samples, substeps = _steps(float(end), float(interval), float(spin_step))
     delta = np.asarray(perturbation)
     if delta.ndim != 2 or delta.shape[1] != 16 or not np.all(np.isfinite(delta)):
         msg = f"expected finite perturbations of shape (M, 16), got shape {delta.shape}"
         raise ValueError(msg)
+    runs = delta.shape[0]
     s0 = np.asarray(axis, dtype=float)
-    if s0.shape != (3,) or not np.all(np.isfinite(s0)) or not np.linalg.norm(s0) > 0:
-        msg = f"expected a finite non-zero axis of shape (3,), got {axis!r}"
+    if s0.shape not in ((3,), (runs, 3)) or not np.all(np.isfinite(s0)):
+        msg = f"expected a finite axis of shape (3,) or ({runs}, 3), got shape {s0.shape}"
         raise ValueError(msg)
-    s0 = s0 / np.linalg.norm(s0)
+    s0 = np.array(np.broadcast_to(s0, (runs, 3)))
+    size = np.linalg.norm(s0, axis=-1, keepdims=True)
+    if not np.all(size > 0):
+        msg = f"expected a non-zero axis for every member, got {s0[np.ravel(size == 0)].tolist()}"
+        raise ValueError(msg)
+    s0 /= size
     model = secular_model()
     terms = model.terms
     P = terms.count
     j = PLANETS.index(planet)
     lam = float(model.Lambda[j])
-    w0 = model.w0[None, :] + delta.astype(complex)
-    normal0, ecc0 = vectors_from_poincare(w0[:, j], w0[:, P + j], lam, model.rotation)
+    orbits, member_orbit = np.unique(delta.astype(complex), axis=0, return_inverse=True)
+    member_orbit = member_orbit.ravel()
+    w0 = model.w0[None, :] + orbits
+    # one orbit at a time: a matrix product's last bits would depend on how many orbits it holds
+    vectors = [vectors_from_poincare(w[j], w[P + j], lam, model.rotation) for w in w0]
+    normal0, ecc0 = np.array([v[0] for v in vectors]), np.array([v[1] for v in vectors])
     models = member_models(
-        key, normal0, np.linalg.norm(ecc0, axis=-1), s0, precession_rate, dynamical_ellipticity
-    )
+        key, normal0[member_orbit], np.linalg.norm(ecc0, axis=-1)[member_orbit], s0,
+        precession_rate, dynamical_ellipticity,
+    )  # fmt: skip
     sign = 1.0 if end > 0 else -1.0
-    tableau = lawson_matrices(terms.linear, sign * h)
+    tableau = secular_tableau(sign * h, samples)
     gamma = np.ascontiguousarray(COMPOSITIONS[8])
     keep = np.array([j, P + j], dtype=np.int64)
     total = (t.size - 1) * per
     block = max(per, (BLOCK_STEPS // per) * per)
-    runs = len(models)
     out = np.full((runs, t.size), np.nan)
     left = np.full(runs, np.nan)
     arrays = terms.arrays()
-    for m in range(runs):
-        state = np.ascontiguousarray(w0[m])
-        s = s0.copy()
-        out[m, 0] = np.arctan2(np.linalg.norm(np.cross(s, normal0[m])), s @ normal0[m])
+    alpha_sun = np.array([m.alpha_sun for m in models])
+    beta = np.array([m.beta for m in models])
+    for k in range(len(orbits)):
+        members = np.flatnonzero(member_orbit == k)
+        state = np.ascontiguousarray(w0[k])
+        s = np.ascontiguousarray(s0[members])
+        rows = np.full((members.size, t.size), np.nan)
+        rows[:, 0] = np.arctan2(
+            np.linalg.norm(np.cross(s, normal0[k]), axis=-1), np.sum(s * normal0[k], axis=-1)
+        )
         done = 0
         while done < total:
             n = min(block, total - done)
-            w = np.empty((n + 1, 2), dtype=complex)
+            w = np.empty((n * samples + 1, 2), dtype=complex)
             dw = np.empty_like(w)
             extreme = np.zeros(2 * P)
             integrate(state, n, sign * h, *tableau, *arrays, terms.linear, keep, w, dw, extreme)
@@ -439,14 +474,14 @@ def member_obliquities(
             e = np.sqrt(np.clip(1.0 - root * root, 0.0, 1.0))
             cos_i = 1.0 - extreme[P:] / (2.0 * model.Lambda * np.clip(root, 1e-3, None))
             if np.any(e > E_MAX) or np.any(np.arccos(np.clip(cos_i, -1.0, 1.0)) > I_MAX):
-                left[m] = t[done // per]
+                left[members] = t[done // per]
                 break
-            model_m = models[m]
             _spin_block(
-                w, dw, sign * h, n, lam, model.rotation, s, model_m.alpha_sun, model_m.beta, gamma,
-                substeps, per, done // per + 1, out[m],
+                w, dw, sign * h / samples, n * samples, lam, model.rotation, s, alpha_sun[members],
+                beta[members], gamma, substeps, per * samples, done // per + 1, rows,
             )  # fmt: skip
             done += n
             if on_block is not None:
                 on_block(n * h)
-    return MemberRun(t, out, left, float(h), float(h / substeps))
+        out[members] = rows
+    return MemberRun(t, out, left, float(h), float(h / samples / substeps))

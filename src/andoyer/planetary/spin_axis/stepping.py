@@ -22,10 +22,12 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
-from andoyer._jit import jit
+from andoyer._jit import jit, jitable
 from andoyer.compositions import COMPOSITIONS, turn_about
+from andoyer.planetary.orbits.secular import poincare_normal
+from andoyer.planetary.orbits.secular_flow import hermite_basis
 
-__all__ = ["rotate_stages", "stage_times"]
+__all__ = ["rotate_on_samples", "rotate_stages", "stage_rate", "stage_times"]
 
 Array = NDArray[np.float64]
 
@@ -61,10 +63,47 @@ def stage_times(starts: Array, steps: Array, order: int) -> tuple[Array, Array]:
     return mid.ravel(), (steps[:, None] * gamma[None, :]).ravel()
 
 
+@jitable
+def stage_rate(parameters, m, t, f):
+    """``α`` of run ``m`` at time ``t``: ``α_⊙ (1 + W T_d t)(1 + (Ḣ/H) t) [f + β (1 + 2N T_d t)]``.
+
+    :meth:`~andoyer.planetary.spin_axis.SpinAxisModel.rate` from the run's five parameters (rows
+    ``α_⊙, β, W T_d, 2N T_d, Ḣ/H`` of ``parameters``, shape (5, M)) and the orbit's
+    ``f = (1 − e²)^{−3/2}``; for the compiled kernels (and floats).
+
+    Examples
+    --------
+    >>> parameters = np.array([[2.0], [0.5], [0.0], [0.0], [0.0]])
+    >>> float(stage_rate(parameters, 0, 100.0, 1.0))  # 2 (1 + 0.5)
+    3.0
+    """
+    factor = (1 + parameters[2, m] * t) * (1 + parameters[4, m] * t)
+    return parameters[0, m] * factor * (f + parameters[1, m] * (1 + parameters[3, m] * t))
+
+
+@jitable
+def _close_step(sx, sy, sz, out, j):
+    """Renormalise the runs' axes at the end of step ``j`` and store them in ``out[:, j]``."""
+    for m in range(sx.size):
+        scale = 1.0 / np.sqrt(sx[m] * sx[m] + sy[m] * sy[m] + sz[m] * sz[m])
+        sx[m] *= scale
+        sy[m] *= scale
+        sz[m] *= scale
+        out[m, j, 0] = sx[m]
+        out[m, j, 1] = sy[m]
+        out[m, j, 2] = sz[m]
+
+
 @jit
 def rotate_stages(
-    s0: Array, normals: Array, times: Array, orbit_factor: Array, parameters: Array, durations: Array,
-    stages: int, out: Array,
+    s0: Array,
+    normals: Array,
+    times: Array,
+    orbit_factor: Array,
+    parameters: Array,
+    durations: Array,
+    stages: int,
+    out: Array,
 ) -> None:
     """Apply the exact frozen-orbit rotations stage by stage; store ``s`` after every step.
 
@@ -122,16 +161,73 @@ def rotate_stages(
         h = durations[k]
         for m in range(runs):
             f = orbit_factor[k, 0] if shared else orbit_factor[k, m]
-            factor = (1 + parameters[2, m] * t) * (1 + parameters[4, m] * t)
-            alpha = parameters[0, m] * factor * (f + parameters[1, m] * (1 + parameters[3, m] * t))
+            alpha = stage_rate(parameters, m, t, f)
             sx[m], sy[m], sz[m] = turn_about(sx[m], sy[m], sz[m], nx, ny, nz, -alpha * h)
         if k % stages == stages - 1:
-            j = k // stages
+            _close_step(sx, sy, sz, out, k // stages)
+
+
+@jit
+def rotate_on_samples(
+    s0: Array, starts: Array, sizes: Array, gamma: Array, w: Array, dw: Array, spacing: float, cx: int,
+    cy: int, Lambda: float, rotation: Array, parameters: Array, out: Array,
+) -> None:  # fmt: skip
+    """:func:`rotate_stages` on a secular orbit's samples: each stage's normal and ``f(e)`` computed here.
+
+    The orbit is the planet's Poincaré ``x, y`` (columns ``cx, cy`` of ``w``) and their rates
+    ``dw``, every ``spacing`` years (signed) from J2000 (:class:`~andoyer.planetary.orbits.SecularOrbit`'s
+    samples); at a stage's midpoint ``t`` the cubic Hermite interpolant between the samples
+    around ``t`` gives ``x, y``, :func:`~andoyer.planetary.orbits.secular.poincare_normal` the
+    normal and ``√(1−e²)``, so ``f = (1 − e²)^{−3/2} = (√(1−e²))^{−3}`` — what
+    ``SecularOrbit.normal_and_eccentricity`` gives, without the arrays of every stage.
+
+    Parameters
+    ----------
+    s0 : ndarray, shape (M, 3)
+    starts, sizes : ndarray, shape (K,)
+        The steps' start times and signed sizes.
+    gamma : ndarray, shape (S,)
+        The composition's coefficients (:data:`~andoyer.compositions.COMPOSITIONS`).
+    w, dw : ndarray of complex, shape (N, K')
+    spacing : float
+    cx, cy : int
+    Lambda : float
+    rotation : ndarray, shape (3, 3)
+    parameters : ndarray, shape (5, M)
+    out : ndarray, shape (M, K, 3)
+        Filled with the axes at the end of each step.
+    """
+    runs = s0.shape[0]
+    if parameters.shape[0] != 5 or parameters.shape[1] != runs or sizes.shape[0] != starts.shape[0]:
+        raise ValueError("expected parameters of shape (5, M) and one size per step")
+    last = w.shape[0] - 2
+    sx = s0[:, 0].copy()
+    sy = s0[:, 1].copy()
+    sz = s0[:, 2].copy()
+    for k in range(starts.size):
+        before = 0.0
+        for g in range(gamma.size):
+            t = starts[k] + sizes[k] * (before + 0.5 * gamma[g])
+            before += gamma[g]
+            position = t / spacing
+            i = min(max(int(np.floor(position)), 0), last)
+            h00, h10, h01, h11 = hermite_basis(position - i)
+            x = (
+                h00 * w[i, cx]
+                + h10 * spacing * dw[i, cx]
+                + h01 * w[i + 1, cx]
+                + h11 * spacing * dw[i + 1, cx]
+            )
+            y = (
+                h00 * w[i, cy]
+                + h10 * spacing * dw[i, cy]
+                + h01 * w[i + 1, cy]
+                + h11 * spacing * dw[i + 1, cy]
+            )
+            nx, ny, nz, root = poincare_normal(x, y, Lambda, rotation)
+            f = 1.0 / (root * root * root)
+            h = sizes[k] * gamma[g]
             for m in range(runs):
-                scale = 1.0 / np.sqrt(sx[m] * sx[m] + sy[m] * sy[m] + sz[m] * sz[m])
-                sx[m] *= scale
-                sy[m] *= scale
-                sz[m] *= scale
-                out[m, j, 0] = sx[m]
-                out[m, j, 1] = sy[m]
-                out[m, j, 2] = sz[m]
+                alpha = stage_rate(parameters, m, t, f)
+                sx[m], sy[m], sz[m] = turn_about(sx[m], sy[m], sz[m], nx, ny, nz, -alpha * h)
+        _close_step(sx, sy, sz, out, k)
