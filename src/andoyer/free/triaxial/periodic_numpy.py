@@ -24,9 +24,9 @@ momentum's frame, ``(s n, c) = Q ⊗ (s e_z, c) ⊗ Q*`` and ``R(q)ᵀ n = R(a)�
 
 the momentum the third row of ``R(a)`` times ``G = |m|``: four periodic components give
 both (:func:`andoyer.free.triaxial.periodic.body_momentum`,
-:func:`andoyer.free.triaxial.periodic.turned`).  :func:`build` samples ``M`` (and ``A``) once per
-body through the existing kernels, run with the frequencies replaced by ``ν = 1, f₀ = 0``
-(so that their time is the phase) and ``g = 0``, takes ``n = V ⊗ U*`` from the anchor,
+:func:`andoyer.free.triaxial.periodic.turned`).  :func:`build` samples ``M`` (or ``a``: the anchor
+turned by ``Q*``) once per body through the existing kernels, run with the frequencies replaced by
+``ν = 1, f₀ = 0`` (so that their time is the phase) and ``g = 0``, takes ``n = V ⊗ U*`` from the anchor,
 and fits ``M`` (the momentum alone) or ``a`` (with the attitude) by a polynomial of degree
 :data:`DEGREE` in each of ``n`` equal
 pieces of the period (values at Chebyshev nodes, then Chebyshev coefficients, then monomial
