@@ -26,7 +26,9 @@ with the cheapest peer tolerance that is at least as accurate.
 
 Run: ``python3 benchmarks/bench_precession.py [--years 1000] [--peer-years 2] [--steps 0.37,...]``
 ``[--order4-steps 3.7,6.7] [--rtols 1e-4,1e-5]`` (``--rtols``: rows of
-``propagate(..., method="splitting", rtol=R, order=2)``, the step chosen by step doubling);
+``propagate(..., method="splitting", rtol=R, order=2)``, the step chosen by the probe's error
+model, :mod:`andoyer.integrate.splitting.probe`; ``benchmarks/bench_splitting_rtol.py`` checks
+that model against heyoka at many output times);
 ``--growth`` prints only the step-doubling distance ``|M_h − M_{h/2}| / |M|`` from one lunar
 month to 1000 years at orders 2 and 4 (the shape of the splitting's error in time)
 (pins numpy to one thread; CPU time of this process).
@@ -106,7 +108,7 @@ def splitting_h(years, step_days, order=2):
 
 
 def controlled_h(years, rtol, order=2):
-    """The public splitting path, its step chosen from ``rtol`` (step doubling); its step and estimate too."""
+    """The public splitting path, its step chosen from ``rtol`` (the probe); its step and estimate too."""
     out = propagate(MODEL, START, [years * JULIAN_YEAR], method="splitting", rtol=rtol, order=order)
     return float(node(out.m_reference[0])), out.step / SIDEREAL_DAY, out.error_estimate
 

@@ -62,6 +62,17 @@ def test_cli_propagate_heavy_top_splitting_agrees_with_reference(heavy_top):
         assert np.ptp(e) <= 1e-9
 
 
+def test_cli_propagate_splitting_without_step_chooses_from_the_default_rtol(heavy_top, cli):
+    ref = heavy_top("--to", "state")
+    split = heavy_top("--to", "state", "--method", "splitting")
+    assert np.abs(split[:, 6:] - ref[:, 6:]).max() <= 1e-3 * np.linalg.norm(ref[0, 6:])
+    argv = ("--moments", "1", "1.2", "1.5", "--values", *START, "--range", "0", "1", "3")
+    code, _, err = cli(*HEAVY_TOP, *argv, "--method", "splitting")
+    assert code == 0
+    assert "estimated relative error" in err
+    assert "(rtol 0.001)" in err
+
+
 def test_cli_propagate_heavy_top_conserves_the_vertical_momentum(heavy_top):
     """Gravity along s3 exerts no torque about s3: Andoyer's H is an integral."""
     table = heavy_top("--to", "andoyer", "--method", "splitting", "--step", "0.1")
@@ -139,7 +150,7 @@ BAD_ARGS = {
         [*HEAVY_TOP, "--method", "exact"],
         "expected --method reference, splitting or secular for --model heavy-top, got exact",
     ),
-    "splitting without step": ([*HEAVY_TOP, "--method", "splitting"], "expected a positive --step"),
+    "bad rtol": ([*HEAVY_TOP, "--method", "splitting", "--rtol", "0.5"], "expected an --rtol"),
     "negative step": ([*HEAVY_TOP, "--method", "splitting", "--step", "-1"], "expected a positive --step"),
     "step with reference": ([*HEAVY_TOP, "--step", "0.1"], "expected --step only with --method splitting"),
     "order with exact": (["--order", "4"], "expected --order only with --method splitting"),

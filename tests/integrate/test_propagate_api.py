@@ -141,7 +141,8 @@ BAD_CALLS = {
         "expected options of method='reference' among t0, rtol, atol, integrator, got step",
     ),
     "secular order": ({"method": "secular", "order": 4}, "among t0, rtol, got order"),
-    "missing step": ({"method": "splitting"}, "expected a step for method='splitting'"),
+    "bad rtol": ({"method": "splitting", "rtol": -1.0}, "expected a positive finite rtol"),
+    "bad order with rtol": ({"method": "splitting", "rtol": 1e-6, "order": 3}, "expected a splitting order"),
     "bad step": ({"method": "splitting", "step": -1.0}, "expected a positive finite step"),
     "bad order": (
         {"method": "splitting", "step": 0.1, "order": 3},

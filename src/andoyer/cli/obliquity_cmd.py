@@ -35,9 +35,10 @@ system (Zeebe & Lourens 2022; 0 = none). Ranges (andoyer.planetary.parameters): 
 (A + B >= C), P > 0 up to the rate of H = 1/2, 0 <= TD <= 1.2. DT must be below half the period
 of the fastest angle printed (the precession, or the perihelion from the equinox, where e is at
 least a tenth of its largest value), else the table would alias it: such a request is refused
-(at once when the J2000 rates already alias it, otherwise after the run). Orbit sources: vondrak (the Earth's ecliptic of
-Vondrak et al. 2011, +-200 kyr, no eccentricity), nbody (+-50 Myr), secular (the long secular model,
-+-1 Gyr), laplace-lagrange (the linear theory), or a table file PATH.
+(at once when the J2000 rates already alias it, otherwise after the run). Orbit sources: vondrak
+(the Earth's ecliptic of Vondrak et al. 2011, +-200 kyr, no eccentricity), nbody (+-50 Myr),
+secular (the long secular model, +-1 Gyr), laplace-lagrange (the linear theory), or a table file
+PATH.
 Tides: TD defaults to the present-day dissipation, 1, for the Earth (the real Earth dissipates:
 over 5 Myr on the nbody orbit the obliquity is 0.21 deg from La2004 with it, 1.73 deg with 0) and
 to 0 for bodies without a measured dissipation (Mars); --tidal-dissipation 0 leaves the tides out.
@@ -272,7 +273,7 @@ def _check_sampling_before(orbit, body, args: argparse.Namespace, tides, drift: 
     e0 = float(np.linalg.norm(orbit.eccentricity_vector(0.0))) if orbit.has_eccentricity else None
     rate = abs(model.precession_rate(float(np.arctan2(np.linalg.norm(np.cross(s0, n0)), s0 @ n0)), e0))
     if orbit.has_eccentricity:  # the perihelion from the equinox turns at about ψ̇ + ϖ̇
-        earlier = max(orbit.span[0], -1000.0)
+        earlier = max(orbit.span[0], -10.0)  # near J2000: an N-body orbit integrates nothing more for it
         ev = orbit.eccentricity_vector(np.array([earlier, 0.0]))
         turned = np.arctan2(np.cross(ev[0], ev[1]) @ n0, ev[0] @ ev[1])
         rate += abs(turned / ARCSEC / -earlier) if earlier < 0 else 0.0

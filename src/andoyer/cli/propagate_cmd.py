@@ -20,7 +20,7 @@ from andoyer.cli.named_models import MODELS, add_model_arguments, model_from_arg
 from andoyer.cli.output import CliError, add_output_argument, atomic_output, format_rows
 from andoyer.free_rotation import FreeRotation
 from andoyer.integrate.propagation import propagate
-from andoyer.integrate.splitting import LARGEST_RTOL, SMALLEST_RTOL
+from andoyer.integrate.splitting import DEFAULT_RTOL, LARGEST_RTOL, SMALLEST_RTOL
 
 EXAMPLES = """examples:
   andoyer propagate --body eros --from andoyer --values 0.1 0.2 0.3 0.99 1.0 0.5 --times 0 10 100
@@ -32,8 +32,9 @@ EXAMPLES = """examples:
 Times are in the units of the angular momentum and moments (e.g. seconds for SI values); the
 solar-system models (gravity-gradient-sun, earth-lunisolar, mars-solar) use seconds, and the
 states are given at t = 0. --method: exact (closed-form flow, --model free only; the default
-there), reference (DOP853; the default otherwise), splitting (needs --step), secular (mean
-states of a fast rotator: gravity-gradient and precessing-frame models).
+there), reference (DOP853; the default otherwise), splitting (--step, or the order and step
+chosen from --rtol, default 1e-3), secular (mean states of a fast rotator: gravity-gradient
+and precessing-frame models).
 """
 
 METHODS = ("exact", "reference", "splitting", "secular")
@@ -58,8 +59,8 @@ def register(commands: argparse._SubParsersAction) -> None:
         "--rtol",
         type=float,
         metavar="R",
-        help="splitting: relative error of the momentum wanted, the step chosen from it "
-        "(instead of --step; the estimate is printed on stderr)",
+        help="splitting: relative error of the momentum wanted, the order and step chosen from it "
+        "(instead of --step; default 1e-3; the estimate is printed on stderr)",
     )
     parser.add_argument(
         "--from",
@@ -101,9 +102,9 @@ def run(args: argparse.Namespace) -> int:
         out = FreeRotation(body).propagate(state.reshape(1, -1), times[:, None])
     else:
         out = propagate(model, state.reshape(1, -1), times[:, None], method=method, **options)
-        if "rtol" in options:
-            print(f"andoyer propagate: splitting step {out.step:.6g}, estimated relative error "
-                  f"{out.error_estimate:.3g} (rtol {options['rtol']:.3g})", file=sys.stderr)
+        if method == "splitting" and "step" not in options:
+            print(f"andoyer propagate: splitting order {out.order}, step {out.step:.6g}, estimated "
+                  f"relative error {out.error_estimate:.3g} (rtol {options['rtol']:.3g})", file=sys.stderr)
     if target is CHARTS["serret"]:
         # Serret's t0 is a time: referred to the rows' own times with the start (t = 0) as the
         # epoch of the period branch, so the elements stay constant down the table.
@@ -136,13 +137,16 @@ def _method_options(args: argparse.Namespace, method: str) -> dict[str, float]:
             msg = f"expected {', '.join(given)} only with --method splitting, got --method {method}"
             raise CliError(msg)
         return {}
-    if args.rtol is not None:
-        if not (np.isfinite(args.rtol) and SMALLEST_RTOL <= args.rtol <= LARGEST_RTOL):
+    if args.rtol is not None or args.step is None:
+        rtol = DEFAULT_RTOL if args.rtol is None else args.rtol
+        if not (np.isfinite(rtol) and SMALLEST_RTOL <= rtol <= LARGEST_RTOL):
             msg = f"expected an --rtol from {SMALLEST_RTOL:g} to {LARGEST_RTOL:g}, got {args.rtol!r}"
             raise CliError(msg)
-        options = {"rtol": args.rtol, "order": args.order or 4}
+        options: dict[str, float] = {"rtol": rtol}
+        if args.order is not None:
+            options["order"] = args.order
         return options if args.step is None else {**options, "step": args.step}
-    if args.step is None or not (np.isfinite(args.step) and args.step > 0):
+    if not (np.isfinite(args.step) and args.step > 0):
         msg = f"expected a positive --step (or an --rtol) for --method splitting, got {args.step!r}"
         raise CliError(msg)
     return {"step": args.step, "order": args.order or 4}

@@ -11,7 +11,9 @@ Three integrators, one call:
 * ``"splitting"`` (options ``step`` or ``rtol``, ``order``, ``t0``): the
   symplectic splitting ``K = T + V + F`` of exact free flow, momentum kicks
   and frame rotations (:func:`~andoyer.integrate.splitting.integrate_splitting`);
-  Hamiltonian attitude-only models and precessing frames.
+  Hamiltonian attitude-only models and precessing frames. Without a step, the order
+  and step come from ``rtol`` (default ``1e-3``) through a documented error model
+  (:mod:`andoyer.integrate.splitting.probe`).
 * ``"secular"`` (options ``t0``, ``rtol``): the averaged model of a fast
   rotator, the mean angular momentum ``M̄`` (Andoyer ``h``, ``H``) under
   ``⟨ΔH⟩`` (:func:`~andoyer.integrate.secular.integrate_secular`); gravity
@@ -41,7 +43,7 @@ from andoyer.state import State
 
 __all__ = ["METHODS", "propagate"]
 
-#: The options each method accepts (``step`` is required by ``"splitting"``).
+#: The options each method accepts.
 METHODS: dict[str, tuple[str, ...]] = {
     "reference": ("t0", "rtol", "atol", "integrator"),
     "splitting": ("step", "order", "t0", "rtol"),
@@ -68,9 +70,10 @@ def propagate(model: Model, state: State, t: ArrayLike, method: str = "reference
         ``"reference"`` (DOP853, defaults 1e-12, 1e-14) and ``integrator``
         (``"dop853"``, default, or ``"heyoka"``: ``rtol`` is then heyoka's
         tolerance, default machine epsilon, and ``atol`` is not taken); ``step`` (> 0),
-        ``order`` (2, 4 or 6, default 4) and ``rtol`` for ``"splitting"`` (a step, or an
-        ``rtol`` from which the step is chosen: the result is then a
-        :class:`~andoyer.integrate.splitting.SplittingState` with its ``error_estimate``);
+        ``order`` (2, 4 or 6) and ``rtol`` for ``"splitting"`` (a step, order 4 by default;
+        or an ``rtol``, default 1e-3, from which the order and step are chosen: the result
+        is then a :class:`~andoyer.integrate.splitting.SplittingState` with its
+        ``error_estimate``, a bound of the relative error of ``M``);
         ``rtol`` (default 1e-12) for ``"secular"``.
 
     Returns
@@ -80,9 +83,8 @@ def propagate(model: Model, state: State, t: ArrayLike, method: str = "reference
     Raises
     ------
     ValueError
-        For an unknown method, an option the method does not take, a missing
-        ``step``, or a model the method cannot integrate (non-Hamiltonian or
-        momentum-dependent terms other than precessing frames for
+        For an unknown method, an option the method does not take, or a model the
+        method cannot integrate (non-Hamiltonian or momentum-dependent terms other than precessing frames for
         ``"splitting"``; anything but gravity gradients on Kepler orbits and
         precessing frames for ``"secular"``); for no output time; for times
         whose spin phase ``|ω (t − t0)|`` (``ω = |m|/min(I)``) reaches ``2⁵²`` rad
@@ -107,10 +109,9 @@ def propagate(model: Model, state: State, t: ArrayLike, method: str = "reference
     >>> split = propagate(model, start, [0.0, 1.0, 2.0], method="splitting", step=0.1)
     >>> ref.shape, bool(np.abs(split.m_body - ref.m_body).max() < 1e-5)
     ((3,), True)
-    >>> propagate(model, start, 1.0, method="splitting")
-    Traceback (most recent call last):
-    ...
-    ValueError: expected a step for method='splitting' (e.g. step=0.01) or an rtol, got neither
+    >>> chosen = propagate(model, start, [0.0, 1.0, 2.0], method="splitting", rtol=1e-6)
+    >>> bool(np.abs(chosen.m_body - ref.m_body).max() < 1e-6 * np.linalg.norm(start.m_body))
+    True
     """
     if method not in METHODS:
         msg = f"expected method 'reference', 'splitting' or 'secular', got {method!r}"
@@ -130,9 +131,6 @@ def propagate(model: Model, state: State, t: ArrayLike, method: str = "reference
         integrator = options.pop("integrator", "dop853")
         return integrate_reference(model, state, t, **options, method=integrator)
     if method == "splitting":
-        if "step" not in options and "rtol" not in options:
-            msg = "expected a step for method='splitting' (e.g. step=0.01) or an rtol, got neither"
-            raise ValueError(msg)
         times = np.append(np.asarray(t, dtype=float).ravel(), float(options.get("t0", 0.0)))
         span = float(np.max(times) - np.min(times)) if np.all(np.isfinite(times)) else 0.0
         step = options.get("step")
