@@ -169,7 +169,7 @@ def fused_multiply_add(a, b, c):  # noqa: ARG001 - the compiled overload uses th
     raise TypeError(msg)
 
 
-def jit(function=None, *, inline=False):
+def jit(function=None, *, inline=False, contract=False):
     """``numba.njit(cache=True)`` when numba is installed, else the function itself.
 
     Parameters
@@ -180,6 +180,11 @@ def jit(function=None, *, inline=False):
         Inline the kernel into its compiled callers (numba's ``inline="always"``): for
         small kernels in hot loops, where the call boundary keeps LLVM from interleaving
         the caller's work with the kernel's.
+    contract : bool, optional
+        Let LLVM fuse a product and the sum that uses it into one multiply-add (numba's
+        ``fastmath={"contract"}``, nothing else of fast-math: one rounding instead of two,
+        no reordering).  The compiled values then differ from the same text run on numpy
+        arrays by rounding (a few ulps), which a kernel that asks for it must allow.
 
     Examples
     --------
@@ -191,10 +196,12 @@ def jit(function=None, *, inline=False):
     1.3110287771461
     """
     if function is None:
-        return lambda f: jit(f, inline=inline)
+        return lambda f: jit(f, inline=inline, contract=contract)
     if not NUMBA:  # pragma: no cover - depends on the environment
         return function
     options = {"inline": "always"} if inline else {}
+    if contract:
+        options["fastmath"] = {"contract"}
     return _load_numba().njit(cache=True, error_model="numpy", **options)(function)
 
 

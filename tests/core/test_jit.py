@@ -149,3 +149,25 @@ def test_every_is_all_on_arrays_and_the_condition_on_scalars():
     assert not every(np.array([True, False]))
     assert _all_true(True)
     assert not _all_true(False)
+
+
+def square_minus(x, c):
+    """``x x − c``: a product and the sum that uses it."""
+    return x * x - c
+
+
+def square_minus_fused(x, c):
+    """The same text, compiled with ``contract`` (a function of its own: numba caches per function)."""
+    return x * x - c
+
+
+def test_jit_contract_fuses_a_product_and_its_sum():
+    # x = 1 + 2⁻³⁰: x² = 1 + 2⁻²⁹ + 2⁻⁶⁰ exactly; rounded once (fused) x² − (1 + 2⁻²⁹) is 2⁻⁶⁰,
+    # rounded twice the 2⁻⁶⁰ is lost; without numba both run as Python and round twice
+    from fractions import Fraction
+
+    x, c = 1.0 + 2.0**-30, 1.0 + 2.0**-29
+    exact = float(Fraction(x) * Fraction(x) - Fraction(c))
+    assert exact == 2.0**-60
+    assert jit(square_minus)(x, c) == 0.0
+    assert jit(contract=True)(square_minus_fused)(x, c) == (exact if NUMBA else 0.0)

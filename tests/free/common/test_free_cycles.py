@@ -5,7 +5,7 @@ from fractions import Fraction
 import mpmath as mp
 import numpy as np
 
-from andoyer.free.common.cycles import sincos_cycles
+from andoyer.free.common.cycles import sincos_cycles, sincos_half_cycles
 from andoyer.free.common.cycles_numpy import cycles, frequency
 
 
@@ -43,3 +43,15 @@ def test_sincos_cycles_matches_mpmath():
         ec = max(abs(float(mp.cos(2 * mp.pi * mp.mpf(x))) - v) for x, v in zip(f, c, strict=True))
     assert es <= 4 * np.finfo(float).eps
     assert ec <= 4 * np.finfo(float).eps
+
+
+def test_sincos_half_cycles_matches_mpmath():
+    # the half angle alone (the periodic attitude's sin, cos(πg)); no doubling, so two ulps
+    f = np.concatenate([np.linspace(-0.5, 0.5, 2001), [0.25, -0.25, 0.125, 0.5, -0.5, 0.0]])
+    s, c = sincos_half_cycles(f)
+    with mp.workdps(30):
+        es = max(abs(float(mp.sin(mp.pi * mp.mpf(x))) - v) for x, v in zip(f, s, strict=True))
+        ec = max(abs(float(mp.cos(mp.pi * mp.mpf(x))) - v) for x, v in zip(f, c, strict=True))
+    assert es <= 2 * np.finfo(float).eps
+    assert ec <= 2 * np.finfo(float).eps
+    assert np.array_equal(sincos_cycles(f)[0], 2.0 * s * c)  # the doubling of the same half angle

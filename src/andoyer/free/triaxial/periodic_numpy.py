@@ -15,19 +15,31 @@ the angular momentum in the reference frame (:func:`andoyer.free.common.polhode_
 
 .. math:: q(t) = (\sin(\pi g)\,n,\ \cos(\pi g)) \otimes A(f),
 
-one rotation about ``n`` after ``A``.  :func:`build` samples ``M`` (and ``A``) once per
-body through the existing kernels, run with the frequencies replaced by ``ν = 1, f₀ = 0``
-(so that their time is the phase) and ``g = 0``, takes ``n = V ⊗ U*`` from the anchor,
-and fits a polynomial of degree :data:`DEGREE` in each of ``n`` equal
+one rotation about ``n`` after ``A``.  With any unit quaternion ``Q`` that takes ``e_z`` to
+``n`` (:func:`_frame`: the shortest arc) and ``a = Q* ⊗ A``, the attitude relative to the
+momentum's frame, ``(s n, c) = Q ⊗ (s e_z, c) ⊗ Q*`` and ``R(q)ᵀ n = R(a)ᵀ e_z``, so
+
+.. math:: q(t) = Q \otimes (\sin(\pi g)\,e_z,\ \cos(\pi g)) \otimes a(f), \qquad
+          m(t) = G\,R(a(f))^{\mathsf T} e_z,
+
+the momentum the third row of ``R(a)`` times ``G = |m|``: four periodic components give
+both (:func:`andoyer.free.triaxial.periodic.body_momentum`,
+:func:`andoyer.free.triaxial.periodic.turned`).  :func:`build` samples ``M`` (or ``a``: the anchor
+turned by ``Q*``) once per body through the existing kernels, run with the frequencies replaced by
+``ν = 1, f₀ = 0`` (so that their time is the phase) and ``g = 0``, takes ``n = V ⊗ U*`` from the anchor,
+and fits ``M`` (the momentum alone) or ``a`` (with the attitude) by a polynomial of degree
+:data:`DEGREE` in each of ``n`` equal
 pieces of the period (values at Chebyshev nodes, then Chebyshev coefficients, then monomial
 ones).  ``n`` starts from the nome (the poles of ``sn, cn, dn`` lie ``K'/(4K)`` cycles
 off the real axis) and doubles until the pieces agree with the kernels at the ends and
 between the nodes of every piece to 32 ulps, or until doubling stops helping (the kernels'
-own rounding, up to ~40 ulps near the separatrix); a body that would need more than
+own rounding, up to ~40 ulps near the separatrix) — with the attitude, ``a`` and the momentum
+``G R(a)ᵀ e_z`` derived from the pieces, relative to ``G``; a body that would need more than
 :data:`MAX_PIECES` keeps the direct evaluation.
 
-Per epoch the evaluation then costs the two reduced phases, ``3`` (momentum) or ``7``
-(with ``A``) polynomials, one ``sincos`` and one product
+Per epoch the evaluation then costs the reduced phase ``f``, ``3`` polynomials (the momentum
+alone) or ``4`` (``a``: the momentum from it), and with the attitude the phase ``g``, one
+``sincos`` and one product
 (:func:`andoyer.free.triaxial.periodic_compiled.fill`, compiled, and :func:`fill_numpy`,
 vectorised; both call the kernels of :mod:`andoyer.free.triaxial.periodic`).  The
 compiled fill evaluates the epochs that fall on one piece together, in blocks sorted by
@@ -47,11 +59,12 @@ from andoyer._jit import NUMBA
 from andoyer._quaternion import product
 from andoyer.free.common import constants as _const
 from andoyer.free.common.blocks import _CHUNK, Group, evaluate_blocks
-from andoyer.free.common.cycles import sincos_cycles
+from andoyer.free.common.cycles import sincos_half_cycles
 from andoyer.free.common.cycles_numpy import cycles, frequency
+from andoyer.free.common.polhode import shortest_arc
 from andoyer.free.triaxial import evaluate_compiled as _ceval
-from andoyer.free.triaxial.columns import FRAC0, NU, NU_PSI, PSI0
-from andoyer.free.triaxial.periodic import DEGREE, horner, locate, turn_about
+from andoyer.free.triaxial.columns import FRAC0, NU, NU_PSI, PSI0, QUAT_U, QUAT_V
+from andoyer.free.triaxial.periodic import DEGREE, body_momentum, horner, locate, turned
 from andoyer.free.triaxial.periodic_compiled import fill
 from andoyer.free.triaxial.setup_compiled import as_triaxial
 
@@ -88,17 +101,21 @@ class Periodic(NamedTuple):
 
     Attributes
     ----------
-    params : ndarray, shape (N, 11)
+    params : ndarray, shape (N, 13)
         Per state: ``ν`` (hi, lo) and ``f₀``, ``ν_ψ`` (hi, lo) and ``g₀`` (frequencies
         in cycles per unscaled time), the number of pieces ``n`` and the first row of its
-        pieces in ``coef`` (as floats), then the unit vector ``n`` of the angular momentum
-        in the reference frame (zeros without the attitude).
-    coef : ndarray, shape (rows, DEGREE + 1, 4 or 8)
-        Monomial coefficients of ``M`` (unscaled momentum, and a component of zeros), then ``A``.
+        pieces in ``coef`` (as floats), then the momentum's frame ``Q`` (scalar last) and
+        ``G = |m|`` (unscaled; zeros without the attitude).
+    coef : ndarray, shape (rows, DEGREE + 1, 4)
+        Monomial coefficients of ``a`` (with the attitude), else of ``M`` (unscaled
+        momentum, and a component of zeros).
+    attitude : bool
+        Whether the pieces hold ``a`` (and the attitude can be evaluated).
     """
 
     params: np.ndarray
     coef: np.ndarray
+    attitude: bool
 
 
 def _first_pieces(const):
@@ -114,27 +131,37 @@ def _first_pieces(const):
     return np.exp2(np.ceil(np.log2(want)))
 
 
-def _node_group(group, g0):
-    """The group's kernel with ``ν = 1, f₀ = 0`` and the secular phase held at ``g₀``."""
+def _node_group(group, frame_q):
+    """The group's kernel with ``ν = 1, f₀ = 0`` and the secular phase held at 0.
+
+    With ``frame_q`` (``Q`` of :func:`_frame`, shape (N, 4)) the anchor ``U, V`` becomes
+    ``Q* ⊗ U, Q* ⊗ V``: the attitude, linear in them, is then ``a = Q* ⊗ A`` itself.
+    """
     const = group.const
     if group.kernel is _ceval.evaluate:
         table = np.array(const, copy=True)
         table[:, NU : NU + 4] = (1.0, 0.0, 1.0, 0.0)  # hi, lo, hh, hl
         table[:, FRAC0] = 0.0
         table[:, NU_PSI : NU_PSI + 4] = 0.0
-        table[:, PSI0] = g0
+        table[:, PSI0] = 0.0
+        if frame_q is not None:
+            table[:, QUAT_U : QUAT_U + 4] = _relative(frame_q.T, table[:, QUAT_U : QUAT_U + 4])
+            table[:, QUAT_V : QUAT_V + 4] = _relative(frame_q.T, table[:, QUAT_V : QUAT_V + 4])
         const = table
     else:
         one = np.ones_like(const.frac0)
         const = const._replace(
-            nu=frequency(one), frac0=0.0 * one, nu_psi=frequency(0.0 * one), psi0=g0 * one
+            nu=frequency(one), frac0=0.0 * one, nu_psi=frequency(0.0 * one), psi0=0.0 * one
         )
+        if frame_q is not None:
+            const = const._replace(quat_u=_relative(frame_q.T, const.quat_u.T).T,
+                                   quat_v=_relative(frame_q.T, const.quat_v.T).T)
     size = group.members.size
     return Group(group.kernel, np.arange(size), const, np.zeros(size, dtype=np.int64), group.mshift)
 
 
-def _sample(group, sel, pieces, attitude):
-    """Values ``(M, A)`` of states ``sel`` at the nodes of ``pieces`` pieces (and checks).
+def _sample(node, sel, pieces, attitude):
+    """Values ``(M, a)`` of states ``sel`` at the nodes of ``pieces`` pieces (and checks).
 
     Returns the values at the nodes, shape ``(s, pieces, NODES, c)``, and at the check
     points, shape ``(s, pieces, len(_CHECK), c)``.
@@ -142,8 +169,7 @@ def _sample(group, sel, pieces, attitude):
     u = np.concatenate([_U, _CHECK])
     f = -0.5 + (np.arange(pieces)[:, None] + 0.5 * (u + 1.0)) / pieces
     f = np.broadcast_to(f.ravel(), (sel.size, f.size))
-    node = _node_group(group, 0.0)
-    node = Group(node.kernel, np.arange(sel.size), _rows_of(node.const, sel, group.kernel),
+    node = Group(node.kernel, np.arange(sel.size), _rows_of(node.const, sel, node.kernel),
                  node.tshift[sel], node.mshift[sel])
     m, q = evaluate_blocks([node], (sel.size, 1), f, attitude)
     comps = [m, np.zeros_like(m[..., :1])] + ([q] if attitude else [])  # momentum padded to four components
@@ -161,16 +187,20 @@ def _fit(values):
     return np.matmul(_TO_MONO, cheb)
 
 
-def _pieces_for(group, attitude):
+def _pieces_for(group, frame):
     """Coefficients per state of a triaxial group: list of arrays or None (too many pieces).
 
-    The number of pieces doubles until the pieces agree with the kernels to :data:`_TOL`
-    ulps, or until a doubling no longer helps (the truncation error falls by ``2^{DEGREE+1}``
-    per doubling, the kernels' own rounding does not): then the previous pieces are kept if
-    within :data:`_FLOOR`.
+    ``frame``: ``(Q, G)`` of :func:`_frame` to fit ``a`` (with the attitude), or None to fit
+    the momentum.  The number of pieces doubles until the pieces agree with the kernels to
+    :data:`_TOL` ulps (the components of ``a`` absolutely, the momentum relative to the
+    largest value of each component, or with the attitude the momentum derived from ``a``
+    relative to ``G``), or until a doubling no longer helps (the truncation error falls by
+    ``2^{DEGREE+1}`` per doubling, the kernels' own rounding does not): then the previous
+    pieces are kept if within :data:`_FLOOR`.
     """
-    const = as_triaxial(group.const) if group.kernel is _ceval.evaluate else group.const
+    const = _table_of(group)
     pieces = _first_pieces(const)
+    node = _node_group(group, None if frame is None else frame[0])
     size = group.members.size
     out = [None] * size
     prev = [None] * size  # (error, coefficients) at half the pieces
@@ -180,12 +210,21 @@ def _pieces_for(group, attitude):
         nxt = []
         for n in np.unique(pieces[todo]):
             sel = todo[pieces[todo] == n]
-            nodes, checks = _sample(group, sel, int(n), attitude)
-            coef = _fit(nodes)  # (s, n, NODES, c)
-            approx = np.matmul(_POWERS, coef)  # (s, n, len(_CHECK), c)
-            scale = np.max(np.abs(nodes), axis=(1, 2))  # (s, c)
-            scale[:, 3:] = 1.0  # quaternion components: absolute (and the padding)
-            err = np.max(np.abs(approx - checks) / scale[:, None, None], axis=(1, 2, 3))
+            nodes, checks = _sample(node, sel, int(n), frame is not None)
+            if frame is None:
+                coef = _fit(nodes[..., :4])  # (s, n, NODES, 4): the momentum and its padding
+                approx = np.matmul(_POWERS, coef)  # (s, n, len(_CHECK), 4)
+                scale = np.max(np.abs(nodes[..., :4]), axis=(1, 2))  # (s, 4)
+                scale[:, 3] = 1.0  # the padding
+                err = np.max(np.abs(approx - checks[..., :4]) / scale[:, None, None], axis=(1, 2, 3))
+            else:
+                g = frame[1][sel, None, None]
+                coef = _fit(nodes[..., 4:])  # a = Q* ⊗ A from the kernels (_node_group)
+                approx = np.matmul(_POWERS, coef)
+                want = checks[..., 4:]
+                mom = np.stack(body_momentum(g, *np.moveaxis(approx, -1, 0)), axis=-1)
+                err = np.maximum(np.max(np.abs(approx - want), axis=(1, 2, 3)),
+                                 np.max(np.abs(mom - checks[..., :3]), axis=(1, 2, 3)) / g[:, 0, 0])
             for j, s in enumerate(sel):
                 if err[j] <= _TOL * eps:
                     out[s] = coef[j]
@@ -200,15 +239,43 @@ def _pieces_for(group, attitude):
     return out, const
 
 
-def _axis(const, sel):
-    """Unit vector ``n = V ⊗ U*`` of the angular momentum in the reference frame, per state ``sel``.
+def _relative(q, attitude):
+    """``Q* ⊗ A`` of attitudes ``A`` (components on the last axis), ``Q`` components first."""
+    return np.stack(product(-q[0], -q[1], -q[2], q[3], *np.moveaxis(attitude, -1, 0)), axis=-1)
+
+
+def _table_of(group):
+    """The group's constants as :class:`~andoyer.free.triaxial.setup_numpy.Triaxial` (compiled or not)."""
+    return as_triaxial(group.const) if group.kernel is _ceval.evaluate else group.const
+
+
+def _axis(const):
+    """Unit vector ``n = V ⊗ U*`` of the angular momentum in the reference frame, shape (N, 3).
 
     From the attitude's anchor (:func:`andoyer.free.common.polhode_numpy.attitude_anchor`:
     ``U = Q₀ ⊗ P``, ``V = Q₀ ⊗ e_z ⊗ P``, so ``V ⊗ U* = Q₀ e_z Q₀*``, a pure unit quaternion).
     """
-    u = np.asarray(const.quat_u)[:, sel]
-    v = np.asarray(const.quat_v)[:, sel]
+    u = np.asarray(const.quat_u)
+    v = np.asarray(const.quat_v)
     return np.stack(product(*v, -u[0], -u[1], -u[2], u[3])[:3], axis=1)
+
+
+def _frame(group):
+    """The momentum's frame ``Q`` (shape (N, 4), ``R(Q) e_z = n``) and ``G = |m|`` (unscaled, shape (N,)).
+
+    ``Q`` is the shortest arc from ``e_z`` to ``n`` (the inverse of
+    :func:`andoyer.free.common.polhode.shortest_arc` of ``n``), or where ``n_z < 0``, that
+    from ``−e_z`` after the half turn ``(1, 0, 0, 0)`` about ``x``: regular for every ``n``.
+    """
+    const = _table_of(group)
+    n = _axis(const)
+    up = n[:, 2] >= 0.0
+    m = np.where(up[:, None], n, -n)
+    arc = shortest_arc(m[:, 0], m[:, 1], m[:, 2], np.sqrt(np.sum(m * m, axis=1)))
+    x, y, z, w = (np.broadcast_to(c, up.shape) for c in arc)
+    turned_x = product(-x, -y, -z, w, 1.0, 0.0, 0.0, 0.0)
+    q = np.where(up[:, None], np.stack([-x, -y, -z, w], axis=1), np.stack(turned_x, axis=1))
+    return q, np.ldexp(np.asarray(const.G, dtype=np.float64), group.mshift)
 
 
 def build(group, attitude):
@@ -237,7 +304,8 @@ def build(group, attitude):
     >>> per.const.coef.shape[1:], rest  # degree 9, the momentum and a padding component
     ((10, 4), None)
     """
-    coefs, const = _pieces_for(group, attitude)
+    frame = _frame(group) if attitude else None
+    coefs, const = _pieces_for(group, frame)
     keep = np.array([c is not None for c in coefs])
     rest = None
     if not np.all(keep):
@@ -265,12 +333,12 @@ def build(group, attitude):
         axis=1,
     )
     if attitude:
-        params = np.concatenate([params, _axis(const, sel)], axis=1)
+        params = np.concatenate([params, frame[0][sel], frame[1][sel, None]], axis=1)
     else:
         params[:, 3:6] = 0.0  # the table may lack them (no attitude asked)
-        params = np.concatenate([params, np.zeros((sel.size, 3))], axis=1)
-    periodic = Group(evaluate, group.members[sel], Periodic(params, coef), np.zeros(sel.size, dtype=np.int64),
-                     np.zeros(sel.size, dtype=np.int64))
+        params = np.concatenate([params, np.zeros((sel.size, 5))], axis=1)
+    zeros = np.zeros(sel.size, dtype=np.int64)
+    periodic = Group(evaluate, group.members[sel], Periodic(params, coef, attitude), zeros, zeros)
     return periodic, rest
 
 
@@ -291,6 +359,8 @@ def fill_numpy(const, pos, rows, t, scale, outs):
     """
     del scale
     m_out, q_out = outs
+    if q_out is not None and not const.attitude:
+        raise ValueError("expected a representation built with the attitude, got one of the momentum alone")
     params, coef = const.params, const.coef
     ncols = t.shape[1]
     cstep = min(ncols, _CHUNK)
@@ -298,18 +368,21 @@ def fill_numpy(const, pos, rows, t, scale, outs):
     per_row = t.shape[0] > 1
     for r0 in range(0, rows.size, rstep):
         o = rows[r0 : r0 + rstep]
-        p = params[pos[r0 : r0 + rstep]].T[..., None]  # (11, r, 1)
+        p = params[pos[r0 : r0 + rstep]].T[..., None]  # (13, r, 1)
         nu, g_nu = frequency(p[0], p[1]), frequency(p[3], p[4])
         for c0 in range(0, ncols, cstep):
             cols = slice(c0, c0 + cstep)
             tk = t[o, cols] if per_row else t[:, cols]
             x, u = locate(cycles(nu, tk, offset=p[2]), p[6])
             piece = np.moveaxis(coef[(p[7] + x).astype(np.intp)], (-2, -1), (0, 1))
-            m_out[o, cols] = np.stack(horner(piece, 0, u)[:3], axis=-1)
+            a = horner(piece, 0, u)
+            if not const.attitude:
+                m_out[o, cols] = np.stack(a[:3], axis=-1)
+                continue
+            m_out[o, cols] = np.stack(body_momentum(p[12], *a), axis=-1)
             if q_out is not None:
-                sb, cb = sincos_cycles(0.5 * cycles(g_nu, tk, offset=p[5]))
-                quat = turn_about(p[8], p[9], p[10], sb, cb, *horner(piece, 4, u))
-                q_out[o, cols] = np.stack(quat, axis=-1)
+                sb, cb = sincos_half_cycles(cycles(g_nu, tk, offset=p[5]))
+                q_out[o, cols] = np.stack(turned(p[8], p[9], p[10], p[11], sb, cb, *a), axis=-1)
 
 
 def evaluate(const, rows, t, attitude=True):
