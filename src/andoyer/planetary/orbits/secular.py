@@ -642,8 +642,7 @@ class SecularOrbit:
         >>> bool(np.allclose(orbit.eccentricity(t), np.linalg.norm(orbit.eccentricity_vector(t), axis=-1)))
         True
         """
-        root = self._normal_root(t)[1]
-        return np.sqrt(np.clip(1.0 - root * root, 0.0, None))
+        return self.normal_and_eccentricity(t)[1]
 
     def eccentricity_vector(self, t: ArrayLike) -> Array:
         """Mean eccentricity vector (``e`` times the unit vector to perihelion), J2000 ecliptic.
