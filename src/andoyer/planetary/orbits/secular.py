@@ -46,7 +46,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from andoyer._jit import jit
+from andoyer._jit import jit, jitable
 from andoyer.planetary.orbits.elements import eccentricity_from_elements
 from andoyer.planetary.orbits.planets import PLANETS, check_planet, planet_data
 from andoyer.planetary.orbits.protocol import check_times
@@ -57,6 +57,7 @@ __all__ = [
     "SecularModel",
     "SecularOrbit",
     "poincare_normal",
+    "sample_normal",
     "secular_model",
     "secular_tableau",
     "vectors_from_poincare",
@@ -284,21 +285,36 @@ def poincare_normal(x, y, Lambda, rotation):
     return nx, ny, nz, root
 
 
+@jitable
+def sample_normal(w, dw, spacing, cx, cy, Lambda, rotation, t):
+    """The normal and ``√(1−e²)`` at one time ``t`` from samples ``w, dw`` every ``spacing`` from J2000.
+
+    :func:`~andoyer.planetary.orbits.secular_flow.hermite` of the columns ``cx, cy`` (``x, y``)
+    between the two samples around ``t``, then :func:`poincare_normal`: the one interpolation of
+    :class:`SecularOrbit` for compiled loops (its own sampling and the spin axis' rotations).
+
+    Examples
+    --------
+    >>> w = np.array([[0.1 + 0j, 0.02 + 0j], [0.1 + 0j, 0.02 + 0j]])
+    >>> nx, ny, nz, root = sample_normal(w, 0 * w, 10.0, 0, 1, 1.0, np.eye(3), 5.0)
+    >>> round(root, 6), round(nz, 6)
+    (0.995, 0.999799)
+    """
+    position = t / spacing
+    i = min(max(int(np.floor(position)), 0), w.shape[0] - 2)
+    h00, h10, h01, h11 = hermite_basis(position - i)
+    x = h00 * w[i, cx] + h10 * spacing * dw[i, cx] + h01 * w[i + 1, cx] + h11 * spacing * dw[i + 1, cx]
+    y = h00 * w[i, cy] + h10 * spacing * dw[i, cy] + h01 * w[i + 1, cy] + h11 * spacing * dw[i + 1, cy]
+    return poincare_normal(x, y, Lambda, rotation)
+
+
 @jit
 def _sample(t, spacing, w, dw, cx, cy, Lambda, rotation, normal, root):
-    """The orbit normal and ``√(1−e²)`` at times ``t`` from samples ``w, dw`` every ``spacing`` from J2000.
-
-    :func:`~andoyer.planetary.orbits.secular_flow.hermite` of the columns ``cx, cy`` (``x, y``),
-    then :func:`poincare_normal`, one time at a time.
-    """
-    last = w.shape[0] - 2
+    """:func:`sample_normal` at every time of ``t``, into ``normal`` (N, 3) and ``root`` (N,)."""
     for k in range(t.size):
-        position = t[k] / spacing
-        i = min(max(int(np.floor(position)), 0), last)
-        h00, h10, h01, h11 = hermite_basis(position - i)
-        x = h00 * w[i, cx] + h10 * spacing * dw[i, cx] + h01 * w[i + 1, cx] + h11 * spacing * dw[i + 1, cx]
-        y = h00 * w[i, cy] + h10 * spacing * dw[i, cy] + h01 * w[i + 1, cy] + h11 * spacing * dw[i + 1, cy]
-        normal[k, 0], normal[k, 1], normal[k, 2], root[k] = poincare_normal(x, y, Lambda, rotation)
+        normal[k, 0], normal[k, 1], normal[k, 2], root[k] = sample_normal(
+            w, dw, spacing, cx, cy, Lambda, rotation, t[k]
+        )
 
 
 class _Run:

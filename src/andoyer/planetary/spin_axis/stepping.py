@@ -24,8 +24,7 @@ from numpy.typing import NDArray
 
 from andoyer._jit import jit, jitable
 from andoyer.compositions import COMPOSITIONS, turn_about
-from andoyer.planetary.orbits.secular import poincare_normal
-from andoyer.planetary.orbits.secular_flow import hermite_basis
+from andoyer.planetary.orbits.secular import sample_normal
 
 __all__ = ["rotate_on_samples", "rotate_stages", "stage_rate", "stage_times"]
 
@@ -176,8 +175,8 @@ def rotate_on_samples(
 
     The orbit is the planet's Poincaré ``x, y`` (columns ``cx, cy`` of ``w``) and their rates
     ``dw``, every ``spacing`` years (signed) from J2000 (:class:`~andoyer.planetary.orbits.SecularOrbit`'s
-    samples); at a stage's midpoint ``t`` the cubic Hermite interpolant between the samples
-    around ``t`` gives ``x, y``, :func:`~andoyer.planetary.orbits.secular.poincare_normal` the
+    samples); at a stage's midpoint ``t``
+    :func:`~andoyer.planetary.orbits.secular.sample_normal` interpolates ``x, y`` and gives the
     normal and ``√(1−e²)``, so ``f = (1 − e²)^{−3/2} = (√(1−e²))^{−3}`` — what
     ``SecularOrbit.normal_and_eccentricity`` gives, without the arrays of every stage.
 
@@ -200,7 +199,6 @@ def rotate_on_samples(
     runs = s0.shape[0]
     if parameters.shape[0] != 5 or parameters.shape[1] != runs or sizes.shape[0] != starts.shape[0]:
         raise ValueError("expected parameters of shape (5, M) and one size per step")
-    last = w.shape[0] - 2
     sx = s0[:, 0].copy()
     sy = s0[:, 1].copy()
     sz = s0[:, 2].copy()
@@ -209,22 +207,7 @@ def rotate_on_samples(
         for g in range(gamma.size):
             t = starts[k] + sizes[k] * (before + 0.5 * gamma[g])
             before += gamma[g]
-            position = t / spacing
-            i = min(max(int(np.floor(position)), 0), last)
-            h00, h10, h01, h11 = hermite_basis(position - i)
-            x = (
-                h00 * w[i, cx]
-                + h10 * spacing * dw[i, cx]
-                + h01 * w[i + 1, cx]
-                + h11 * spacing * dw[i + 1, cx]
-            )
-            y = (
-                h00 * w[i, cy]
-                + h10 * spacing * dw[i, cy]
-                + h01 * w[i + 1, cy]
-                + h11 * spacing * dw[i + 1, cy]
-            )
-            nx, ny, nz, root = poincare_normal(x, y, Lambda, rotation)
+            nx, ny, nz, root = sample_normal(w, dw, spacing, cx, cy, Lambda, rotation, t)
             f = 1.0 / (root * root * root)
             h = sizes[k] * gamma[g]
             for m in range(runs):
