@@ -249,6 +249,48 @@ def test_splitting_rtol_bad_options(options, message):
         integrate_splitting(model, start, [0.0, 1.0], **options)
 
 
+@pytest.mark.parametrize("weight", [1e150, 1e300])
+def test_splitting_rtol_torque_beyond_any_step_refused_before_the_probe(weight, monkeypatch):
+    # a heavy top of weight 1e150 swings with period 2π√(I/τ) ~ 1e-74: no run resolves it, and
+    # the probe must not try its 24 halvings first (CI ran this for hours)
+    def no_probe(*args, **kwargs):
+        raise AssertionError("the probe ran")
+
+    monkeypatch.setattr(splitting_module, "choose", no_probe)
+    model = Model(TRIAXIAL, HeavyTop(weight, [0.0, 0.1, 0.3]))
+    with pytest.raises(ValueError, match=r"expected a torque whose time scale .* got a time scale of"):
+        integrate_splitting(model, CASES["heavy top"][1], [0.0, 1.0], rtol=1e-6)
+
+
+def test_splitting_torque_period_is_the_longer_of_turn_and_swing():
+    moments = np.array([1.0, 2.0, 4.0])
+    # |M| = 3, |τ| = 2: the turn 2π·3/2 is longer than the swing 2π√(4/2)
+    assert splitting_module._torque_period(np.array([2.0]), np.array([[0.0, 0.0, 3.0]]), moments) == (
+        pytest.approx(3 * np.pi, rel=1e-15)
+    )
+    # at rest the swing sets it; the shortest over the states; no torque: none
+    sizes, m = np.array([2.0, 50.0]), np.array([[0.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+    period = splitting_module._torque_period
+    assert period(sizes, m, moments) == pytest.approx(2 * np.pi * np.sqrt(4 / 50), rel=1e-15)
+    assert period(sizes[:1], m[:1], moments) == pytest.approx(2 * np.pi * np.sqrt(2), rel=1e-15)
+    assert splitting_module._torque_period(np.zeros(1), m[:1], moments) == np.inf
+    with pytest.raises(ValueError, match="got nan"):
+        splitting_module._torque_period(np.array([np.nan]), m[:1], moments)
+
+
+def test_splitting_probe_total_cost_is_bounded(monkeypatch):
+    # each run of the ladder alone is within the limit of one run, their sum is not: the probe
+    # stops with the limit's message in time, not in steps (check_size's `seconds`)
+    from andoyer import _limits
+
+    budget = _limits.MAX_STEPS * _limits.STEP_SECONDS
+    monkeypatch.setattr(splitting_module, "STEP_SECONDS", budget / 6000.0)
+    model, start = CASES["heavy top"]
+    message = r"expected the splitting's probe of at most about .* got one of about"
+    with pytest.raises(ValueError, match=message):
+        integrate_splitting(model, start, [0.0, 5.0], rtol=1e-12)
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("rtol", [1e-3, 1e-5])
 def test_splitting_estimate_bounds_earth_precession_error(rtol):

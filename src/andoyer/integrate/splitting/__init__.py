@@ -33,7 +33,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from andoyer import _quaternion as quat
-from andoyer._limits import STEP_SECONDS, ToleranceWarning, caller_stacklevel, check_size, progress
+from andoyer._limits import MAX_STEPS, STEP_SECONDS, ToleranceWarning, caller_stacklevel, check_size, progress
 from andoyer._validation import as_finite
 from andoyer.compositions import splitting_coefficients
 from andoyer.free.step_scalar import NUMBA, free_step
@@ -431,25 +431,53 @@ def _frequencies(model: Model, m: Array, periods: list[float]) -> Array:
     return values[values > 0]
 
 
-def _slow_period(kicks: list[Perturbation], t0: float, q: Array, m: Array) -> float:
-    """``2π |M| / max |τ(t₀)|``, the shortest over the states: the time scale of the momentum's motion.
+def _torque_sizes(kicks: list[Perturbation], t0: float, q: Array, m: Array) -> Array:
+    """``max |τ(t₀)|`` of each state (S,) over its attitude turned about the body axes.
 
     The torque is taken at the states' attitudes and at those turned by a quarter and an
     eighth of a turn about each body axis, so that an attitude where it happens to vanish
-    does not hide it. (A frame turns ``M`` at its rate ``|μ|``: its period is a forcing period.)
+    does not hide it.
     """
     turns = [np.array([0.0, 0.0, 0.0, 1.0])]
     halves = (0.125 * np.pi, 0.25 * np.pi)  # half the angles of an eighth and a quarter turn
     turns += [np.append(np.sin(half) * axis, np.cos(half)) for half in halves for axis in np.eye(3)]
     size = np.zeros(m.shape[0])
-    for turn in turns:
-        attitude = quat.multiply(q, np.broadcast_to(turn, q.shape))
-        torque = np.zeros_like(m)
-        for kick in kicks:
-            torque = torque + np.asarray(kick.kick(np.asarray(t0), attitude, m), dtype=np.float64)
-        size = np.maximum(size, np.linalg.norm(torque, axis=-1))
+    # a torque beyond the floats is judged by the caller (an infinite size), not warned here
+    with np.errstate(over="ignore", invalid="ignore"):
+        for turn in turns:
+            attitude = quat.multiply(q, np.broadcast_to(turn, q.shape))
+            torque = np.zeros_like(m)
+            for kick in kicks:
+                torque = torque + np.asarray(kick.kick(np.asarray(t0), attitude, m), dtype=np.float64)
+            size = np.maximum(size, np.linalg.norm(torque, axis=-1))
+    return size
+
+
+def _slow_period(size: Array, m: Array) -> float:
+    """``2π |M| / max |τ(t₀)|``, the shortest over the states: the time scale of the momentum's motion.
+
+    ``size`` is :func:`_torque_sizes`. (A frame turns ``M`` at its rate ``|μ|``: its period
+    is a forcing period.)
+    """
     rates = size / np.linalg.norm(m, axis=-1)
     return float(2 * np.pi / np.max(rates)) if np.any(rates > 0) else math.inf
+
+
+def _torque_period(size: Array, m: Array, moments: Array) -> float:
+    r"""The longest time scale the torque can set, shortest over the states: no step can exceed it.
+
+    ``2π max(|M| / |τ|, \sqrt{I_max / |τ|})``: the period of the momentum's turn under the
+    torque (a fast top) or of the swing that the torque drives from rest (a pendulum),
+    whichever is longer. A splitting step longer than it leaves no digit of the motion.
+    """
+    if np.any(np.isnan(size)):
+        msg = "expected a torque that is a number at the initial states, got nan"
+        raise ValueError(msg)
+    pushed = size > 0
+    safe = np.where(pushed, size, 1.0)
+    turn = np.where(pushed, np.linalg.norm(m, axis=-1) / safe, math.inf)
+    swing = np.where(pushed, np.sqrt(float(np.max(moments)) / safe), math.inf)
+    return float(2 * np.pi * np.min(np.maximum(turn, swing), initial=math.inf))
 
 
 def _first_step(kicks: list[Perturbation], frames: list[Perturbation], span: float) -> float:
@@ -485,17 +513,17 @@ def _controlled(
     q0 = np.ascontiguousarray(state.quaternion.reshape(-1, 4), dtype=np.float64)
     m0 = np.ascontiguousarray(state.m_body.reshape(-1, 3), dtype=np.float64)
     scale = np.linalg.norm(m0, axis=-1)[:, None]
+    spent = [0.0]  # estimated seconds of the probe's runs so far: the ladder's total is bounded too
 
     def run(k: int, h: float, probe: Array) -> Array:
         every = max(1, round(float(probe[0]) / h))
         marks = every * np.arange(1, probe.size + 1)
         n = q0.shape[0]
         fixed, per_state = _PYTHON_SUBSTEP_SECONDS
-        check_size(
-            "the splitting's probe",
-            steps=float(marks[-1]) * len(COMPOSITIONS[k]) * n,
-            step_seconds=STEP_SECONDS if tables[k] is not None else fixed / n + per_state,
-        )
+        steps = float(marks[-1]) * len(COMPOSITIONS[k]) * n
+        step_seconds = STEP_SECONDS if tables[k] is not None else fixed / n + per_state
+        check_size("the splitting's probe", steps=steps, step_seconds=step_seconds, seconds=spent[0])
+        spent[0] += steps * step_seconds
         q, m = _run_steps(model, tables[k], q0, m0, t0, direction * h, int(marks[-1]), 0.0, k, record=marks)
         return quat.rotate(q, m) / scale
 
@@ -505,7 +533,18 @@ def _controlled(
     stages = {k: len(COMPOSITIONS[k]) for k in COMPOSITIONS}
     frequencies = _frequencies(model, m0, periods)
     longest = max(periods, default=0.0)
-    slow = _slow_period(kicks, t0, q0, m0)
+    sizes = _torque_sizes(kicks, t0, q0, m0)
+    slow = _slow_period(sizes, m0)
+    # a torque too strong for any step over the span is refused before the probe tries 24 halvings
+    resolved = _torque_period(sizes, m0, model.body.moments)
+    needed = (span / resolved if resolved > 0 else math.inf) * min(stages.values()) * q0.shape[0]
+    if not needed <= MAX_STEPS:
+        msg = (
+            f"expected a torque whose time scale a splitting run over a span of {span:.3g} resolves "
+            f"in at most {MAX_STEPS:.3g} steps, got a time scale of {resolved:.3g} "
+            f"(torque up to {np.max(sizes):.3g}): {needed:.3g} steps"
+        )
+        raise ValueError(msg)
     choice, met = choose(run, rtol, span, first, orders, stages, longest, slow, frequencies, MAX_HALVINGS)
     if not met:
         msg = (
