@@ -605,6 +605,9 @@ def integrate_splitting(
         over a probe of length ``L``, ``D`` its fitted drift); the order and step of least
         cost with ``E ≤ rtol`` are run once. The model, its assumptions and where it fails:
         :mod:`andoyer.integrate.splitting.probe`. The spin phase is not in the estimate.
+        A torque whose time scale ``2π max(|M|/|τ|, √(I_max/|τ|))`` would take more than
+        ``MAX_STEPS`` steps over the span is refused before the probe, and the probe's runs
+        together are held to the time limit of one run.
 
     Returns
     -------
