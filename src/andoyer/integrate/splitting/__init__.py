@@ -513,17 +513,18 @@ def _controlled(
     q0 = np.ascontiguousarray(state.quaternion.reshape(-1, 4), dtype=np.float64)
     m0 = np.ascontiguousarray(state.m_body.reshape(-1, 3), dtype=np.float64)
     scale = np.linalg.norm(m0, axis=-1)[:, None]
-    spent = [0.0]  # estimated seconds of the probe's runs so far: the ladder's total is bounded too
+    spent = 0.0  # estimated seconds of the probe's runs so far: the ladder's total is bounded too
 
     def run(k: int, h: float, probe: Array) -> Array:
+        nonlocal spent
         every = max(1, round(float(probe[0]) / h))
         marks = every * np.arange(1, probe.size + 1)
         n = q0.shape[0]
         fixed, per_state = _PYTHON_SUBSTEP_SECONDS
         steps = float(marks[-1]) * len(COMPOSITIONS[k]) * n
         step_seconds = STEP_SECONDS if tables[k] is not None else fixed / n + per_state
-        check_size("the splitting's probe", steps=steps, step_seconds=step_seconds, seconds=spent[0])
-        spent[0] += steps * step_seconds
+        check_size("the splitting's probe", steps=steps, step_seconds=step_seconds, seconds=spent)
+        spent += steps * step_seconds
         q, m = _run_steps(model, tables[k], q0, m0, t0, direction * h, int(marks[-1]), 0.0, k, record=marks)
         return quat.rotate(q, m) / scale
 
