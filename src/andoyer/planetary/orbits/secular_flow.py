@@ -5,8 +5,8 @@ r"""The flow of the secular Hamiltonian: compiled right-hand side and an 8th-ord
 polynomial ``Σ_t c_t Π_v w_v^{m_{tv}}`` over ``x, x̄, y, ȳ`` plus the relativistic term
 ``Σ_j −K_j/(1 − |x_j|²/(2Λ_j))``. Its quadratic part gives the linear flow ``ẇ = L w``
 (the Laplace–Lagrange equations, with relativity's first term); the rest, ``N(w)``, is
-evaluated term by term from the stored derivative monomials
-``∂H/∂w̄_b = Σ c_t m_{tb} w^{m_t − e_b}`` (:class:`FlowTerms`).
+evaluated from the stored derivative monomials ``∂H/∂w̄_b = Σ c_t m_{tb} w^{m_t − e_b}``,
+each monomial's largest factor taken out of the sums it shares with others (:class:`FlowTerms`).
 
 **Integrator.** Lawson's integrating-factor method (Lawson 1967, *SIAM J. Numer. Anal.* 4,
 372): in ``v = e^{−Lτ} w`` the equation ``v̇ = e^{−Lτ} N(e^{Lτ} v)`` has only the small
@@ -65,18 +65,24 @@ class FlowTerms:
     width : int
         One more than the highest power of a variable in a monomial.
     parent, factor : numpy.ndarray of int32, shape (M,)
-        The distinct derivative monomials as a product tree: ``node[0] = 1`` and
-        ``node[k] = node[parent[k]] · powers[factor[k]]`` (``parent[k] < k``), with
-        ``powers[v·width + p] = w_v^p`` (variables ``0…4P−1`` = ``x, x̄, y, ȳ``). A monomial's
-        factors are sorted by variable, so monomials that share their leading factors share
-        the nodes of those partial products: one complex multiplication per node.
-    row_start : numpy.ndarray of int64, shape (2P + 1,)
-    row_node : numpy.ndarray of int32, shape (T,)
-    row_coefficient : numpy.ndarray, shape (T,)
-        ``∂H/∂w̄_b = Σ row_coefficient[d] node[row_node[d]]`` over ``d`` from ``row_start[b]``
-        to ``row_start[b+1]`` (a sparse matrix by rows). The coefficients are real (the
-        secular Hamiltonian's are in these variables: it is even under ``(x, y) → (x̄, ȳ)``,
-        the mirror image of the system with time reversed).
+        The derivative monomials without their last factor (their *prefixes*) as a product
+        tree: ``node[0] = 1`` and ``node[k] = node[parent[k]] · powers[factor[k]]``
+        (``parent[k] < k``), with ``powers[v·width + p] = w_v^p`` (variables ``0…4P−1`` =
+        ``x, x̄, y, ȳ``). A monomial's factors are sorted by variable, so monomials that share
+        their leading factors share the nodes of those partial products: one complex
+        multiplication per node.
+    group_start : numpy.ndarray of int64, shape (G + 1,)
+    group_row : numpy.ndarray of int64, shape (G,)
+    group_power : numpy.ndarray of int32, shape (G,)
+    term_node : numpy.ndarray of int32, shape (T,)
+    term_coefficient : numpy.ndarray, shape (T,)
+        ``∂H/∂w̄_b = Σ_g powers[group_power[g]] Σ_d term_coefficient[d] node[term_node[d]]``
+        over the groups ``g`` of row ``b = group_row[g]`` and ``d`` from ``group_start[g]`` to
+        ``group_start[g+1]``: the monomials of a row that end in the same factor are summed
+        before it multiplies them (325 groups for the 1200 monomials of the shipped model:
+        the leaves of the tree, one multiplication each, are gone). The coefficients are real
+        (the secular Hamiltonian's are in these variables: it is even under
+        ``(x, y) → (x̄, ȳ)``, the mirror image of the system with time reversed).
     energy_coefficient : numpy.ndarray, shape (E,)
     energy_factors : numpy.ndarray of int32, shape (E, F + 1)
         The polynomial itself, in the same layout (for :func:`energy`).
@@ -89,9 +95,11 @@ class FlowTerms:
     width: int
     parent: NDArray[np.int32]
     factor: NDArray[np.int32]
-    row_start: IArray
-    row_node: NDArray[np.int32]
-    row_coefficient: NDArray[np.float64]
+    group_start: IArray
+    group_row: IArray
+    group_power: NDArray[np.int32]
+    term_node: NDArray[np.int32]
+    term_coefficient: NDArray[np.float64]
     energy_coefficient: NDArray[np.float64]
     energy_factors: NDArray[np.int32]
     gr_constant: NDArray[np.float64]
@@ -184,9 +192,15 @@ class FlowTerms:
                 reduced[column] -= 1
                 nz = np.nonzero(reduced)[0]
                 rows.append((b, c * m[column], (nz * width + reduced[nz]).tolist()))
-        parent, factor, node_of = product_tree([f for _, _, f in rows])
-        order = sorted(range(len(rows)), key=lambda d: (rows[d][0], node_of[d]))
-        row_start = np.searchsorted([rows[d][0] for d in order], np.arange(2 * P + 1)).astype(np.int64)
+        # Each monomial as (its prefix) · (its last factor; w_0^0 = 1 for a constant): the monomials of
+        # a row that end in the same factor share one multiplication by it.
+        keys = [sorted(f) or [0] for _, _, f in rows]
+        parent, factor, node_of = product_tree([key[:-1] for key in keys])
+        groups = sorted({(b, key[-1]) for (b, _, _), key in zip(rows, keys, strict=True)})
+        group_of = {g: i for i, g in enumerate(groups)}
+        term_group = [group_of[(b, key[-1])] for (b, _, _), key in zip(rows, keys, strict=True)]
+        order = sorted(range(len(rows)), key=lambda d: (term_group[d], node_of[d]))
+        group_start = np.searchsorted([term_group[d] for d in order], np.arange(len(groups) + 1))
         energy = [
             (c, (np.nonzero(m)[0] * width + m[np.nonzero(m)[0]]).tolist())
             for m, c, k in zip(exponents, coefficients, kept, strict=True)
@@ -199,9 +213,11 @@ class FlowTerms:
             width=width,
             parent=parent,
             factor=factor,
-            row_start=row_start,
-            row_node=np.array([node_of[d] for d in order], dtype=np.int32),
-            row_coefficient=np.array([rows[d][1] for d in order], dtype=float),
+            group_start=group_start.astype(np.int64),
+            group_row=np.array([b for b, _ in groups], dtype=np.int64),
+            group_power=np.array([f for _, f in groups], dtype=np.int32),
+            term_node=np.array([node_of[d] for d in order], dtype=np.int32),
+            term_coefficient=np.array([rows[d][1] for d in order], dtype=float),
             energy_coefficient=np.array([c for c, _ in energy], dtype=float),
             energy_factors=np.array([f + [0] * (wide - len(f)) for _, f in energy], dtype=np.int32).reshape(
                 -1, wide
@@ -216,9 +232,11 @@ class FlowTerms:
             self.width,
             self.parent,
             self.factor,
-            self.row_start,
-            self.row_node,
-            self.row_coefficient,
+            self.group_start,
+            self.group_row,
+            self.group_power,
+            self.term_node,
+            self.term_coefficient,
             self.gr_constant,
             self.gr_lambda,
         )
@@ -246,8 +264,8 @@ def _powers(w, P, width, out) -> None:
 
 @jit
 def _nonlinear(
-    w, P, width, parent, factor, row_start, row_node, row_coefficient, gr_constant, gr_lambda, powers, node,
-    out,
+    w, P, width, parent, factor, group_start, group_row, group_power, term_node, term_coefficient,
+    gr_constant, gr_lambda, powers, node, out,
 ) -> None:  # fmt: skip
     """``N(w)``: the flow of the terms of degree ≥ 4 and of relativity beyond its quadratic part."""
     _powers(w, P, width, powers)
@@ -255,14 +273,18 @@ def _nonlinear(
     for k in range(1, parent.size):
         node[k] = node[parent[k]] * powers[factor[k]]
     for b in range(2 * P):
+        out[b] = 0.0
+    for g in range(group_row.size):
         # Real arithmetic: a real coefficient times a complex node is two multiplications, not four.
         re = 0.0
         im = 0.0
-        for d in range(row_start[b], row_start[b + 1]):
-            value = node[row_node[d]]
-            re += row_coefficient[d] * value.real
-            im += row_coefficient[d] * value.imag
-        out[b] = 2.0 * im - 2j * re
+        for d in range(group_start[g], group_start[g + 1]):
+            value = node[term_node[d]]
+            re += term_coefficient[d] * value.real
+            im += term_coefficient[d] * value.imag
+        out[group_row[g]] += complex(re, im) * powers[group_power[g]]
+    for b in range(2 * P):
+        out[b] = -2j * out[b]  # ẇ_b = −2i ∂H/∂w̄_b
     for j in range(P):
         if gr_constant[j] != 0.0:
             s = (w[j].real * w[j].real + w[j].imag * w[j].imag) / (2.0 * gr_lambda[j])
@@ -318,8 +340,8 @@ def _matvec(M, v, out, block) -> None:
 @jit
 def integrate(
     w0, steps, h, a_matrix, b_weights, forward, backward, inner, inner_rate, inner_weights, width, parent,
-    factor, row_start, row_node, row_coefficient, gr_constant, gr_lambda, linear, keep, out_w, out_dw,
-    extreme,
+    factor, group_start, group_row, group_power, term_node, term_coefficient, gr_constant, gr_lambda, linear,
+    keep, out_w, out_dw, extreme,
 ) -> None:  # fmt: skip
     """Take ``steps`` Lawson–DOP853 steps of size ``h`` from ``w0``; store ``keep`` components.
 
@@ -342,8 +364,10 @@ def integrate(
     inner_weights : numpy.ndarray, shape (Q − 1, 2, S)
         ``v(θ_q h) = v(0) + h Σ_i inner_weights[q, 0, i] k_i`` and ``v̇(θ_q h) = Σ_i
         inner_weights[q, 1, i] k_i`` from the stages ``k_i``.
-    width, parent, factor, row_start, row_node, row_coefficient, gr_constant, gr_lambda
-        :meth:`FlowTerms.arrays`.
+    width, parent, factor, group_start, group_row, group_power, term_node, term_coefficient
+        The first eight of :meth:`FlowTerms.arrays`.
+    gr_constant, gr_lambda
+        Its last two.
     linear : numpy.ndarray of complex, shape (2P, 2P)
         ``L``.
     keep : numpy.ndarray of int, shape (K,)
@@ -389,8 +413,8 @@ def integrate(
             extreme[b] = max(extreme[b], size)
         # Stage 1 (c = 0): N(w), which with L w is also the derivative stored at this step.
         _nonlinear(
-            w, P, width, parent, factor, row_start, row_node, row_coefficient, gr_constant, gr_lambda, powers,
-            node, tmp,
+            w, P, width, parent, factor, group_start, group_row, group_power, term_node, term_coefficient,
+            gr_constant, gr_lambda, powers, node, tmp,
         )  # fmt: skip
         for b in range(n):
             K[0, b] = tmp[b]
@@ -409,8 +433,8 @@ def integrate(
                 v[b] = w[b] + h * acc
             _matvec(forward[i], v, x, block)
             _nonlinear(
-                x, P, width, parent, factor, row_start, row_node, row_coefficient, gr_constant, gr_lambda,
-                powers, node, tmp,
+                x, P, width, parent, factor, group_start, group_row, group_power, term_node, term_coefficient,
+                gr_constant, gr_lambda, powers, node, tmp,
             )  # fmt: skip
             _matvec(backward[i], tmp, x, block)
             for b in range(n):
