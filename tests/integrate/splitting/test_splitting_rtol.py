@@ -262,6 +262,27 @@ def test_splitting_rtol_torque_beyond_any_step_refused_before_the_probe(weight, 
         integrate_splitting(model, CASES["heavy top"][1], [0.0, 1.0], rtol=1e-6)
 
 
+@pytest.mark.parametrize("weight", [1e150, 1e300])
+def test_splitting_fixed_step_beyond_the_torque_time_scale_refused(weight):
+    # a step of 0.1 against a swing of period ~1e-74: it gave |m| ~ 1e149 (a wrong number)
+    model = Model(TRIAXIAL, HeavyTop(weight, [0.0, 0.1, 0.3]))
+    with pytest.raises(ValueError, match=r"expected a step of at most the torque's time scale .* got 0\.1"):
+        integrate_splitting(model, CASES["heavy top"][1], [0.0, 1.0], step=0.1)
+    # the time scale of the suite's heavy top (|τ| ~ 0.16, |M| = 1): a step just past it is refused
+    model, start = CASES["heavy top"]
+    scale = splitting_module._torque_period(
+        splitting_module._torque_sizes(
+            splitting_module.splitting_parts(model)[0], 0.0, start.quaternion[None], start.m_body[None]
+        ),
+        start.m_body[None],
+        model.body.moments,
+    )
+    assert 20.0 < scale < 60.0  # 2π|M|/|τ| with |τ| between 0.1 and 0.3
+    integrate_splitting(model, start, [0.0, scale], step=scale)
+    with pytest.raises(ValueError, match="torque's time scale"):
+        integrate_splitting(model, start, [0.0, 1.0], step=1.01 * scale)
+
+
 def test_splitting_torque_period_is_the_longer_of_turn_and_swing():
     moments = np.array([1.0, 2.0, 4.0])
     # |M| = 3, |τ| = 2: the turn 2π·3/2 is longer than the swing 2π√(4/2)

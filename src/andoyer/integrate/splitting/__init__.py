@@ -591,7 +591,8 @@ def integrate_splitting(
     state : State, shape (S...)
     t : array_like, shape (T...)
     step : float, optional
-        Step length (> 0): without ``rtol`` the run takes it. With ``rtol``, the first step
+        Step length (> 0, at most the torque's time scale ``2π max(|M|/|τ|, √(I_max/|τ|))``
+        at the start): without ``rtol`` the run takes it. With ``rtol``, the first step
         tried (default: a quarter of the shortest orbital period of the perturbers and of the
         frames' rotation, at most a quarter of the span).
     order : {2, 4, 6}, optional
@@ -646,6 +647,13 @@ def integrate_splitting(
     times, unique, shape = output_times(state, t, model.body.moments, t0)
     q0 = state.quaternion.reshape(-1, 4)
     m0 = state.m_body.reshape(-1, 3)
+    resolved = _torque_period(_torque_sizes(kicks, t0, q0, m0), m0, model.body.moments)
+    if not step <= resolved:
+        msg = (
+            f"expected a step of at most the torque's time scale 2π max(|M|/|τ|, √(I_max/|τ|)) = "
+            f"{resolved:.3g} (a longer one leaves no digit of the motion), got {step!r}"
+        )
+        raise ValueError(msg)
     steps = _count_steps(unique, t0, step)
     n = max(q0.shape[0], 1)
     fixed, per_state = _PYTHON_SUBSTEP_SECONDS
