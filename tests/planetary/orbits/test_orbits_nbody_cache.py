@@ -52,12 +52,15 @@ def _pieces(cache: Path, direction: str = "backward") -> dict[str, int]:
 
 
 OBLIQUITY = ("obliquity", "mars", "--span", "-20000", "0", "--step", "500", "--format", "csv")
+#: Long enough (about 8 CPU s of orbit) that the run cannot end while the polling parent waits
+#: for its turn on a machine whose every core runs tests (20 kyr ended first once, under xdist).
+LONG_OBLIQUITY = ("obliquity", "mars", "--span", "-100000", "0", "--step", "500", "--format", "csv")
 
 
 @pytest.mark.slow
 def test_nbody_cache_interrupted_run_resumes_bit_for_bit(tmp_path):
     cache, output = tmp_path / "cache", tmp_path / "mars.csv"
-    child = _child(cache, 2000.0, *OBLIQUITY, "--output", str(output))
+    child = _child(cache, 2000.0, *LONG_OBLIQUITY, "--output", str(output))
     deadline = time.monotonic() + 300
     # A piece beyond the first thousand years: the run is inside its integration.
     while all(name.rsplit("-", 2)[1] == "0" for name in _pieces(cache)):
@@ -76,7 +79,7 @@ def test_nbody_cache_interrupted_run_resumes_bit_for_bit(tmp_path):
     kept_years = float(err.split("kept ")[1].split(" kyr")[0]) * 1000
     assert max(int(name.rsplit("-", 1)[1][:-4]) for name in kept) * 100.0 == pytest.approx(kept_years, abs=1)
 
-    again = _child(cache, 2000.0, *OBLIQUITY, "--output", str(output))
+    again = _child(cache, 2000.0, *LONG_OBLIQUITY, "--output", str(output))
     _, err = again.communicate(timeout=300)
     assert again.returncode == 0, err
     after = _pieces(cache)
@@ -84,7 +87,7 @@ def test_nbody_cache_interrupted_run_resumes_bit_for_bit(tmp_path):
     assert len(after) > len(kept)
 
     whole, reference = tmp_path / "whole", tmp_path / "reference.csv"
-    single = _child(whole, nbody_module.PIECE_YEARS, *OBLIQUITY, "--output", str(reference))
+    single = _child(whole, nbody_module.PIECE_YEARS, *LONG_OBLIQUITY, "--output", str(reference))
     _, err = single.communicate(timeout=300)
     assert single.returncode == 0, err
     assert output.read_bytes() == reference.read_bytes()
