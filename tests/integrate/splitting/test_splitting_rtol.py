@@ -277,7 +277,11 @@ def test_splitting_fixed_step_beyond_the_torque_time_scale_refused(weight):
         start.m_body[None],
         model.body.moments,
     )
-    assert 20.0 < scale < 60.0  # 2π|M|/|τ| with |τ| between 0.1 and 0.3
+    # |τ| = W |r × ĝ| ≤ W |r| = 0.5 √0.1 at any attitude, |M| = 1: the turn's period is at least
+    # 2π / (0.5 √0.1), longer than the swing's 2π √(1.3 / |τ|); the sampled attitudes (turns by
+    # an eighth and a quarter about each axis) find at least half of the largest torque
+    bound = 2 * np.pi / (0.5 * np.sqrt(0.1))
+    assert bound <= scale <= 2.0 * bound
     integrate_splitting(model, start, [0.0, scale], step=scale)
     with pytest.raises(ValueError, match="torque's time scale"):
         integrate_splitting(model, start, [0.0, 1.0], step=1.01 * scale)
