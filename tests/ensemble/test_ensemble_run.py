@@ -90,6 +90,30 @@ def test_ensemble_default_local_cluster(processes, tmp_path):
     np.testing.assert_array_equal(ds.m_body.values, m)
 
 
+@pytest.mark.parametrize(("n_samples", "chunk", "n_workers", "cluster"), [(3, 4, 2, None), (9, 4, 8, 3)])
+def test_ensemble_default_scheduler_starts_no_idle_workers(monkeypatch, n_samples, chunk, n_workers, cluster):
+    # One chunk runs in this process (no cluster's start-up); fewer chunks than workers start one
+    # worker per chunk. The numbers are those of the direct call either way.
+    from andoyer.ensemble import runner
+
+    started = []
+    real_local_client = runner.local_client
+
+    def recording(workers, processes):
+        started.append(workers)
+        return real_local_client(workers, processes)
+
+    monkeypatch.setattr(runner, "local_client", recording)
+    ds = run_ensemble(
+        AndoyerSampler(), n_samples, TIMES, body=EROS, chunk=chunk, seed=5, n_workers=n_workers,
+        processes=False, progress=False,
+    )  # fmt: skip
+    assert started == ([] if cluster is None else [cluster])
+    q, m = direct(EROS, 5, n_samples, chunk, TIMES)
+    np.testing.assert_array_equal(ds.quaternion.values, q)
+    np.testing.assert_array_equal(ds.m_body.values, m)
+
+
 def test_ensemble_scheduler_by_address_runs_there(loopback_cluster):
     prefixes = loopback_cluster.scheduler.task_prefixes
     before = (
