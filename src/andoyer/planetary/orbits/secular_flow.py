@@ -272,20 +272,16 @@ class FlowTerms:
 def _powers(w, P, width, out) -> None:
     """``out[v·width + p] = w_v^p`` for the ``4P`` variables ``x, x̄, y, ȳ`` and ``p < width``."""
     for v in range(4 * P):
-        j = v % P
-        block = v // P
-        if block == 0:
-            value = w[j]
-        elif block == 1:
-            value = np.conj(w[j])
-        elif block == 2:
-            value = w[P + j]
-        else:
-            value = np.conj(w[P + j])
-        base = v * width
-        out[base] = 1.0
-        for p in range(1, width):
-            out[base + p] = out[base + p - 1] * value
+        out[v * width] = 1.0
+    # Power by power over all the plain variables at once (independent multiplications, which the
+    # processor overlaps); a barred variable's powers are the conjugates, exactly: (x̄)^p = conj(x^p).
+    for p in range(1, width):
+        for half in range(2):
+            for j in range(P):
+                plain = (2 * half * P + j) * width + p
+                value = out[plain - 1] * w[half * P + j]
+                out[plain] = value
+                out[plain + P * width] = np.conj(value)
 
 
 @jit
