@@ -309,11 +309,13 @@ def obliquity_ensemble(
     key = str(body).strip().lower()
     seconds, nbytes = member_cost(int(members), float(end), float(interval), float(spin_step), int(orbits))
     workers = 1 if isinstance(scheduler, str) and scheduler == "synchronous" else max(int(n_workers), 1)
-    # the histories in memory (and their statistics' temporaries: a few copies)
-    check_size(f"an obliquity ensemble of {members} members", nbytes=4 * nbytes, seconds=seconds / workers)
-    announce(seconds / workers, f"integrating {members} members of {abs(end):g} years")
-    times = member_times(end, interval)
     chunk = _chunk(int(members), workers, per_orbit) if chunk is None else chunk
+    # no more workers than chunks run at once (run_ensemble starts no idle ones)
+    busy = min(workers, math.ceil(int(members) / int(chunk)))
+    # the histories in memory (and their statistics' temporaries: a few copies)
+    check_size(f"an obliquity ensemble of {members} members", nbytes=4 * nbytes, seconds=seconds / busy)
+    announce(seconds / busy, f"integrating {members} members of {abs(end):g} years")
+    times = member_times(end, interval)
     ds = run_ensemble(
         sampler, int(members), times, propagator=MemberPropagator(key, float(spin_step)), out=out,
         chunk=chunk, seed=seed, output="obliquity",

@@ -80,9 +80,10 @@ MEMBER_BODIES = ("mars", "earth", "moonless-earth")
 #: domain; 4096 steps of about 10 kyr are 40 Myr).
 BLOCK_STEPS = 4096
 #: Seconds per orbit step of the secular kernel (12 evaluations of the flow), measured (one core of
-#: the shared 2-core machine, 2026-11-28: 120-200 µs per step with the load); a bound used only to
-#: refuse or announce a run before it starts.
-STEP_SECONDS = 3.0e-4
+#: the shared 2-core machine, 2026-11-28, after the kernel's four-lane sums: 54-86 µs per step alone,
+#: 77-80 µs over whole 1-Gyr members with the spin axis); a bound with about twice that, used only
+#: to refuse or announce a run before it starts.
+STEP_SECONDS = 1.5e-4
 #: Seconds per spin substep and member (the order-8 composition's 15 rotations and the orbit's
 #: interpolation; measured 1.15 µs for one member alone, less for each of several on one orbit); a
 #: bound used only to refuse or announce a run.
@@ -294,9 +295,9 @@ def member_cost(
     --------
     >>> seconds, nbytes = member_cost(1000, -1e8, 1e5)
     >>> round(seconds), nbytes  # 10^3 members of 100 Myr, each its own orbit (10^4 steps each)
-    (3100, 32032000.0)
+    (1600, 32032000.0)
     >>> round(member_cost(1000, -1e8, 1e5, orbits=100)[0])  # ten spin axes per orbit
-    400
+    250
     """
     t, _, per, samples, substeps = _steps(end, interval, spin_step)
     steps = (t.size - 1) * per
